@@ -1,0 +1,491 @@
+// Analytic raytracer: a striped ground plane, a sphere, a cube and a cone, lit by one point light,
+// with hard shadows and mirror reflections. A Shadertoy Image-tab shader: paste it as it is.
+// Drag to orbit; all tunables are in the control block below.
+//
+// Numerical choices, each explained where it is made:
+// - every position is relative to the eye, so a scene far from the origin keeps its digits;
+// - the sphere and cone quadratics use cancellation-free discriminants and stable roots;
+// - no global epsilon: secondary rays skip the convex solid they leave, and a ray that starts
+//   inside a solid is pushed off its surface by a few ulps;
+// - the ground texture is box-filtered over each sample's footprint (a ray cone).
+
+// ---- controls --------------------------------------------------------------------------------
+// Shadertoy compiles this block as it stands; a host defines HOST_CONTROLS and declares the same
+// names itself (a #define is compile-time, a const becomes a uniform). Syntax: src/controls.js.
+#ifndef HOST_CONTROLS
+#define SAMPLES 1                                      // ui: Samples per pixel | 1, 4, 9, 16
+#define BOUNCES 3                                      // ui: Reflection bounce limit | 0 .. 4
+#define SHADOWS 1                                      // ui: Shadows | toggle
+#define TEXTURE 0                                      // ui: Ground texture | Stripes, Checkerboard
+#define TEXTURE_FILTER 1                               // ui: Filter texture over pixel footprint | toggle
+const vec3  CAMERA_TARGET = vec3(0.0, 0.6, 0.0);       // ui: Camera target | -5 .. 5
+const vec2  CAMERA_ORBIT = vec2(30.0, 18.0);           // ui: Camera azimuth, elevation (deg) | -90 .. 90
+const float CAMERA_DISTANCE = 6.5;                     // ui: Camera distance | 0.1 .. 2000
+const float FIELD_OF_VIEW = 45.0;                      // ui: Vertical field of view (deg) | 0.01 .. 120
+const float ORBIT_SPEED = 4.0;                         // ui: Orbit speed (deg/s) | -30 .. 30
+const vec3  SCENE_ORIGIN = vec3(0.0);                  // ui: Scene origin | -100000 .. 100000
+const vec3  SPHERE_CENTER = vec3(-1.3, 0.8, 0.3);      // ui: Sphere centre | -4 .. 4
+const float SPHERE_RADIUS = 0.8;                       // ui: Sphere radius | 0.05 .. 2
+const vec3  CUBE_CENTER = vec3(1.0, 0.5, -1.1);        // ui: Cube centre | -4 .. 4
+const vec3  CUBE_HALF_SIZE = vec3(0.5);                // ui: Cube half size | 0.05 .. 2
+const vec3  CONE_BASE = vec3(1.2, 0.0, 1.1);           // ui: Cone base centre | -4 .. 4
+const float CONE_RADIUS = 0.55;                        // ui: Cone base radius | 0.05 .. 2
+const float CONE_HEIGHT = 1.7;                         // ui: Cone height | 0.05 .. 4
+const vec3  LIGHT_POSITION = vec3(-2.5, 6.0, 4.5);     // ui: Light position | -10 .. 10
+const float GROUND_REFLECTIVITY = 0.15;                // ui: Ground reflectivity | 0 .. 1
+const float SPHERE_REFLECTIVITY = 0.35;                // ui: Sphere reflectivity | 0 .. 1
+const float CUBE_REFLECTIVITY = 0.25;                  // ui: Cube reflectivity | 0 .. 1
+const float CONE_REFLECTIVITY = 0.2;                   // ui: Cone reflectivity | 0 .. 1
+#endif
+
+// ---- constants -------------------------------------------------------------------------------
+const float PI = 3.14159265358979;
+const float DEG = PI / 180.0;
+// Largest finite float32. t values at or past it (a ray parallel to a plane up to rounding)
+// are misses: p = ro + t * rd would be infinite or NaN.
+const float T_MAX = 3.0e38;
+// float32 unit roundoff, 2^-24: the relative error of one correctly rounded operation.
+const float EPS32 = 5.960464477539063e-8;
+const vec4 MISS = vec4(-1.0, 0.0, 0.0, 0.0);
+
+// ---- intersectors ----------------------------------------------------------------------------
+// Each takes a ray origin ro and a unit direction rd and returns vec4(t, n): t the nearest hit
+// with t > 0, n the unit outward normal there; a miss returns t < 0. A ray that starts inside a
+// closed solid hits its far side.
+
+// Plane dot(plane.xyz, p) + plane.w = 0, plane.xyz unit. Substituting p = ro + t rd:
+// t = -(dot(n, ro) + w) / dot(n, rd). A ray parallel to the plane (dot(n, rd) == 0, also with
+// the origin on the plane) is a miss, never 0/0.
+vec4 intersectPlane(vec3 ro, vec3 rd, vec4 plane) {
+    float approach = dot(plane.xyz, rd);
+    if (approach == 0.0) return MISS;
+    float t = -(dot(plane.xyz, ro) + plane.w) / approach;
+    return (t > 0.0 && t < T_MAX) ? vec4(t, plane.xyz) : MISS;
+}
+
+// Sphere |p - center| = radius. With f = ro - center and b = f.rd, the roots of
+// t^2 + 2 b t + c = 0 (c = f.f - r^2) are -b +- sqrt(b^2 - c). The textbook b^2 - c cancels
+// catastrophically when the sphere is small or far (both terms ~ |f|^2); r^2 - |f - b rd|^2 is
+// the same number computed from the ray's perpendicular offset, with no cancellation
+// (Haines et al., Ray Tracing Gems ch. 7). The roots come as q = -b - sign(b) sqrt(disc) and
+// c / q, so neither subtracts nearly equal numbers.
+vec4 intersectSphere(vec3 ro, vec3 rd, vec3 center, float radius) {
+    vec3 f = ro - center;
+    float b = dot(f, rd);
+    vec3 offAxis = f - b * rd;
+    float disc = radius * radius - dot(offAxis, offAxis);
+    if (disc < 0.0) return MISS;
+    float q = -b - (b >= 0.0 ? 1.0 : -1.0) * sqrt(disc);
+    if (q == 0.0) return MISS;  // origin on the surface and tangent: both roots are 0
+    float c = dot(f, f) - radius * radius;
+    float t0 = min(c / q, q), t1 = max(c / q, q);
+    float t = t0 > 0.0 ? t0 : t1;
+    if (!(t > 0.0)) return MISS;
+    return vec4(t, normalize(f + t * rd));
+}
+
+// Axis-aligned box, by slabs. Per axis the ray is inside the slab for t between the two plane
+// crossings. GLSL ES does not promise 1/0 = inf, and 0 * inf = NaN when the origin lies on a
+// slab plane, so a zero direction component (+0 or -0) is handled by hand: the ray is inside
+// that slab for all t, or never. The normal is the single axis that set the entry (or, from
+// inside, the exit) time, so it is exactly unit length even at an edge or corner.
+vec4 intersectBox(vec3 ro, vec3 rd, vec3 center, vec3 halfSize) {
+    vec3 o = ro - center;
+    float tEnter = -T_MAX, tExit = T_MAX;
+    int enterAxis = 0, exitAxis = 0;
+    for (int axis = 0; axis < 3; axis++) {
+        if (rd[axis] == 0.0) {
+            if (abs(o[axis]) > halfSize[axis]) return MISS;
+            continue;
+        }
+        float inv = 1.0 / rd[axis];
+        float tA = (-halfSize[axis] - o[axis]) * inv;
+        float tB = (halfSize[axis] - o[axis]) * inv;
+        float tIn = min(tA, tB), tOut = max(tA, tB);
+        if (tIn > tEnter) { tEnter = tIn; enterAxis = axis; }
+        if (tOut < tExit) { tExit = tOut; exitAxis = axis; }
+    }
+    if (tEnter > tExit || tExit <= 0.0) return MISS;
+    vec3 n = vec3(0.0);
+    if (tEnter > 0.0) {
+        n[enterAxis] = rd[enterAxis] > 0.0 ? -1.0 : 1.0;
+        return vec4(tEnter, n);
+    }
+    n[exitAxis] = rd[exitAxis] > 0.0 ? 1.0 : -1.0;
+    return vec4(tExit, n);
+}
+
+// Closed capped cone from pa (radius ra) to pb (radius rb); rb = 0 is a pointed cone.
+// With unit axis A, height H, slope k = (rb - ra) / H, a point w = p - pa has axial coordinate
+// y = A.w and radial offset w_perp = w - y A; the side is |w_perp|^2 = r(y)^2, r(y) = ra + k y,
+// for 0 <= y <= H. On the ray, with o = ro - pa, this is a t^2 + 2 b t + c = 0 with
+//   a = |rd_perp|^2 - k^2 (A.rd)^2,  b = o_perp.rd_perp - k (A.rd) r(A.o),  c = |o_perp|^2 - r(A.o)^2.
+// The squared equation also holds on the mirror nappe (r(y) < 0), which lies past the apex, so
+// the test 0 <= y <= H rejects it. For a ray parallel to a generator line a -> 0: the roots are
+// taken as c / q and q / a with q = -(b + sign(b) sqrt(b^2 - a c)), so the finite root c / q
+// stays exact while q / a runs off (Eberly, Geometric Tools, "Intersection of a ray and a cone").
+// The origin is first moved to the near side of the cone's bounding sphere (Wald, Ray Tracing
+// Gems II ch. 34): the quadratic's error grows with the square of the distance, the shift's only
+// linearly; the bounding sphere also culls most misses cheaply.
+vec4 intersectCone(vec3 ro, vec3 rd, vec3 pa, vec3 pb, float ra, float rb) {
+    vec3 axisVector = pb - pa;
+    float height = length(axisVector);
+    vec3 axis = axisVector / height;
+    float slope = (rb - ra) / height;
+
+    vec3 boundCenter = 0.5 * (pa + pb);
+    float boundRadius = length(vec2(0.5 * height, max(ra, rb)));
+    vec3 toCenter = boundCenter - ro;
+    float along = dot(toCenter, rd);
+    vec3 offAxis = toCenter - along * rd;
+    if (dot(offAxis, offAxis) > boundRadius * boundRadius) return MISS;
+    float tShift = max(0.0, along - boundRadius);
+    if (along + boundRadius <= 0.0) return MISS;  // bounding sphere wholly behind the ray
+
+    vec3 o = ro + tShift * rd - pa;
+    float yo = dot(o, axis), yd = dot(rd, axis);
+    vec3 oPerp = o - yo * axis, dPerp = rd - yd * axis;
+    float rOrigin = ra + slope * yo;
+
+    float tBest = T_MAX;
+    int part = -1;  // 0 side, 1 base cap, 2 top cap
+
+    float a = dot(dPerp, dPerp) - slope * slope * yd * yd;
+    float b = dot(oPerp, dPerp) - slope * yd * rOrigin;
+    float c = dot(oPerp, oPerp) - rOrigin * rOrigin;
+    float disc = b * b - a * c;
+    if (disc >= 0.0) {
+        float q = -(b + (b >= 0.0 ? 1.0 : -1.0) * sqrt(disc));
+        // q == 0 only when b == 0 and disc == 0: a tangent ray whose root is t = 0 (or none).
+        float roots[2] = float[2](q != 0.0 ? c / q : -1.0, a != 0.0 ? q / a : -1.0);
+        for (int i = 0; i < 2; i++) {
+            float t = roots[i];
+            float y = yo + t * yd;
+            if (t > 0.0 && t < tBest && y >= 0.0 && y <= height) { tBest = t; part = 0; }
+        }
+    }
+    if (yd != 0.0) {
+        float tBase = -yo / yd;
+        vec3 wBase = oPerp + tBase * dPerp;
+        if (tBase > 0.0 && tBase < tBest && dot(wBase, wBase) <= ra * ra) { tBest = tBase; part = 1; }
+        float tTop = (height - yo) / yd;
+        vec3 wTop = oPerp + tTop * dPerp;
+        if (rb > 0.0 && tTop > 0.0 && tTop < tBest && dot(wTop, wTop) <= rb * rb) { tBest = tTop; part = 2; }
+    }
+    if (part < 0) return MISS;
+    if (part == 1) return vec4(tShift + tBest, -axis);
+    if (part == 2) return vec4(tShift + tBest, axis);
+
+    // Side normal: the gradient of |w_perp| - r(y), i.e. unit radial direction - k A.
+    // Within the hit point's own rounding error of the axis (the apex of a pointed cone, where
+    // the gradient is 0/0) the radial direction is noise: use the one facing the ray instead.
+    vec3 wPerp = oPerp + tBest * dPerp;
+    float radialNoise = 8.0 * EPS32 * (height + max(ra, rb) + tBest);
+    vec3 radial;
+    if (length(wPerp) > radialNoise) radial = normalize(wPerp);
+    else if (length(dPerp) > 0.0) radial = -normalize(dPerp);
+    else radial = normalize(cross(axis, abs(axis.x) < 0.9 ? vec3(1, 0, 0) : vec3(0, 1, 0)));
+    return vec4(tShift + tBest, normalize(radial - slope * axis));
+}
+
+// ---- the scene -------------------------------------------------------------------------------
+const int ID_NONE = -1;
+const int ID_GROUND = 0;
+const int ID_SPHERE = 1;
+const int ID_CUBE = 2;
+const int ID_CONE = 3;
+
+// Everything is traced relative to the eye: positions near the eye keep all their digits even
+// when the scene (and the camera with it) sits far from the origin.
+struct Scene {
+    vec4 ground;        // plane y_world = 0, as a plane equation in eye-relative coordinates
+    vec3 sphereCenter;
+    vec3 cubeCenter;
+    vec3 coneBase;
+    vec3 coneApex;
+    vec3 light;
+    vec2 textureOrigin; // world xz of the eye, reduced modulo the texture period (2)
+};
+
+Scene sceneRelativeTo(vec3 eyeLocal) {
+    Scene s;
+    s.ground = vec4(0.0, 1.0, 0.0, eyeLocal.y);
+    s.sphereCenter = SPHERE_CENTER - eyeLocal;
+    s.cubeCenter = CUBE_CENTER - eyeLocal;
+    s.coneBase = CONE_BASE - eyeLocal;
+    s.coneApex = CONE_BASE + vec3(0.0, CONE_HEIGHT, 0.0) - eyeLocal;
+    s.light = LIGHT_POSITION - eyeLocal;
+    // mod() of each term separately keeps the sum small: SCENE_ORIGIN may be ~1e4 or more.
+    s.textureOrigin = mod(SCENE_ORIGIN.xz, 2.0) + mod(eyeLocal.xz, 2.0);
+    return s;
+}
+
+// The assignment's addX shape: each object updates the nearest hit found so far.
+// skipId is the convex solid the ray is leaving: it cannot be hit again, so it is not tested.
+void addPlane(vec3 ro, vec3 rd, vec4 plane, int id, int skipId,
+              inout float hitDist, inout vec3 hitNormal, inout int hitId) {
+    if (id == skipId) return;
+    vec4 h = intersectPlane(ro, rd, plane);
+    if (h.x > 0.0 && h.x < hitDist) { hitDist = h.x; hitNormal = h.yzw; hitId = id; }
+}
+
+void addSphere(vec3 ro, vec3 rd, vec3 center, float radius, int id, int skipId,
+               inout float hitDist, inout vec3 hitNormal, inout int hitId) {
+    if (id == skipId) return;
+    vec4 h = intersectSphere(ro, rd, center, radius);
+    if (h.x > 0.0 && h.x < hitDist) { hitDist = h.x; hitNormal = h.yzw; hitId = id; }
+}
+
+void addBox(vec3 ro, vec3 rd, vec3 center, vec3 halfSize, int id, int skipId,
+            inout float hitDist, inout vec3 hitNormal, inout int hitId) {
+    if (id == skipId) return;
+    vec4 h = intersectBox(ro, rd, center, halfSize);
+    if (h.x > 0.0 && h.x < hitDist) { hitDist = h.x; hitNormal = h.yzw; hitId = id; }
+}
+
+void addCone(vec3 ro, vec3 rd, vec3 base, vec3 apex, float radius, int id, int skipId,
+             inout float hitDist, inout vec3 hitNormal, inout int hitId) {
+    if (id == skipId) return;
+    vec4 h = intersectCone(ro, rd, base, apex, radius, 0.0);
+    if (h.x > 0.0 && h.x < hitDist) { hitDist = h.x; hitNormal = h.yzw; hitId = id; }
+}
+
+// Nearest hit along the ray; returns the hit id (ID_NONE for a miss).
+int traceScene(Scene s, vec3 ro, vec3 rd, int skipId, out float hitDist, out vec3 hitNormal) {
+    hitDist = T_MAX;
+    hitNormal = vec3(0.0);
+    int hitId = ID_NONE;
+    addPlane(ro, rd, s.ground, ID_GROUND, skipId, hitDist, hitNormal, hitId);
+    addSphere(ro, rd, s.sphereCenter, SPHERE_RADIUS, ID_SPHERE, skipId, hitDist, hitNormal, hitId);
+    addBox(ro, rd, s.cubeCenter, CUBE_HALF_SIZE, ID_CUBE, skipId, hitDist, hitNormal, hitId);
+    addCone(ro, rd, s.coneBase, s.coneApex, CONE_RADIUS, ID_CONE, skipId, hitDist, hitNormal, hitId);
+    return hitId;
+}
+
+#if SHADOWS
+// Any-hit query for a shadow ray: the first occluder closer than the light ends it.
+bool occluded(Scene s, vec3 ro, vec3 rd, float lightDist, int skipId) {
+    if (skipId != ID_SPHERE) {
+        float t = intersectSphere(ro, rd, s.sphereCenter, SPHERE_RADIUS).x;
+        if (t > 0.0 && t < lightDist) return true;
+    }
+    if (skipId != ID_CUBE) {
+        float t = intersectBox(ro, rd, s.cubeCenter, CUBE_HALF_SIZE).x;
+        if (t > 0.0 && t < lightDist) return true;
+    }
+    if (skipId != ID_CONE) {
+        float t = intersectCone(ro, rd, s.coneBase, s.coneApex, CONE_RADIUS, 0.0).x;
+        if (t > 0.0 && t < lightDist) return true;
+    }
+    if (skipId != ID_GROUND) {
+        float t = intersectPlane(ro, rd, s.ground).x;
+        if (t > 0.0 && t < lightDist) return true;
+    }
+    return false;
+}
+#endif
+
+// ---- materials and texture -------------------------------------------------------------------
+vec3 objectColor(int id) {
+    if (id == ID_SPHERE) return vec3(0.85, 0.18, 0.12);
+    if (id == ID_CUBE) return vec3(0.15, 0.35, 0.85);
+    return vec3(0.85, 0.2, 0.75);  // the cone, magenta as in the assignment
+}
+
+float reflectivity(int id) {
+    if (id == ID_GROUND) return GROUND_REFLECTIVITY;
+    if (id == ID_SPHERE) return SPHERE_REFLECTIVITY;
+    if (id == ID_CUBE) return CUBE_REFLECTIVITY;
+    return CONE_REFLECTIVITY;
+}
+
+// Box filters of width w centred on x, for the two ground patterns. Each uses the closed-form
+// integral of its pattern, so a footprint of any width costs the same.
+//   fract:        integral F(x) = floor(x) / 2 + fract(x)^2 / 2
+//   square wave:  s(x) = floor(x) mod 2, integral S(x) = floor(x / 2) + max(2 fract(x / 2) - 1, 0)
+// Both are evaluated on x already reduced to [0, 2), where the differences lose no digits.
+float filteredFract(float x, float w) {
+    float lo = x - 0.5 * w, hi = x + 0.5 * w;
+    // Inside one period the average of fract is fract at the centre, exactly.
+    if (floor(lo) == floor(hi)) return fract(x);
+    float fLo = 0.5 * floor(lo) + 0.5 * fract(lo) * fract(lo);
+    float fHi = 0.5 * floor(hi) + 0.5 * fract(hi) * fract(hi);
+    return (fHi - fLo) / w;
+}
+
+float integralSquareWave(float x) {
+    return floor(0.5 * x) + max(2.0 * fract(0.5 * x) - 1.0, 0.0);
+}
+
+float filteredSquareWave(float x, float w) {
+    float lo = x - 0.5 * w, hi = x + 0.5 * w;
+    if (floor(lo) == floor(hi)) return mod(floor(x), 2.0);
+    return (integralSquareWave(hi) - integralSquareWave(lo)) / w;
+}
+
+// Ground albedo at texture coordinate uv (world xz reduced modulo 2) for a footprint of
+// footprint.x along x and footprint.y along z.
+vec3 groundColor(vec2 uv, vec2 footprint) {
+#if TEXTURE == 0
+    // The assignment's stripes: (fract(x) + 0.3) * vec3(0.8, 0.5, 0.2).
+#if TEXTURE_FILTER
+    float stripe = filteredFract(uv.x, footprint.x);
+#else
+    float stripe = fract(uv.x);
+#endif
+    return (stripe + 0.3) * vec3(0.8, 0.5, 0.2);
+#else
+    // The lecture's checkerboard; the filtered XOR of two independent box-filtered square
+    // waves is sx + sz - 2 sx sz (the box filter is separable).
+#if TEXTURE_FILTER
+    float sx = filteredSquareWave(uv.x, footprint.x), sz = filteredSquareWave(uv.y, footprint.y);
+#else
+    float sx = mod(floor(uv.x), 2.0), sz = mod(floor(uv.y), 2.0);
+#endif
+    return mix(vec3(0.9), vec3(0.25), sx + sz - 2.0 * sx * sz);
+#endif
+}
+
+// Extent along world x and z of a ray cone of width coneWidth meeting the ground with unit
+// direction rd: an ellipse with semi-axes coneWidth / |rd.y| along the ray's horizontal heading
+// and coneWidth across it, projected on the two axes.
+vec2 groundFootprint(vec3 rd, float coneWidth) {
+    float h2 = rd.x * rd.x + rd.z * rd.z;
+    if (h2 == 0.0) return vec2(coneWidth);
+    float dy2 = rd.y * rd.y;
+    return coneWidth * sqrt(vec2(rd.x * rd.x + rd.z * rd.z * dy2, rd.z * rd.z + rd.x * rd.x * dy2) / (dy2 * h2));
+}
+
+vec3 skyColor(vec3 rd) {
+    return mix(vec3(0.78, 0.86, 0.95), vec3(0.32, 0.52, 0.85), clamp(rd.y, 0.0, 1.0));
+}
+
+// ---- shading ---------------------------------------------------------------------------------
+const float AMBIENT = 0.15;
+const float SPECULAR = 0.5;
+const float SHININESS = 40.0;
+
+// Local (non-mirror) shading at p with outward normal n. A surface seen from inside its closed
+// solid gets no direct light: the solid itself stands between it and the light.
+vec3 shadeLocal(Scene s, vec3 p, vec3 n, vec3 rd, int id, vec3 albedo, bool inside) {
+    vec3 color = AMBIENT * albedo;
+    if (inside) return color;
+    vec3 toLight = s.light - p;
+    float lightDist = length(toLight);
+    vec3 l = toLight / lightDist;
+    float facing = dot(n, l);
+    if (facing <= 0.0) return color;  // faces away from the light: no shadow ray needed
+#if SHADOWS
+    if (occluded(s, p, l, lightDist, id)) return color;
+#endif
+    float highlight = pow(max(dot(reflect(-l, n), -rd), 0.0), SHININESS);
+    return color + facing * albedo + SPECULAR * highlight;
+}
+
+// Puts a hit point exactly back on its surface where that is cheap: rounding in ro + t rd
+// leaves it slightly off, which shows as acne and speckle in shadows and reflections.
+vec3 reprojectOnSurface(Scene s, vec3 p, vec3 n, int id) {
+    if (id == ID_GROUND) p.y = -s.ground.w;
+    else if (id == ID_SPHERE) p = s.sphereCenter + SPHERE_RADIUS * n;
+    return p;
+}
+
+// Moves p off its surface along n by a few ulps of its own coordinates (the integer-ulp scheme
+// of Waechter and Binder, Ray Tracing Gems ch. 6; 1/32, 1/65536 and 256 are its constants).
+// Only used for rays that start inside a solid, which may hit the same solid again.
+vec3 offsetAlong(vec3 p, vec3 n) {
+    ivec3 ulps = ivec3(256.0 * n);
+    vec3 stepped = intBitsToFloat(floatBitsToInt(p) + ivec3(p.x < 0.0 ? -ulps.x : ulps.x,
+                                                            p.y < 0.0 ? -ulps.y : ulps.y,
+                                                            p.z < 0.0 ? -ulps.z : ulps.z));
+    vec3 nearZero = p + (1.0 / 65536.0) * n;
+    return vec3(abs(p.x) < 1.0 / 32.0 ? nearZero.x : stepped.x,
+                abs(p.y) < 1.0 / 32.0 ? nearZero.y : stepped.y,
+                abs(p.z) < 1.0 / 32.0 ? nearZero.z : stepped.z);
+}
+
+// Radiance along one eye ray. coneSpread is the angle one sample subtends: the ray cone that
+// sizes the texture filter (Akenine-Moeller et al., Ray Tracing Gems ch. 20).
+vec3 radiance(Scene s, vec3 rd, float coneSpread) {
+    vec3 ro = vec3(0.0);
+    vec3 color = vec3(0.0);
+    float throughput = 1.0;
+    float coneWidth = 0.0;
+    int skipId = ID_NONE;
+    for (int bounce = 0; bounce <= BOUNCES; bounce++) {
+        float t;
+        vec3 n;
+        int id = traceScene(s, ro, rd, skipId, t, n);
+        if (id == ID_NONE) return color + throughput * skyColor(rd);
+
+        bool inside = dot(rd, n) > 0.0;
+        vec3 p = reprojectOnSurface(s, ro + t * rd, n, id);
+        coneWidth += coneSpread * t;
+        vec3 albedo = id == ID_GROUND
+            ? groundColor(mod(s.textureOrigin + p.xz, 2.0), groundFootprint(rd, coneWidth))
+            : objectColor(id);
+        vec3 local = shadeLocal(s, p, n, rd, id, albedo, inside);
+
+        float mirror = reflectivity(id);
+        // At the bounce limit the surface keeps all its weight as local colour, so lowering the
+        // limit removes reflected detail without darkening the mirrors.
+        if (bounce == BOUNCES || throughput * mirror < 1.0 / 255.0) return color + throughput * local;
+        color += throughput * (1.0 - mirror) * local;
+        throughput *= mirror;
+
+        // A curved mirror widens the ray cone: 2 * width * curvature (flat faces add nothing).
+        if (id == ID_SPHERE) coneSpread += 2.0 * coneWidth / SPHERE_RADIUS;
+        if (id == ID_CONE) coneSpread += 2.0 * coneWidth / max(CONE_RADIUS * (1.0 - (p.y + s.ground.w - CONE_BASE.y) / CONE_HEIGHT), coneWidth);
+        rd = reflect(rd, n);
+        // Leaving a convex solid: it cannot be hit again, so skip it. From inside: stay
+        // eligible, and start a few ulps inside the surface.
+        ro = inside ? offsetAlong(p, -n) : p;
+        skipId = inside ? ID_NONE : id;
+    }
+    return color;
+}
+
+// ---- camera and image ------------------------------------------------------------------------
+#if SAMPLES == 1
+#define SAMPLES_PER_AXIS 1
+#elif SAMPLES == 4
+#define SAMPLES_PER_AXIS 2
+#elif SAMPLES == 9
+#define SAMPLES_PER_AXIS 3
+#else
+#define SAMPLES_PER_AXIS 4
+#endif
+
+void mainImage(out vec4 fragColor, in vec2 fragCoord) {
+    // Orbit: CAMERA_ORBIT at rest, turning slowly with time; a mouse drag sets the angles, the
+    // screen centre being the rest view.
+    vec2 angles = CAMERA_ORBIT + vec2(ORBIT_SPEED * iTime, 0.0);
+    if (iMouse.x != 0.0 || iMouse.y != 0.0) {
+        vec2 m = iMouse.xy / iResolution.xy - 0.5;
+        angles += vec2(-360.0 * m.x, 180.0 * m.y);
+    }
+    float azimuth = angles.x * DEG;
+    float elevation = clamp(angles.y, -89.0, 90.0) * DEG;
+    // The basis comes straight from the angles, so looking straight down is as well defined as
+    // any other view (no cross product with a world up vector).
+    vec3 back = vec3(cos(elevation) * sin(azimuth), sin(elevation), cos(elevation) * cos(azimuth));
+    vec3 right = vec3(cos(azimuth), 0.0, -sin(azimuth));
+    vec3 up = vec3(-sin(elevation) * sin(azimuth), cos(elevation), -sin(elevation) * cos(azimuth));
+    vec3 eyeLocal = CAMERA_TARGET + CAMERA_DISTANCE * back;
+    Scene s = sceneRelativeTo(eyeLocal);
+
+    float tanHalfFov = tan(0.5 * FIELD_OF_VIEW * DEG);
+    float coneSpread = 2.0 * tanHalfFov / (iResolution.y * float(SAMPLES_PER_AXIS));
+    vec3 sum = vec3(0.0);
+    for (int sy = 0; sy < SAMPLES_PER_AXIS; sy++) {
+        for (int sx = 0; sx < SAMPLES_PER_AXIS; sx++) {
+            // Stratified: the centres of an n x n grid of sub-pixels.
+            vec2 offset = (vec2(sx, sy) + 0.5) / float(SAMPLES_PER_AXIS) - 0.5;
+            vec2 uv = (2.0 * (fragCoord + offset) - iResolution.xy) / iResolution.y;
+            vec3 rd = normalize(-back + tanHalfFov * (uv.x * right + uv.y * up));
+            sum += radiance(s, rd, coneSpread);
+        }
+    }
+    vec3 linear = sum / float(SAMPLES_PER_AXIS * SAMPLES_PER_AXIS);
+    fragColor = vec4(clamp(linear, 0.0, 1.0), 1.0);
+}

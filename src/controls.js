@@ -1,0 +1,159 @@
+// The control block: a shader's tunables, declared once, in the shader.
+//
+// A shader may hold one block of the form
+//
+//   #ifndef HOST_CONTROLS
+//   #define BOUNCES 3                          // ui: Bounce limit | 0 .. 4
+//   #define SHADOWS 1                          // ui: Shadows | toggle
+//   #define TEXTURE 0                          // ui: Ground texture | Stripes, Checkerboard
+//   #define SAMPLES 1                          // ui: Samples per pixel | 1, 4, 9, 16
+//   const float CONE_HEIGHT = 1.8;             // ui: Cone height | 0.1 .. 4 step 0.01
+//   const vec3  LIGHT_POSITION = vec3(4, 6, 3); // ui: Light position | -10 .. 10
+//   #endif
+//
+// Shadertoy, which knows nothing of hosts, compiles the block as it stands: the values are the
+// defaults. A host defines HOST_CONTROLS and declares the same names itself (composeImageShader
+// in shadertoy.js): a `#define` control is compile-time (the host re-defines it and recompiles
+// when it changes, so a feature switched off costs nothing), a `const` control becomes a uniform
+// that changes without recompiling.
+//
+// After `// ui:` comes the label, then `|` and the range: `min .. max` (optionally `step s`),
+// `toggle` (0 or 1), or a comma list of choices (numbers are the values themselves; words are
+// labels whose values are 0, 1, 2, ...).
+
+import { HOST_CONTROLS_MACRO } from './shadertoy.js';
+
+const VECTOR_SIZES = { float: 1, int: 1, bool: 1, vec2: 2, vec3: 3, vec4: 4 };
+const NUMBER = String.raw`[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?`;
+const DEFINE_LINE = new RegExp(String.raw`^\s*#define\s+([A-Za-z_]\w*)\s+(${NUMBER})\s*//\s*ui:\s*(.*)$`);
+const CONST_LINE = new RegExp(
+  String.raw`^\s*const\s+(float|int|bool|vec2|vec3|vec4)\s+([A-Za-z_]\w*)\s*=\s*([^;]+);\s*//\s*ui:\s*(.*)$`,
+);
+
+export class ControlBlockError extends Error {
+  constructor(message, line) {
+    super(line ? `${message} (shader line ${line})` : message);
+    this.name = 'ControlBlockError';
+    this.line = line;
+  }
+}
+
+function parseNumber(text, line) {
+  const value = Number(text.trim());
+  if (!Number.isFinite(value)) throw new ControlBlockError(`"${text.trim()}" is not a number`, line);
+  return value;
+}
+
+function parseValue(type, text, line) {
+  text = text.trim();
+  if (type === 'bool') {
+    if (text !== 'true' && text !== 'false') throw new ControlBlockError(`bool default must be true or false, not "${text}"`, line);
+    return text === 'true';
+  }
+  const size = VECTOR_SIZES[type];
+  if (size === 1) return parseNumber(text, line);
+  const match = text.match(new RegExp(String.raw`^${type}\s*\((.*)\)$`));
+  if (!match) throw new ControlBlockError(`${type} default must be written ${type}(...), not "${text}"`, line);
+  const parts = match[1].split(',').map((p) => parseNumber(p, line));
+  if (parts.length === 1) return Array(size).fill(parts[0]);
+  if (parts.length !== size) throw new ControlBlockError(`${type} default needs ${size} components`, line);
+  return parts;
+}
+
+/** Parses the `label | range` annotation after `// ui:`. */
+function parseAnnotation(text, line) {
+  const bar = text.indexOf('|');
+  const label = (bar < 0 ? text : text.slice(0, bar)).trim();
+  const spec = bar < 0 ? '' : text.slice(bar + 1).trim();
+  if (!label) throw new ControlBlockError('control has no label after "// ui:"', line);
+  if (spec === '') return { label };
+  if (spec === 'toggle') return { label, toggle: true, min: 0, max: 1, step: 1 };
+  const range = spec.match(new RegExp(String.raw`^(${NUMBER})\s*\.\.\s*(${NUMBER})(?:\s+step\s+(${NUMBER}))?$`));
+  if (range) {
+    const min = Number(range[1]);
+    const max = Number(range[2]);
+    if (!(min < max)) throw new ControlBlockError(`range ${spec} is empty`, line);
+    return { label, min, max, ...(range[3] !== undefined ? { step: Number(range[3]) } : {}) };
+  }
+  const items = spec.split(',').map((s) => s.trim());
+  if (items.length < 2 || items.some((s) => s === '')) throw new ControlBlockError(`cannot read range "${spec}"`, line);
+  const numeric = items.every((s) => new RegExp(`^${NUMBER}$`).test(s));
+  const options = items.map((s, i) => ({ label: s, value: numeric ? Number(s) : i }));
+  return { label, options };
+}
+
+/**
+ * Finds the control block (the `#ifndef HOST_CONTROLS` ... `#endif` section) and returns one
+ * descriptor per control, in order:
+ *   { name, kind: 'define'|'uniform', type, default, label, min?, max?, step?, toggle?, options?, line }
+ * A shader without a block has no controls. Lines in the block without `// ui:` are left alone
+ * (helper macros, comments).
+ */
+export function parseControls(source) {
+  const lines = source.split('\n');
+  const start = lines.findIndex((l) => new RegExp(String.raw`^\s*#ifndef\s+${HOST_CONTROLS_MACRO}\b`).test(l));
+  if (start < 0) return [];
+  const controls = [];
+  const names = new Set();
+  let depth = 1;
+  for (let i = start + 1; i < lines.length; i++) {
+    const text = lines[i];
+    const lineNo = i + 1;
+    if (/^\s*#\s*if/.test(text)) depth++;
+    if (/^\s*#\s*endif/.test(text) && --depth === 0) return controls;
+    if (!/\/\/\s*ui:/.test(text)) continue;
+    let control;
+    const define = text.match(DEFINE_LINE);
+    const constant = text.match(CONST_LINE);
+    if (define) {
+      const value = Number(define[2]);
+      const isInt = /^[-+]?\d+$/.test(define[2]);
+      control = { name: define[1], kind: 'define', type: isInt ? 'int' : 'float', default: value, ...parseAnnotation(define[3], lineNo) };
+    } else if (constant) {
+      const [, type, name, value, annotation] = constant;
+      control = { name, kind: 'uniform', type, default: parseValue(type, value, lineNo), ...parseAnnotation(annotation, lineNo) };
+    } else {
+      throw new ControlBlockError(`cannot read control line "${text.trim()}"; expected "#define NAME number // ui: ..." or "const TYPE NAME = value; // ui: ..."`, lineNo);
+    }
+    if (names.has(control.name)) throw new ControlBlockError(`control ${control.name} is declared twice`, lineNo);
+    if (control.type === 'int' && control.step === undefined && !control.options) control.step = 1;
+    names.add(control.name);
+    controls.push({ ...control, line: lineNo });
+  }
+  throw new ControlBlockError(`#ifndef ${HOST_CONTROLS_MACRO} has no matching #endif`, start + 1);
+}
+
+/** The defaults of a control list, as { name: value }. */
+export function controlDefaults(controls) {
+  return Object.fromEntries(controls.map((c) => [c.name, c.default]));
+}
+
+/**
+ * Brings a value for a control into its type and range: numbers are clamped, ints rounded,
+ * choices snapped to a listed value. Returns undefined for a value that cannot be read
+ * (the caller keeps the default and warns).
+ */
+export function coerceControlValue(control, value) {
+  const size = VECTOR_SIZES[control.type];
+  const one = (v) => {
+    if (control.type === 'bool') {
+      if (v === true || v === 'true' || v === 1 || v === '1') return true;
+      if (v === false || v === 'false' || v === 0 || v === '0') return false;
+      return undefined;
+    }
+    let n = typeof v === 'number' ? v : Number(String(v).trim());
+    if (String(v).trim() === '' || !Number.isFinite(n)) return undefined;
+    if (control.options) {
+      const values = control.options.map((o) => o.value);
+      return values.reduce((best, x) => (Math.abs(x - n) < Math.abs(best - n) ? x : best), values[0]);
+    }
+    if (control.min !== undefined) n = Math.min(control.max, Math.max(control.min, n));
+    if (control.type === 'int') n = Math.round(n);
+    return n;
+  };
+  if (size === 1) return one(Array.isArray(value) ? value[0] : value);
+  const parts = Array.isArray(value) ? value : String(value).split(',');
+  if (parts.length !== size) return undefined;
+  const out = parts.map(one);
+  return out.some((v) => v === undefined) ? undefined : out;
+}

@@ -1,0 +1,222 @@
+// Draws a Shadertoy Image pass: one fullscreen triangle with a RawShaderMaterial on a three.js
+// WebGLRenderer (WebGL2). Compiling is done off to the side, so a shader that fails to compile
+// never replaces the last one that worked.
+
+import * as THREE from 'three';
+import { composeImageShader } from './shadertoy.js';
+import { formatShaderMessages, parseShaderLog, userLineOffset } from './shader-errors.js';
+
+export class WebGL2UnavailableError extends Error {
+  constructor() {
+    super('WebGL2 is not available in this browser, so the raytracer cannot run.');
+    this.name = 'WebGL2UnavailableError';
+  }
+}
+
+export class ShaderCompileError extends Error {
+  constructor(report, messages) {
+    super(`Shader failed to compile:\n${report}`);
+    this.name = 'ShaderCompileError';
+    this.report = report;
+    this.messages = messages;
+  }
+}
+
+const VERTEX_SHADER = `
+in vec3 position;
+void main() {
+    gl_Position = vec4(position.xy, 0.0, 1.0);
+}
+`;
+
+/** One triangle whose middle covers clip space [-1, 1]². */
+function fullscreenTriangle() {
+  const geometry = new THREE.BufferGeometry();
+  geometry.setAttribute('position', new THREE.Float32BufferAttribute([-1, -1, 0, 3, -1, 0, -1, 3, 0], 3));
+  return geometry;
+}
+
+function blackTexture() {
+  const texture = new THREE.DataTexture(new Uint8Array([0, 0, 0, 255]), 1, 1);
+  texture.needsUpdate = true;
+  return texture;
+}
+
+function shadertoyUniforms() {
+  const black = blackTexture();
+  return {
+    iResolution: { value: new THREE.Vector3(1, 1, 1) },
+    iTime: { value: 0 },
+    iTimeDelta: { value: 0 },
+    iFrameRate: { value: 0 },
+    iFrame: { value: 0 },
+    iMouse: { value: new THREE.Vector4() },
+    iDate: { value: new THREE.Vector4() },
+    iSampleRate: { value: 44100 },
+    iChannelTime: { value: [0, 0, 0, 0] },
+    iChannelResolution: { value: [1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1] }, // vec3[4], flat
+    iChannel0: { value: black },
+    iChannel1: { value: black },
+    iChannel2: { value: black },
+    iChannel3: { value: black },
+  };
+}
+
+export class ShaderRenderer {
+  /** @param {HTMLCanvasElement} canvas */
+  constructor(canvas) {
+    const attributes = { alpha: false, antialias: false, depth: false, stencil: false, preserveDrawingBuffer: false, powerPreference: 'high-performance' };
+    const gl = canvas.getContext('webgl2', attributes);
+    if (!gl) throw new WebGL2UnavailableError();
+    this.gl = gl;
+    this.canvas = canvas;
+
+    this.three = new THREE.WebGLRenderer({ canvas, context: gl, ...attributes });
+    this.three.setPixelRatio(1); // we size the drawing buffer in device pixels ourselves
+    this.three.autoClear = false; // the triangle covers every pixel
+    this.three.debug.onShaderError = (...args) => this._onShaderError(...args);
+
+    /** Shadertoy's uniforms plus the live control uniforms; shared by every material we build. */
+    this.uniforms = shadertoyUniforms();
+
+    const geometry = fullscreenTriangle();
+    this.camera = new THREE.OrthographicCamera(); // required by render(); the shader ignores it
+    this.scene = new THREE.Scene();
+    this.mesh = new THREE.Mesh(geometry, null);
+    this.mesh.frustumCulled = false;
+    this.scene.add(this.mesh);
+    // compiled away from the visible scene, swapped in only when it works
+    this.stagingScene = new THREE.Scene();
+    this.stagingMesh = new THREE.Mesh(geometry, null);
+    this.stagingMesh.frustumCulled = false;
+    this.stagingScene.add(this.stagingMesh);
+
+    this._compiling = null; // set while three.js checks a program, read by _onShaderError
+    this._serial = 0; // compiles started
+    this._installed = 0; // the compile on screen
+  }
+
+  /** True once some shader has compiled (render() draws nothing before). */
+  get hasProgram() {
+    return this.mesh.material !== null;
+  }
+
+  /**
+   * Declares the live (`const`) controls as uniforms, with `values`. Entries of an older control
+   * list stay: the shader still on screen may use them until its successor compiles.
+   */
+  setControlUniforms(controls, values) {
+    for (const c of controls) {
+      if (c.kind !== 'uniform') continue;
+      this.uniforms[c.name] ??= { value: null };
+      this.setControlUniform(c.name, values[c.name]);
+    }
+  }
+
+  setControlUniform(name, value) {
+    const uniform = this.uniforms[name];
+    if (!uniform) return;
+    // three.js takes plain arrays for vecN; bools go in as ints
+    uniform.value = Array.isArray(value) ? value.slice() : typeof value === 'boolean' ? Number(value) : value;
+  }
+
+  /**
+   * Compiles `source` (a Shadertoy Image file) with `hostBlock` between header and file.
+   * Resolves once it is compiled: on success it becomes the drawn shader; on failure it
+   * rejects with a ShaderCompileError and the previous shader stays.
+   */
+  async compile(source, hostBlock, fileName = 'shader') {
+    const { code, firstSourceLine } = composeImageShader(source, { hostBlock });
+    // three.js writes `#version` itself (glslVersion), ahead of its own #defines
+    const body = code.slice(code.indexOf('\n') + 1);
+    const material = new THREE.RawShaderMaterial({
+      glslVersion: THREE.GLSL3,
+      vertexShader: VERTEX_SHADER,
+      fragmentShader: body,
+      uniforms: this.uniforms,
+      depthTest: false,
+      depthWrite: false,
+      toneMapped: false,
+    });
+
+    const serial = ++this._serial;
+    this.stagingMesh.material = material;
+    const compiled = this.three.compileAsync(this.stagingScene, this.camera); // creates the program now
+    this.stagingMesh.material = null;
+    await compiled;
+
+    // Asking for the uniforms makes three.js check the program, calling onShaderError on failure.
+    const program = this.three.properties.get(material).currentProgram;
+    const check = { source, body, firstBodyLine: firstSourceLine - 1, fileName, error: null };
+    this._compiling = check;
+    try {
+      program.getUniforms();
+    } finally {
+      this._compiling = null;
+    }
+    if (check.error || serial < this._installed) {
+      material.dispose(); // broken, or a newer compile got in first
+      if (check.error) throw check.error;
+      return;
+    }
+    this._installed = serial;
+    const previous = this.mesh.material;
+    this.mesh.material = material;
+    if (previous) previous.dispose();
+  }
+
+  /** three.js's hook for a program that did not link: turn the logs into a ShaderCompileError. */
+  _onShaderError(gl, program, vertexShader, fragmentShader) {
+    const check = this._compiling;
+    if (!check) return;
+    const offset = userLineOffset(gl.getShaderSource(fragmentShader) ?? '', check.body, check.firstBodyLine, check.source);
+    const userLines = check.source.split('\n').length;
+    const messages = [
+      ...parseShaderLog(gl.getShaderInfoLog(fragmentShader) ?? '', offset, userLines),
+      ...parseShaderLog(gl.getShaderInfoLog(vertexShader) ?? '', null, 0).map((m) => ({ ...m, message: `vertex shader: ${m.message}` })),
+    ];
+    if (messages.length === 0) {
+      messages.push(...parseShaderLog(gl.getProgramInfoLog(program) ?? 'link failed', null, 0));
+    }
+    check.error = new ShaderCompileError(formatShaderMessages(messages, check.source, check.fileName), messages);
+  }
+
+  /** Sizes the drawing buffer in device pixels (the CSS size is the page's business). */
+  setSize(width, height) {
+    if (this.canvas.width !== width || this.canvas.height !== height) this.three.setSize(width, height, false);
+  }
+
+  get width() {
+    return this.gl.drawingBufferWidth;
+  }
+
+  get height() {
+    return this.gl.drawingBufferHeight;
+  }
+
+  /** Draws the current shader; false if none has compiled yet. */
+  render() {
+    if (!this.hasProgram) return false;
+    this.three.render(this.scene, this.camera);
+    return true;
+  }
+
+  /** Reads the drawing buffer (call in the same task as render()). Rows are bottom-to-top. */
+  readPixels(x = 0, y = 0, width = this.width, height = this.height) {
+    const pixels = new Uint8Array(width * height * 4);
+    this.gl.readPixels(x, y, width, height, this.gl.RGBA, this.gl.UNSIGNED_BYTE, pixels);
+    return pixels;
+  }
+
+  /** What GPU and driver we run on. */
+  info() {
+    const gl = this.gl;
+    const debug = gl.getExtension('WEBGL_debug_renderer_info');
+    return {
+      renderer: gl.getParameter(debug ? debug.UNMASKED_RENDERER_WEBGL : gl.RENDERER),
+      vendor: gl.getParameter(debug ? debug.UNMASKED_VENDOR_WEBGL : gl.VENDOR),
+      version: gl.getParameter(gl.VERSION),
+      shadingLanguage: gl.getParameter(gl.SHADING_LANGUAGE_VERSION),
+    };
+  }
+}

@@ -1,0 +1,109 @@
+// Shadertoy's Image-tab contract, in one place: the exact header the site puts before a WebGL2
+// Image pass, the `main` it puts after it, and how a host (our page, the test harness, the
+// benchmark) slots its own control uniforms between the header and the user's file.
+//
+// Shadertoy joins header + Common + Image as plain strings and never parses the user's code, so
+// a shader that compiles in `composeImageShader(source)` (no host controls) is a shader that
+// pastes into Shadertoy unchanged.
+
+/** Shadertoy's header for a WebGL2 Image pass, line for line. */
+export const SHADERTOY_HEADER = `#version 300 es
+precision highp float;
+precision highp int;
+precision mediump sampler3D;
+#define HW_PERFORMANCE 1
+uniform vec3 iResolution;
+uniform float iTime;
+uniform float iChannelTime[4];
+uniform vec4 iMouse;
+uniform vec4 iDate;
+uniform float iSampleRate;
+uniform vec3 iChannelResolution[4];
+uniform int iFrame;
+uniform float iTimeDelta;
+uniform float iFrameRate;
+uniform sampler2D iChannel0;
+uniform sampler2D iChannel1;
+uniform sampler2D iChannel2;
+uniform sampler2D iChannel3;
+void mainImage(out vec4 c, in vec2 f);
+out vec4 shadertoy_out_color;
+`;
+
+/**
+ * Shadertoy's `main`: the colour starts at vec4(1e20) (a shader that never writes it renders
+ * white), and alpha is forced to 1.
+ */
+export const SHADERTOY_FOOTER = `
+void main(void) {
+    vec4 color = vec4(1e20);
+    mainImage(color, gl_FragCoord.xy);
+    shadertoy_out_color = vec4(color.xyz, 1.0);
+}
+`;
+
+/** The uniforms Shadertoy declares, with their GLSL types (arrays as `type[n]`). */
+export const SHADERTOY_UNIFORMS = Object.freeze({
+  iResolution: 'vec3',
+  iTime: 'float',
+  iChannelTime: 'float[4]',
+  iMouse: 'vec4',
+  iDate: 'vec4',
+  iSampleRate: 'float',
+  iChannelResolution: 'vec3[4]',
+  iFrame: 'int',
+  iTimeDelta: 'float',
+  iFrameRate: 'float',
+  iChannel0: 'sampler2D',
+  iChannel1: 'sampler2D',
+  iChannel2: 'sampler2D',
+  iChannel3: 'sampler2D',
+});
+
+/** The macro a host defines to switch off a shader's own control defaults (see controls.js). */
+export const HOST_CONTROLS_MACRO = 'HOST_CONTROLS';
+
+function countLines(text) {
+  let n = 0;
+  for (let i = 0; i < text.length; i++) if (text.charCodeAt(i) === 10) n++;
+  return n;
+}
+
+function formatDefineValue(value) {
+  if (typeof value === 'boolean') return value ? '1' : '0';
+  return String(value);
+}
+
+/**
+ * Builds the host block that replaces a shader's control defaults: compile-time controls become
+ * `#define`s with their current values, live controls become uniforms.
+ * @param {Array<{name:string, kind:'define'|'uniform', type:string}>} controls from parseControls
+ * @param {Record<string, unknown>} defineValues current values of the compile-time controls
+ */
+export function hostControlBlock(controls, defineValues = {}) {
+  const lines = [`#define ${HOST_CONTROLS_MACRO}`];
+  for (const c of controls) {
+    if (c.kind === 'define') {
+      const value = c.name in defineValues ? defineValues[c.name] : c.default;
+      lines.push(`#define ${c.name} ${formatDefineValue(value)}`);
+    } else {
+      lines.push(`uniform ${c.type} ${c.name};`);
+    }
+  }
+  return lines.join('\n') + '\n';
+}
+
+/**
+ * The full fragment shader a WebGL2 Image pass compiles.
+ * @param {string} source the Image-tab text (what a user pastes into Shadertoy)
+ * @param {{hostBlock?: string}} [options] text a host puts between header and file (controls)
+ * @returns {{code: string, firstSourceLine: number}} the code, and the 1-based line of `code` on
+ *   which the user's first line lands (to map compiler messages back to the user's file)
+ */
+export function composeImageShader(source, { hostBlock = '' } = {}) {
+  const before = SHADERTOY_HEADER + hostBlock;
+  return {
+    code: before + source + (source.endsWith('\n') ? '' : '\n') + SHADERTOY_FOOTER,
+    firstSourceLine: countLines(before) + 1,
+  };
+}
