@@ -286,10 +286,24 @@ bool occluded(Scene s, vec3 ro, vec3 rd, float lightDist, int skipId) {
 #endif
 
 // ---- materials and texture -------------------------------------------------------------------
+// Plain `const` lines: the float64 reference (src/reference/) reads these values from this file.
+const vec3  SPHERE_COLOR = vec3(0.85, 0.18, 0.12);
+const vec3  CUBE_COLOR = vec3(0.15, 0.35, 0.85);
+const vec3  CONE_COLOR = vec3(0.85, 0.2, 0.75);        // magenta, as in the assignment
+const vec3  STRIPE_COLOR = vec3(0.8, 0.5, 0.2);        // the assignment's (fract(x) + 0.3) * colour
+const float STRIPE_OFFSET = 0.3;
+const vec3  CHECKER_LIGHT = vec3(0.9);
+const vec3  CHECKER_DARK = vec3(0.25);
+const vec3  SKY_HORIZON = vec3(0.78, 0.86, 0.95);
+const vec3  SKY_ZENITH = vec3(0.32, 0.52, 0.85);
+const float AMBIENT = 0.15;
+const float SPECULAR = 0.5;
+const float SHININESS = 40.0;
+
 vec3 objectColor(int id) {
-    if (id == ID_SPHERE) return vec3(0.85, 0.18, 0.12);
-    if (id == ID_CUBE) return vec3(0.15, 0.35, 0.85);
-    return vec3(0.85, 0.2, 0.75);  // the cone, magenta as in the assignment
+    if (id == ID_SPHERE) return SPHERE_COLOR;
+    if (id == ID_CUBE) return CUBE_COLOR;
+    return CONE_COLOR;
 }
 
 float reflectivity(int id) {
@@ -333,7 +347,7 @@ vec3 groundColor(vec2 uv, vec2 footprint) {
 #else
     float stripe = fract(uv.x);
 #endif
-    return (stripe + 0.3) * vec3(0.8, 0.5, 0.2);
+    return (stripe + STRIPE_OFFSET) * STRIPE_COLOR;
 #else
     // The lecture's checkerboard; the filtered XOR of two independent box-filtered square
     // waves is sx + sz - 2 sx sz (the box filter is separable).
@@ -342,7 +356,7 @@ vec3 groundColor(vec2 uv, vec2 footprint) {
 #else
     float sx = mod(floor(uv.x), 2.0), sz = mod(floor(uv.y), 2.0);
 #endif
-    return mix(vec3(0.9), vec3(0.25), sx + sz - 2.0 * sx * sz);
+    return mix(CHECKER_LIGHT, CHECKER_DARK, sx + sz - 2.0 * sx * sz);
 #endif
 }
 
@@ -357,14 +371,10 @@ vec2 groundFootprint(vec3 rd, float coneWidth) {
 }
 
 vec3 skyColor(vec3 rd) {
-    return mix(vec3(0.78, 0.86, 0.95), vec3(0.32, 0.52, 0.85), clamp(rd.y, 0.0, 1.0));
+    return mix(SKY_HORIZON, SKY_ZENITH, clamp(rd.y, 0.0, 1.0));
 }
 
 // ---- shading ---------------------------------------------------------------------------------
-const float AMBIENT = 0.15;
-const float SPECULAR = 0.5;
-const float SHININESS = 40.0;
-
 // Local (non-mirror) shading at p with outward normal n. A surface seen from inside its closed
 // solid gets no direct light: the solid itself stands between it and the light.
 vec3 shadeLocal(Scene s, vec3 p, vec3 n, vec3 rd, int id, vec3 albedo, bool inside) {
@@ -404,6 +414,11 @@ vec3 offsetAlong(vec3 p, vec3 n) {
                 abs(p.z) < 1.0 / 32.0 ? nearZero.z : stepped.z);
 }
 
+// The cone's radius at a height above its base (0 above the apex).
+float coneRadiusAt(float heightAboveBase) {
+    return CONE_RADIUS * max(1.0 - heightAboveBase / CONE_HEIGHT, 0.0);
+}
+
 // Radiance along one eye ray. coneSpread is the angle one sample subtends: the ray cone that
 // sizes the texture filter (Akenine-Moeller et al., Ray Tracing Gems ch. 20).
 vec3 radiance(Scene s, vec3 rd, float coneSpread) {
@@ -435,7 +450,9 @@ vec3 radiance(Scene s, vec3 rd, float coneSpread) {
 
         // A curved mirror widens the ray cone: 2 * width * curvature (flat faces add nothing).
         if (id == ID_SPHERE) coneSpread += 2.0 * coneWidth / SPHERE_RADIUS;
-        if (id == ID_CONE) coneSpread += 2.0 * coneWidth / max(CONE_RADIUS * (1.0 - (p.y + s.ground.w - CONE_BASE.y) / CONE_HEIGHT), coneWidth);
+        // The cone's side curves with radius r(y) across its axis; near the apex r(y) -> 0, so
+        // the curvature is capped at that of a mirror as small as the cone's own footprint.
+        if (id == ID_CONE) coneSpread += 2.0 * coneWidth / max(coneRadiusAt(p.y - s.coneBase.y), coneWidth);
         rd = reflect(rd, n);
         // Leaving a convex solid: it cannot be hit again, so skip it. From inside: stay
         // eligible, and start a few ulps inside the surface.
@@ -456,6 +473,24 @@ vec3 radiance(Scene s, vec3 rd, float coneSpread) {
 #define SAMPLES_PER_AXIS 4
 #endif
 
+// sin and cos of an angle in radians, to float32 accuracy. The built-ins are not held to any
+// accuracy by GLSL ES; SwiftShader's are off by up to ~1e-4 relative (cos(0.314) = 0.95093 for
+// 0.95106), which turns the camera by half a pixel at 640x360. Reduce to |r| <= pi/4 with a
+// two-part pi/2 (Cody and Waite), then Taylor series to r^9 and r^10: the first omitted terms
+// are below 2e-9 there.
+vec2 sinCos(float angle) {
+    float quadrant = floor(angle / (0.5 * PI) + 0.5);
+    float r = (angle - quadrant * 1.5707963705062866) + quadrant * 4.3711388286737929e-8;
+    float r2 = r * r;
+    float sinR = r * (1.0 - r2 / 6.0 * (1.0 - r2 / 20.0 * (1.0 - r2 / 42.0 * (1.0 - r2 / 72.0))));
+    float cosR = 1.0 - r2 / 2.0 * (1.0 - r2 / 12.0 * (1.0 - r2 / 30.0 * (1.0 - r2 / 56.0 * (1.0 - r2 / 90.0))));
+    int q = int(mod(quadrant, 4.0));
+    if (q == 0) return vec2(sinR, cosR);
+    if (q == 1) return vec2(cosR, -sinR);
+    if (q == 2) return vec2(-sinR, -cosR);
+    return vec2(-cosR, sinR);
+}
+
 void mainImage(out vec4 fragColor, in vec2 fragCoord) {
     // Orbit: CAMERA_ORBIT at rest, turning slowly with time; a mouse drag sets the angles, the
     // screen centre being the rest view.
@@ -464,17 +499,18 @@ void mainImage(out vec4 fragColor, in vec2 fragCoord) {
         vec2 m = iMouse.xy / iResolution.xy - 0.5;
         angles += vec2(-360.0 * m.x, 180.0 * m.y);
     }
-    float azimuth = angles.x * DEG;
-    float elevation = clamp(angles.y, -89.0, 90.0) * DEG;
+    vec2 az = sinCos(angles.x * DEG);
+    vec2 el = sinCos(clamp(angles.y, -89.0, 90.0) * DEG);
     // The basis comes straight from the angles, so looking straight down is as well defined as
     // any other view (no cross product with a world up vector).
-    vec3 back = vec3(cos(elevation) * sin(azimuth), sin(elevation), cos(elevation) * cos(azimuth));
-    vec3 right = vec3(cos(azimuth), 0.0, -sin(azimuth));
-    vec3 up = vec3(-sin(elevation) * sin(azimuth), cos(elevation), -sin(elevation) * cos(azimuth));
+    vec3 back = vec3(el.y * az.x, el.x, el.y * az.y);
+    vec3 right = vec3(az.y, 0.0, -az.x);
+    vec3 up = vec3(-el.x * az.x, el.y, -el.x * az.y);
     vec3 eyeLocal = CAMERA_TARGET + CAMERA_DISTANCE * back;
     Scene s = sceneRelativeTo(eyeLocal);
 
-    float tanHalfFov = tan(0.5 * FIELD_OF_VIEW * DEG);
+    vec2 halfFov = sinCos(0.5 * FIELD_OF_VIEW * DEG);
+    float tanHalfFov = halfFov.x / halfFov.y;
     float coneSpread = 2.0 * tanHalfFov / (iResolution.y * float(SAMPLES_PER_AXIS));
     vec3 sum = vec3(0.0);
     for (int sy = 0; sy < SAMPLES_PER_AXIS; sy++) {

@@ -157,3 +157,25 @@ export function coerceControlValue(control, value) {
   const out = parts.map(one);
   return out.some((v) => v === undefined) ? undefined : out;
 }
+
+const PLAIN_CONST_LINE = /^const\s+(float|int|vec2|vec3|vec4)\s+([A-Za-z_]\w*)\s*=\s*([^;]+);/;
+
+/**
+ * The shader's other named values: every top-level `const TYPE NAME = literal;` line outside the
+ * control block (materials, shading constants). Lets a port of the shader (the float64
+ * reference) read them instead of keeping copies. Lines whose value is an expression rather
+ * than a literal are skipped.
+ */
+export function parseConstants(source) {
+  const constants = {};
+  source.split('\n').forEach((text, i) => {
+    const match = text.match(PLAIN_CONST_LINE);
+    if (!match || /\/\/\s*ui:/.test(text)) return;
+    try {
+      constants[match[2]] = parseValue(match[1], match[3], i + 1);
+    } catch {
+      // an expression such as PI / 180.0: not a literal, not needed by ports
+    }
+  });
+  return constants;
+}

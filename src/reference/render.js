@@ -1,0 +1,227 @@
+// The float64 reference renderer: shaders/raytrace.glsl's scene, camera, shading and output
+// transform, in JavaScript doubles. It reads the control defaults and the material constants
+// from the shader's own text, so the two cannot drift apart silently.
+//
+// Two modes:
+// - 'same-rays': the shader's own sample positions and texture filter, so the difference to the
+//   shader's image is arithmetic error alone;
+// - 'converged': many stratified, jittered samples per pixel and the texture point-sampled, so
+//   the difference is the shader's total error, aliasing included.
+
+import { parseControls, parseConstants, controlDefaults, coerceControlValue } from '../controls.js';
+import { intersectPlane, intersectSphere, intersectBox, intersectCone } from './intersectors.js';
+import { add, sub, scale, addScaled, dot, length, normalize, reflect, mix } from './vec3.js';
+
+const DEG = Math.PI / 180;
+const ID_NONE = -1;
+const ID_GROUND = 0;
+const ID_SPHERE = 1;
+const ID_CUBE = 2;
+const ID_CONE = 3;
+const GROUND = [0, 1, 0, 0];
+
+/**
+ * The values a render uses: the shader's control defaults with `overrides` applied (coerced as
+ * the page coerces URL values; unknown names throw), and its material constants.
+ */
+export function referenceSettings(shaderSource, overrides = {}) {
+  const controls = parseControls(shaderSource);
+  const values = controlDefaults(controls);
+  for (const [name, value] of Object.entries(overrides)) {
+    const control = controls.find((c) => c.name === name);
+    if (!control) throw new Error(`reference: unknown control ${name}`);
+    const coerced = coerceControlValue(control, value);
+    if (coerced === undefined) throw new Error(`reference: bad value ${JSON.stringify(value)} for ${name}`);
+    values[name] = coerced;
+  }
+  return { ...parseConstants(shaderSource), ...values };
+}
+
+// Integrals of the two ground patterns (see groundColor in the shader), for the box filter.
+const integralFract = (x) => 0.5 * Math.floor(x) + 0.5 * (x - Math.floor(x)) ** 2;
+const integralSquareWave = (x) => Math.floor(0.5 * x) + Math.max(2 * (0.5 * x - Math.floor(0.5 * x)) - 1, 0);
+const fract = (x) => x - Math.floor(x);
+const squareWave = (x) => Math.floor(x) - 2 * Math.floor(0.5 * x);
+function boxFiltered(pattern, integral, x, w) {
+  if (!(w > 0) || Math.floor(x - 0.5 * w) === Math.floor(x + 0.5 * w)) return pattern(x);
+  return (integral(x + 0.5 * w) - integral(x - 0.5 * w)) / w;
+}
+
+function groundFootprint(rd, coneWidth) {
+  const h2 = rd[0] * rd[0] + rd[2] * rd[2];
+  if (h2 === 0) return [coneWidth, coneWidth];
+  const dy2 = rd[1] * rd[1];
+  return [
+    coneWidth * Math.sqrt((rd[0] * rd[0] + rd[2] * rd[2] * dy2) / (dy2 * h2)),
+    coneWidth * Math.sqrt((rd[2] * rd[2] + rd[0] * rd[0] * dy2) / (dy2 * h2)),
+  ];
+}
+
+/** A scene tracer bound to one set of settings. */
+function makeScene(s) {
+  const coneApex = add(s.CONE_BASE, [0, s.CONE_HEIGHT, 0]);
+  const colors = { [ID_SPHERE]: s.SPHERE_COLOR, [ID_CUBE]: s.CUBE_COLOR, [ID_CONE]: s.CONE_COLOR };
+  const reflectivity = {
+    [ID_GROUND]: s.GROUND_REFLECTIVITY,
+    [ID_SPHERE]: s.SPHERE_REFLECTIVITY,
+    [ID_CUBE]: s.CUBE_REFLECTIVITY,
+    [ID_CONE]: s.CONE_REFLECTIVITY,
+  };
+  const objects = [
+    [ID_GROUND, (ro, rd) => intersectPlane(ro, rd, GROUND)],
+    [ID_SPHERE, (ro, rd) => intersectSphere(ro, rd, s.SPHERE_CENTER, s.SPHERE_RADIUS)],
+    [ID_CUBE, (ro, rd) => intersectBox(ro, rd, s.CUBE_CENTER, s.CUBE_HALF_SIZE)],
+    [ID_CONE, (ro, rd) => intersectCone(ro, rd, s.CONE_BASE, coneApex, s.CONE_RADIUS, 0)],
+  ];
+
+  function trace(ro, rd, skipId) {
+    let best = null;
+    for (const [id, intersect] of objects) {
+      if (id === skipId) continue;
+      const h = intersect(ro, rd);
+      if (h[0] > 0 && (!best || h[0] < best.t)) best = { t: h[0], n: [h[1], h[2], h[3]], id };
+    }
+    return best;
+  }
+
+  function occluded(ro, rd, lightDist, skipId) {
+    for (const [id, intersect] of objects) {
+      if (id === skipId) continue;
+      const t = intersect(ro, rd)[0];
+      if (t > 0 && t < lightDist) return true;
+    }
+    return false;
+  }
+
+  function groundColor(p, footprint, filter) {
+    const u = s.SCENE_ORIGIN[0] + p[0];
+    const v = s.SCENE_ORIGIN[2] + p[2];
+    if (s.TEXTURE === 0) {
+      const stripe = filter ? boxFiltered(fract, integralFract, u, footprint[0]) : fract(u);
+      return scale(s.STRIPE_COLOR, stripe + s.STRIPE_OFFSET);
+    }
+    const sx = filter ? boxFiltered(squareWave, integralSquareWave, u, footprint[0]) : squareWave(u);
+    const sz = filter ? boxFiltered(squareWave, integralSquareWave, v, footprint[1]) : squareWave(v);
+    return mix(s.CHECKER_LIGHT, s.CHECKER_DARK, sx + sz - 2 * sx * sz);
+  }
+
+  function shadeLocal(p, n, rd, id, albedo, inside) {
+    const color = scale(albedo, s.AMBIENT);
+    if (inside) return color;
+    const toLight = sub(s.LIGHT_POSITION, p);
+    const lightDist = length(toLight);
+    const l = scale(toLight, 1 / lightDist);
+    const facing = dot(n, l);
+    if (facing <= 0) return color;
+    if (s.SHADOWS && occluded(p, l, lightDist, id)) return color;
+    const highlight = Math.max(dot(reflect(scale(l, -1), n), scale(rd, -1)), 0) ** s.SHININESS;
+    return add(addScaled(color, albedo, facing), [1, 1, 1].map(() => s.SPECULAR * highlight));
+  }
+
+  /** Radiance along an eye ray from `eye`; coneSpread sizes the texture filter (0: no filter). */
+  function radiance(eye, rd, coneSpread, filter) {
+    let ro = eye;
+    let color = [0, 0, 0];
+    let throughput = 1;
+    let coneWidth = 0;
+    let skipId = ID_NONE;
+    for (let bounce = 0; bounce <= s.BOUNCES; bounce++) {
+      const hit = trace(ro, rd, skipId);
+      const sky = () => mix(s.SKY_HORIZON, s.SKY_ZENITH, Math.min(Math.max(rd[1], 0), 1));
+      if (!hit) return addScaled(color, sky(), throughput);
+      const { t, n, id } = hit;
+      const inside = dot(rd, n) > 0;
+      const p = addScaled(ro, rd, t);
+      if (id === ID_GROUND) p[1] = 0;
+      coneWidth += coneSpread * t;
+      const albedo = id === ID_GROUND ? groundColor(p, groundFootprint(rd, coneWidth), filter) : colors[id];
+      const local = shadeLocal(p, n, rd, id, albedo, inside);
+      const mirror = reflectivity[id];
+      if (bounce === s.BOUNCES || throughput * mirror < 1 / 255) return addScaled(color, local, throughput);
+      color = addScaled(color, local, throughput * (1 - mirror));
+      throughput *= mirror;
+      if (id === ID_SPHERE) coneSpread += (2 * coneWidth) / s.SPHERE_RADIUS;
+      if (id === ID_CONE) {
+        const radiusHere = s.CONE_RADIUS * Math.max(1 - (p[1] - s.CONE_BASE[1]) / s.CONE_HEIGHT, 0);
+        coneSpread += (2 * coneWidth) / Math.max(radiusHere, coneWidth);
+      }
+      rd = reflect(rd, n);
+      // float64 needs no ulp scheme: a relative 1e-12 step inside the surface is far below
+      // anything float32 can resolve and far above float64's own rounding.
+      ro = inside ? addScaled(p, n, -1e-12 * (1 + length(p))) : p;
+      skipId = inside ? ID_NONE : id;
+    }
+    return color;
+  }
+  return { radiance };
+}
+
+/** The camera of mainImage: eye position and basis for a given time, mouse and resolution. */
+export function referenceCamera(s, { width, height, time = 0, mouse = [0, 0, 0, 0] }) {
+  let azimuthDeg = s.CAMERA_ORBIT[0] + s.ORBIT_SPEED * time;
+  let elevationDeg = s.CAMERA_ORBIT[1];
+  if (mouse[0] !== 0 || mouse[1] !== 0) {
+    azimuthDeg += -360 * (mouse[0] / width - 0.5);
+    elevationDeg += 180 * (mouse[1] / height - 0.5);
+  }
+  const azimuth = azimuthDeg * DEG;
+  const elevation = Math.min(Math.max(elevationDeg, -89), 90) * DEG;
+  const back = [Math.cos(elevation) * Math.sin(azimuth), Math.sin(elevation), Math.cos(elevation) * Math.cos(azimuth)];
+  const right = [Math.cos(azimuth), 0, -Math.sin(azimuth)];
+  const up = [-Math.sin(elevation) * Math.sin(azimuth), Math.cos(elevation), -Math.sin(elevation) * Math.cos(azimuth)];
+  const eye = addScaled(s.CAMERA_TARGET, back, s.CAMERA_DISTANCE);
+  return { eye, back, right, up, tanHalfFov: Math.tan(0.5 * s.FIELD_OF_VIEW * DEG) };
+}
+
+/** Deterministic jitter in [0, 1): a 32-bit integer hash of the pixel and sample (no Math.random). */
+function jitter(x, y, i, axis) {
+  let h = (x * 73856093) ^ (y * 19349663) ^ (i * 83492791) ^ (axis * 2654435761);
+  h = Math.imul(h ^ (h >>> 16), 0x45d9f3b);
+  h = Math.imul(h ^ (h >>> 16), 0x45d9f3b);
+  return ((h ^ (h >>> 16)) >>> 0) / 4294967296;
+}
+
+/**
+ * Renders the scene in float64.
+ * @param {string} shaderSource the text of shaders/raytrace.glsl (controls and constants)
+ * @param {object} view { width, height, time, mouse, controls: {NAME: value} }
+ * @param {{mode?: 'same-rays'|'converged', samplesPerAxis?: number}} [options] converged mode
+ *   takes samplesPerAxis^2 jittered stratified samples per pixel (default 8: 64 samples)
+ * @returns {{width, height, rgb: Float64Array}} display values in [0, 1], 3 per pixel, rows
+ *   top to bottom (as the page's readPixels returns them)
+ */
+export function renderReference(shaderSource, view, { mode = 'same-rays', samplesPerAxis = 8 } = {}) {
+  const { width, height } = view;
+  const s = referenceSettings(shaderSource, view.controls);
+  const camera = referenceCamera(s, view);
+  const { radiance } = makeScene(s);
+  const converged = mode === 'converged';
+  if (!converged && mode !== 'same-rays') throw new Error(`reference: unknown mode ${mode}`);
+  const perAxis = converged ? samplesPerAxis : Math.round(Math.sqrt(s.SAMPLES));
+  const coneSpread = (2 * camera.tanHalfFov) / (height * perAxis);
+  const filter = !converged && s.TEXTURE_FILTER === 1;
+  const rgb = new Float64Array(width * height * 3);
+  for (let row = 0; row < height; row++) {
+    const fy = height - 1 - row + 0.5; // fragCoord.y counts from the bottom
+    for (let x = 0; x < width; x++) {
+      const sum = [0, 0, 0];
+      for (let sy = 0; sy < perAxis; sy++) {
+        for (let sx = 0; sx < perAxis; sx++) {
+          const i = sy * perAxis + sx;
+          const jx = converged ? jitter(x, row, i, 0) : 0.5;
+          const jy = converged ? jitter(x, row, i, 1) : 0.5;
+          const u = (2 * (x + 0.5 + (sx + jx) / perAxis - 0.5) - width) / height;
+          const v = (2 * (fy + (sy + jy) / perAxis - 0.5) - height) / height;
+          const dir = normalize(
+            add(scale(camera.back, -1), scale(add(scale(camera.right, u), scale(camera.up, v)), camera.tanHalfFov)),
+          );
+          const c = radiance(camera.eye, dir, filter ? coneSpread : 0, filter);
+          sum[0] += c[0]; sum[1] += c[1]; sum[2] += c[2];
+        }
+      }
+      const k = (row * width + x) * 3;
+      for (let ch = 0; ch < 3; ch++) rgb[k + ch] = Math.min(Math.max(sum[ch] / (perAxis * perAxis), 0), 1);
+    }
+  }
+  return { width, height, rgb };
+}
