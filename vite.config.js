@@ -16,5 +16,6 @@ export default defineConfig({
   build: {
     outDir: `${repo}dist`,
     emptyOutDir: true,
+    chunkSizeWarningLimit: 800, // three.js's WebGLRenderer is most of the bundle (~600 kB)
   },
 });

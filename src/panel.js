@@ -79,7 +79,7 @@ export class Panel {
     };
     const size = { vec2: 2, vec3: 3, vec4: 4 }[c.type];
     if (size) {
-      const sub = folder.addFolder(c.label);
+      const sub = folder.addFolder(c.label).close(); // keeps the panel short; click to open
       this._view[c.name] = {};
       for (const axis of COMPONENTS.slice(0, size)) {
         this._view[c.name][axis] = 0;

@@ -8,7 +8,7 @@ import { formatShaderMessages, parseShaderLog, userLineOffset } from './shader-e
 
 export class WebGL2UnavailableError extends Error {
   constructor() {
-    super('WebGL2 is not available in this browser, so the raytracer cannot run.');
+    super('This browser or GPU provides no WebGL2 context, which the raytracer needs. Try a current Chrome, Firefox or Safari with hardware acceleration switched on.');
     this.name = 'WebGL2UnavailableError';
   }
 }
@@ -141,7 +141,11 @@ export class ShaderRenderer {
 
     const serial = ++this._serial;
     this.stagingMesh.material = material;
-    const compiled = this.three.compileAsync(this.stagingScene, this.camera); // creates the program now
+    // compile() creates the program now; compileAsync then waits for it without blocking, where
+    // the driver can (KHR_parallel_shader_compile; asking three.js for it would warn otherwise)
+    const compiled = this.three.extensions.has('KHR_parallel_shader_compile')
+      ? this.three.compileAsync(this.stagingScene, this.camera)
+      : Promise.resolve(this.three.compile(this.stagingScene, this.camera));
     this.stagingMesh.material = null;
     await compiled;
 

@@ -69,8 +69,10 @@ function countLines(text) {
   return n;
 }
 
-function formatDefineValue(value) {
+function formatDefineValue(value, type) {
   if (typeof value === 'boolean') return value ? '1' : '0';
+  // a float control keeps a float literal: `#define SCALE 2` would be an int in GLSL
+  if (type === 'float' && Number.isInteger(value)) return value.toFixed(1);
   return String(value);
 }
 
@@ -85,7 +87,7 @@ export function hostControlBlock(controls, defineValues = {}) {
   for (const c of controls) {
     if (c.kind === 'define') {
       const value = c.name in defineValues ? defineValues[c.name] : c.default;
-      lines.push(`#define ${c.name} ${formatDefineValue(value)}`);
+      lines.push(`#define ${c.name} ${formatDefineValue(value, c.type)}`);
     } else {
       lines.push(`uniform ${c.type} ${c.name};`);
     }

@@ -7,8 +7,8 @@
 //   &NAME=value    any shader control; vectors as comma lists (LIGHT_POSITION=1,2,3)
 //
 // Anything unreadable is reported in `warnings` and ignored; the page never fails on a URL.
-
-import { coerceControlValue } from './controls.js';
+// Control values are returned as written: the app checks them against the shader's controls
+// (coerceControlValue), as it does for the panel and the automation hook.
 
 export const MIN_SCALE = 0.25;
 export const MAX_SCALE = 1;
@@ -21,13 +21,11 @@ function finiteNumbers(text) {
 
 /**
  * @param {string} search location.search
- * @param {Array} controls descriptors from parseControls
  * @returns {{time?: number, mouse?: number[], size?: {width:number, height:number},
- *   scale?: number, controls: Record<string, unknown>, warnings: string[]}}
+ *   scale?: number, controls: Record<string, string>, warnings: string[]}}
  */
-export function parseUrlParams(search, controls) {
+export function parseUrlParams(search) {
   const out = { controls: {}, warnings: [] };
-  const byName = new Map(controls.map((c) => [c.name, c]));
   const warn = (key, value, why) => out.warnings.push(`URL parameter ${key}=${value} ignored: ${why}`);
 
   for (const [key, value] of new URLSearchParams(search)) {
@@ -48,12 +46,8 @@ export function parseUrlParams(search, controls) {
       const s = finiteNumbers(value);
       if (s && s.length === 1 && s[0] > 0) out.scale = Math.min(MAX_SCALE, Math.max(MIN_SCALE, s[0]));
       else warn(key, value, `expected a number in ${MIN_SCALE} .. ${MAX_SCALE}`);
-    } else if (byName.has(key)) {
-      const coerced = coerceControlValue(byName.get(key), value);
-      if (coerced === undefined) warn(key, value, `not a valid ${byName.get(key).type}`);
-      else out.controls[key] = coerced;
     } else {
-      warn(key, value, 'no such parameter or shader control');
+      out.controls[key] = value;
     }
   }
   return out;

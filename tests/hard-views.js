@@ -1,0 +1,60 @@
+// Hard views, as data: each is rendered by the real page (float32 on SwiftShader) and by the
+// float64 reference (src/reference/render.js) with the same rays, and compared with the error
+// module (src/error.js). Parameters are the page's URL contract (tests/views.js).
+//
+// MAX_OVER_2: at most 0.01% of pixels may be off by more than 2/255 against the same-ray
+// reference. With identical rays, what is left is float32 arithmetic: a ray that grazes a
+// silhouette, a shadow edge or a stripe edge within rounding can land on the other side, and a
+// 320x180 view has only a few hundred such pixels, of which a handful may flip. A view may raise
+// its bound only with the reason written beside it.
+
+export const MAX_OVER_2 = 1e-4;
+export const HARD_VIEW_SIZE = [320, 180];
+
+export const HARD_VIEWS = [
+  {
+    name: 'apex-from-above',
+    what: 'looking straight down at the cone\'s apex (elevation 90°: the camera basis must not degenerate, the apex normal is 0/0)',
+    params: { time: 0, CAMERA_TARGET: [1.2, 1.7, 1.1], CAMERA_ORBIT: [30, 90], CAMERA_DISTANCE: 3 },
+  },
+  {
+    name: 'horizon-1mm',
+    what: 'the eye a millimetre above the ground, looking at the horizon (plane hits at grazing angles, footprints that grow without bound)',
+    params: { time: 0, CAMERA_TARGET: [0, 0.001, 0], CAMERA_ORBIT: [30, 0] },
+  },
+  {
+    name: 'telephoto-1e3',
+    what: 'a telephoto view from 1e3 away (ray directions that differ by 2e-5 per pixel)',
+    params: { time: 0, CAMERA_DISTANCE: 1000, FIELD_OF_VIEW: 0.35 },
+  },
+  {
+    name: 'scene-at-1e4',
+    what: 'the whole scene moved to x = 1e4 (float32 spacing there is 2^-10: the stripes must stay stripes)',
+    params: { time: 0, SCENE_ORIGIN: [10000, 0, 0] },
+  },
+  {
+    name: 'inside-sphere',
+    what: 'the eye inside the sphere (every primary ray starts inside a closed solid; reflections stay inside)',
+    params: { time: 0, CAMERA_TARGET: [-1.3, 0.8, 0.3], CAMERA_DISTANCE: 0.4 },
+    // The sphere is a closed opaque solid: no direct light reaches its inside, so every pixel is
+    // the ambient term of its colour, seen directly or in its own mirror. Uniform is right here.
+    uniform: true,
+  },
+  {
+    name: 'facing-mirrors',
+    what: 'the sphere and the cube as 90% mirrors facing each other, at the maximum bounce limit',
+    params: { time: 0, SPHERE_CENTER: [-0.5, 0.8, -1.1], SPHERE_REFLECTIVITY: 0.9, CUBE_REFLECTIVITY: 0.9, BOUNCES: 4 },
+  },
+  {
+    name: 'grazing-light',
+    what: 'a light 0.3 above the ground and far to the side (shadow rays nearly parallel to the ground: acne territory)',
+    params: { time: 0, LIGHT_POSITION: [-10, 0.3, 2] },
+  },
+];
+
+/** The reference renderer's view description for a hard view (controls split from page params). */
+export function referenceView(view) {
+  const { time = 0, mouse = [0, 0, 0, 0], ...controls } = view.params;
+  const [width, height] = view.size ?? HARD_VIEW_SIZE;
+  return { width, height, time, mouse, controls };
+}
