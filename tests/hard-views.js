@@ -33,6 +33,11 @@ export const HARD_VIEWS = [
     params: { time: 0, SCENE_ORIGIN: [10000, 0, 0] },
   },
   {
+    name: 'scene-at-1e6',
+    what: 'the scene moved to (1e6, 0, -1e6), where float32 spacing is 1/16: world coordinates would smear a stripe over 16 steps',
+    params: { time: 0, SCENE_ORIGIN: [1000000, 0, -1000000] },
+  },
+  {
     name: 'inside-sphere',
     what: 'the eye inside the sphere (every primary ray starts inside a closed solid; reflections stay inside)',
     params: { time: 0, CAMERA_TARGET: [-1.3, 0.8, 0.3], CAMERA_DISTANCE: 0.4 },
