@@ -115,7 +115,8 @@ function makeScene(s) {
     if (facing <= 0) return color;
     if (s.SHADOWS && occluded(p, l, lightDist, id)) return color;
     const highlight = Math.max(dot(reflect(scale(l, -1), n), scale(rd, -1)), 0) ** s.SHININESS;
-    return add(addScaled(color, albedo, facing), [1, 1, 1].map(() => s.SPECULAR * highlight));
+    const specular = s.SPECULAR * highlight;
+    return [color[0] + facing * albedo[0] + specular, color[1] + facing * albedo[1] + specular, color[2] + facing * albedo[2] + specular];
   }
 
   /** Radiance along an eye ray from `eye`; coneSpread sizes the texture filter (0: no filter). */
@@ -127,8 +128,7 @@ function makeScene(s) {
     let skipId = ID_NONE;
     for (let bounce = 0; bounce <= s.BOUNCES; bounce++) {
       const hit = trace(ro, rd, skipId);
-      const sky = () => mix(s.SKY_HORIZON, s.SKY_ZENITH, Math.min(Math.max(rd[1], 0), 1));
-      if (!hit) return addScaled(color, sky(), throughput);
+      if (!hit) return addScaled(color, mix(s.SKY_HORIZON, s.SKY_ZENITH, Math.min(Math.max(rd[1], 0), 1)), throughput);
       const { t, n, id } = hit;
       const inside = dot(rd, n) > 0;
       const p = addScaled(ro, rd, t);
