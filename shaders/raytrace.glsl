@@ -38,6 +38,22 @@ const float CUBE_REFLECTIVITY = 0.25;                  // ui: Cube reflectivity 
 const float CONE_REFLECTIVITY = 0.2;                   // ui: Cone reflectivity | 0 .. 1
 #endif
 
+// ---- the benchmark's switch ------------------------------------------------------------------
+// SAVINGS 1 (the default) does only the work the scene and settings need: features switched
+// off compile out, the cone is culled by its bounding sphere, shadow rays stop at the first
+// occluder and are not cast from surfaces facing away from the light, and reflections stop when
+// what is left of the ray's weight is under 1/255. The benchmark defines SAVINGS 0 to measure
+// what that is worth: every feature then runs as a run-time branch and every saving is off.
+#ifndef SAVINGS
+#define SAVINGS 1
+#endif
+#if SAVINGS
+#define RUNTIME(x) (x)
+#else
+// iFrame is never negative, but the compiler cannot know: x stops being a compile-time constant.
+#define RUNTIME(x) ((x) + min(iFrame, 0))
+#endif
+
 // ---- constants -------------------------------------------------------------------------------
 const float PI = 3.14159265358979;
 const float DEG = PI / 180.0;
@@ -138,9 +154,11 @@ vec4 intersectCone(vec3 ro, vec3 rd, vec3 pa, vec3 pb, float ra, float rb) {
     vec3 toCenter = boundCenter - ro;
     float along = dot(toCenter, rd);
     vec3 offAxis = toCenter - along * rd;
-    if (dot(offAxis, offAxis) > boundRadius * boundRadius) return MISS;
     float tShift = max(0.0, along - boundRadius);
+#if SAVINGS
+    if (dot(offAxis, offAxis) > boundRadius * boundRadius) return MISS;
     if (along + boundRadius <= 0.0) return MISS;  // bounding sphere wholly behind the ray
+#endif
 
     vec3 o = ro + tShift * rd - pa;
     float yo = dot(o, axis), yd = dot(rd, axis);
@@ -262,9 +280,15 @@ int traceScene(Scene s, vec3 ro, vec3 rd, int skipId, out float hitDist, out vec
     return hitId;
 }
 
-#if SHADOWS
+#if SHADOWS || !SAVINGS
 // Any-hit query for a shadow ray: the first occluder closer than the light ends it.
 bool occluded(Scene s, vec3 ro, vec3 rd, float lightDist, int skipId) {
+#if !SAVINGS
+    float t;
+    vec3 n;
+    traceScene(s, ro, rd, skipId, t, n);  // the nearest hit, shaded or not
+    return t < lightDist;
+#endif
     if (skipId != ID_SPHERE) {
         float t = intersectSphere(ro, rd, s.sphereCenter, SPHERE_RADIUS).x;
         if (t > 0.0 && t < lightDist) return true;
@@ -384,9 +408,14 @@ vec3 shadeLocal(Scene s, vec3 p, vec3 n, vec3 rd, int id, vec3 albedo, bool insi
     float lightDist = length(toLight);
     vec3 l = toLight / lightDist;
     float facing = dot(n, l);
+#if SAVINGS
     if (facing <= 0.0) return color;  // faces away from the light: no shadow ray needed
-#if SHADOWS
-    if (occluded(s, p, l, lightDist, id)) return color;
+#endif
+#if SHADOWS || !SAVINGS
+    if (RUNTIME(SHADOWS) != 0 && occluded(s, p, l, lightDist, id)) return color;
+#endif
+#if !SAVINGS
+    if (facing <= 0.0) return color;  // the same image, after paying for the shadow ray
 #endif
     float highlight = pow(max(dot(reflect(-l, n), -rd), 0.0), SHININESS);
     return color + facing * albedo + SPECULAR * highlight;
@@ -427,7 +456,7 @@ vec3 radiance(Scene s, vec3 rd, float coneSpread) {
     float throughput = 1.0;
     float coneWidth = 0.0;
     int skipId = ID_NONE;
-    for (int bounce = 0; bounce <= BOUNCES; bounce++) {
+    for (int bounce = 0; bounce <= RUNTIME(BOUNCES); bounce++) {
         float t;
         vec3 n;
         int id = traceScene(s, ro, rd, skipId, t, n);
@@ -444,7 +473,9 @@ vec3 radiance(Scene s, vec3 rd, float coneSpread) {
         float mirror = reflectivity(id);
         // At the bounce limit the surface keeps all its weight as local colour, so lowering the
         // limit removes reflected detail without darkening the mirrors.
-        if (bounce == BOUNCES || throughput * mirror < 1.0 / 255.0) return color + throughput * local;
+        if (bounce == RUNTIME(BOUNCES) || (SAVINGS == 1 && throughput * mirror < 1.0 / 255.0)) {
+            return color + throughput * local;
+        }
         color += throughput * (1.0 - mirror) * local;
         throughput *= mirror;
 
@@ -513,8 +544,8 @@ void mainImage(out vec4 fragColor, in vec2 fragCoord) {
     float tanHalfFov = halfFov.x / halfFov.y;
     float coneSpread = 2.0 * tanHalfFov / (iResolution.y * float(SAMPLES_PER_AXIS));
     vec3 sum = vec3(0.0);
-    for (int sy = 0; sy < SAMPLES_PER_AXIS; sy++) {
-        for (int sx = 0; sx < SAMPLES_PER_AXIS; sx++) {
+    for (int sy = 0; sy < RUNTIME(SAMPLES_PER_AXIS); sy++) {
+        for (int sx = 0; sx < RUNTIME(SAMPLES_PER_AXIS); sx++) {
             // Stratified: the centres of an n x n grid of sub-pixels.
             vec2 offset = (vec2(sx, sy) + 0.5) / float(SAMPLES_PER_AXIS) - 0.5;
             vec2 uv = (2.0 * (fragCoord + offset) - iResolution.xy) / iResolution.y;
