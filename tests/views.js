@@ -6,21 +6,42 @@
 // a shader control from the control block of shaders/raytrace.glsl (tests/views.test.js checks
 // that every such NAME exists there and that the value is inside its range).
 
+import { coerceControlValue } from '../src/controls.js';
+
 export const DEFAULT_SIZE = [320, 180];
 
 /** Parameters that belong to the page, not to the shader's control block. */
 export const PAGE_PARAMS = new Set(['time', 'mouse', 'size']);
 
+// Looking down at the ground from higher up, so the texture fills most of the frame.
+const HIGH_CAMERA = { CAMERA_ORBIT: [30, 50] };
+
+// A close look into the 5 cm gap between a mirror sphere and a mirror cube, where rays bounce
+// back and forth: the only place in the scene where a 4th bounce changes many pixels (at the
+// default reflectivities BOUNCES=4 and 3 differ in about 4 pixels of the default view).
+const MIRROR_GAP = {
+  SPHERE_CENTER: [-0.35, 0.8, -1.1],
+  SPHERE_REFLECTIVITY: 0.9,
+  CUBE_REFLECTIVITY: 0.9,
+  CAMERA_TARGET: [0.45, 0.6, -1.1],
+  CAMERA_ORBIT: [0, 12],
+  CAMERA_DISTANCE: 4,
+  FIELD_OF_VIEW: 15,
+};
+
+// `contrast` (optional): the same view with these parameters changed must differ from it in
+// more than PAIR_MIN_FACTOR x MAX_DIFF_FRACTION of its pixels, so the view really tests what it
+// sets (used where no other view of the table is that contrast).
 export const VIEWS = [
   // Everything at the shader's defaults.
   { name: 'default', params: { time: 0 } },
   // A drag in progress, with Shadertoy's iMouse signs: xy = where the pointer is now, |zw| = where
   // the button went down; z > 0 while the button is held, w < 0 after the press frame.
   { name: 'orbit', params: { time: 0, mouse: [240, 120, 160, -90] } },
-  { name: 'texture-stripes', params: { time: 0, TEXTURE: 0 } },
-  { name: 'texture-checker', params: { time: 0, TEXTURE: 1 } },
+  { name: 'texture-stripes', params: { time: 0, TEXTURE: 0, ...HIGH_CAMERA } },
+  { name: 'texture-checker', params: { time: 0, TEXTURE: 1, ...HIGH_CAMERA } },
   { name: 'bounces-0', params: { time: 0, BOUNCES: 0 } },
-  { name: 'bounces-max', params: { time: 0, BOUNCES: 4 } },
+  { name: 'bounces-max', params: { time: 0, BOUNCES: 4, ...MIRROR_GAP }, contrast: { BOUNCES: 3 } },
   { name: 'no-shadows', params: { time: 0, SHADOWS: 0 } },
   { name: 'changed-control', params: { time: 0, CONE_HEIGHT: 2.6, LIGHT_POSITION: [-4, 5, 2] } },
   { name: 'aa', params: { time: 0, SAMPLES: 4 } },
@@ -43,10 +64,14 @@ export const VIEWS = [
 //                            vector art; in a ray-traced image it would forgive exactly the edge
 //                            pixels a moved object changes.
 //
-// Any real change (a control's default, a colour, the camera, a shading term, a bounce) moves
-// thousands of pixels by far more than 13 levels. tests/render.test.js proves the tolerance can
-// fail: every pair of distinct views must differ in at least PAIR_MIN_FACTOR times
-// MAX_DIFF_FRACTION of their pixels, so each view shows something the others do not.
+// Measured on Chromium 156 / SwiftShader: a render matches its golden bit for bit, and the
+// Shadertoy-paste render matches the page's default view bit for bit. A real change is far
+// outside the tolerance: the smallest differences between views are anti-aliasing on/off (1.4%
+// of the default view), shadows on/off (3.4%) and the 4th bounce (3.3% of the mirror-gap view,
+// bounces-max); every other pair differs in more than 20% of its pixels. tests/render.test.js proves the tolerance can fail:
+// every pair of distinct views, and each view against its `contrast`, must differ in more than
+// PAIR_MIN_FACTOR times MAX_DIFF_FRACTION of their pixels, so each view shows something the
+// tolerance could not hide.
 // ------------------------------------------------------------------------------------------------
 export const PIXEL_THRESHOLD = 0.05;
 export const MAX_DIFF_FRACTION = 0.001;
@@ -68,4 +93,27 @@ export function viewQuery(view) {
 
 export function viewSize(view) {
   return view.size ?? DEFAULT_SIZE;
+}
+
+/**
+ * What is wrong with the shader controls a view sets, given parseControls(shader): unknown names
+ * (a renamed control), unreadable values, values outside the range (the page would clamp them).
+ */
+export function viewControlProblems(view, controls) {
+  const byName = new Map(controls.map((c) => [c.name, c]));
+  const problems = [];
+  for (const [name, value] of Object.entries(view.params)) {
+    if (PAGE_PARAMS.has(name)) continue;
+    const control = byName.get(name);
+    if (!control) {
+      problems.push(`${view.name}: ${name} is not a control of shaders/raytrace.glsl (controls: ${[...byName.keys()].join(', ')})`);
+      continue;
+    }
+    const coerced = coerceControlValue(control, value);
+    if (coerced === undefined) problems.push(`${view.name}: ${name}=${value} is not a valid ${control.type}`);
+    else if (JSON.stringify(coerced) !== JSON.stringify(value)) {
+      problems.push(`${view.name}: ${name}=${JSON.stringify(value)} is outside its range; the page would use ${JSON.stringify(coerced)}`);
+    }
+  }
+  return problems;
 }

@@ -1,0 +1,20 @@
+// The test runner's config. It is separate from vite.config.js (which serves the page from src/)
+// so that the tests run from the repository root; tests/harness.js starts that page server itself.
+import { fileURLToPath } from 'node:url';
+import { defineConfig } from 'vitest/config';
+
+export default defineConfig({
+  root: fileURLToPath(new URL('.', import.meta.url)),
+  test: {
+    environment: 'node',
+    include: ['tests/**/*.test.js'],
+    // Starts one headless Chromium (SwiftShader) and one Vite server for the whole run.
+    globalSetup: ['tests/harness.js'],
+    // The browser is shared and SwiftShader uses every core: one test file at a time.
+    fileParallelism: false,
+    maxWorkers: 1,
+    testTimeout: 120_000,
+    hookTimeout: 120_000,
+    teardownTimeout: 30_000,
+  },
+});
