@@ -4,7 +4,7 @@
 import fs from 'node:fs';
 import { describe, expect, test } from 'vitest';
 import { parseControls } from '../src/controls.js';
-import { SHADER_FILE } from './harness.js';
+import { GOLDEN_DIR, SHADER_FILE } from './harness.js';
 import { MAX_DIFF_FRACTION, PIXEL_THRESHOLD, VIEWS, viewControlProblems, viewQuery, viewSize } from './views.js';
 
 describe('view table', () => {
@@ -46,6 +46,12 @@ describe('view table', () => {
       '/?size=320x180&time=0&mouse=1,2,-3,-4&LIGHT_POSITION=1,2,3',
     );
     expect(viewQuery({ name: 'x', size: [64, 32], params: { BOUNCES: 0 } })).toBe('/?size=64x32&BOUNCES=0');
+  });
+
+  test('every golden image belongs to a view', () => {
+    const views = new Set(VIEWS.map((v) => `${v.name}.png`));
+    const stray = fs.existsSync(GOLDEN_DIR) ? fs.readdirSync(GOLDEN_DIR).filter((f) => f.endsWith('.png') && !views.has(f)) : [];
+    expect(stray, `golden images without a view in tests/views.js: delete them from ${GOLDEN_DIR}`).toEqual([]);
   });
 
   test('the tolerance is small', () => {

@@ -1,10 +1,11 @@
-// The test runner's config. It is separate from vite.config.js (which serves the page from src/)
-// so that the tests run from the repository root; tests/harness.js starts that page server itself.
+// The test runner's config (npm test passes it with --config). It is separate from vite.config.js
+// (which serves the page from src/) so that the tests run from the repository root;
+// tests/harness.js starts that page server itself.
 import { fileURLToPath } from 'node:url';
 import { defineConfig } from 'vitest/config';
 
 export default defineConfig({
-  root: fileURLToPath(new URL('.', import.meta.url)),
+  root: fileURLToPath(new URL('..', import.meta.url)),
   test: {
     environment: 'node',
     include: ['tests/**/*.test.js'],
