@@ -1,6 +1,6 @@
 // Everything the tests need from a browser, in one module.
 //
-// As vitest's globalSetup (vitest.config.js), `setup` runs once in the main process: it finds a
+// As vitest's globalSetup (tests/vitest.config.js), `setup` runs once in the main process: it finds a
 // Chromium, launches it headless on SwiftShader (the CPU WebGL2 implementation, identical on
 // every machine that runs the same Chromium build), checks that WebGL2 really is SwiftShader,
 // serves the real page with Vite on a free loopback port, and hands the browser's endpoint and
@@ -126,12 +126,16 @@ async function warmUp(browser, baseUrl) {
   }
 }
 
-/** vitest globalSetup: start Chromium and the page server once for the whole run. */
-export async function setup(project) {
+/**
+ * Starts Chromium (checked to be SwiftShader WebGL2) and the page server. Used once per run by
+ * vitest's globalSetup below, and directly by scripts (the benchmark, the accuracy report).
+ * @returns {Promise<{context: {wsEndpoint, baseUrl, environment}, close: () => Promise<void>}>}
+ */
+export async function startHarness() {
   const executablePath = findChrome();
   const userDataDir = fs.mkdtempSync(path.join(os.tmpdir(), 'raytracer-chromium-'));
   const cleanups = [() => fs.rmSync(userDataDir, { recursive: true, force: true })];
-  const teardown = async () => {
+  const close = async () => {
     for (const cleanup of cleanups.reverse()) {
       try {
         await cleanup();
@@ -182,18 +186,22 @@ export async function setup(project) {
     await server.listen();
     const baseUrl = `http://127.0.0.1:${port}`;
     await warmUp(browser, baseUrl);
-
-    if (UPDATING) {
-      fs.mkdirSync(GOLDEN_DIR, { recursive: true });
-      fs.writeFileSync(ENVIRONMENT_FILE, JSON.stringify(environment, null, 2) + '\n');
-    }
-
-    project.provide('harness', { wsEndpoint: browser.wsEndpoint(), baseUrl, environment });
+    return { context: { wsEndpoint: browser.wsEndpoint(), baseUrl, environment }, close };
   } catch (error) {
-    await teardown();
+    await close();
     throw error;
   }
-  return teardown;
+}
+
+/** vitest globalSetup: start Chromium and the page server once for the whole run. */
+export async function setup(project) {
+  const { context, close } = await startHarness();
+  if (UPDATING) {
+    fs.mkdirSync(GOLDEN_DIR, { recursive: true });
+    fs.writeFileSync(ENVIRONMENT_FILE, JSON.stringify(context.environment, null, 2) + '\n');
+  }
+  project.provide('harness', context);
+  return close;
 }
 
 // ------------------------------------------------------------------------------------------------
@@ -201,12 +209,19 @@ export async function setup(project) {
 // ------------------------------------------------------------------------------------------------
 
 let connection;
+let scriptContext;
 
-/** What globalSetup provided: { wsEndpoint, baseUrl, environment }. */
+/** For scripts outside vitest: use the context that startHarness() returned. */
+export function useHarness(context) {
+  scriptContext = context;
+}
+
+/** What globalSetup provided (or a script set with useHarness): { wsEndpoint, baseUrl, environment }. */
 export async function harnessContext() {
+  if (scriptContext) return scriptContext;
   const { inject } = await import('vitest');
   const context = inject('harness');
-  if (!context) throw new Error('The harness did not start: tests/harness.js must be the globalSetup of vitest.config.js.');
+  if (!context) throw new Error('The harness did not start: tests/harness.js must be the globalSetup of tests/vitest.config.js (run the tests with npm test).');
   return context;
 }
 
@@ -234,7 +249,7 @@ export async function disconnect() {
  * A fresh page with the deterministic injection, collecting console errors and page errors.
  * @returns {Promise<{page: import('puppeteer-core').Page, errors: string[], context: object}>}
  */
-export async function openPage() {
+export async function openPage({ deterministic = true } = {}) {
   const { browser, context } = await connect();
   const page = await browser.newPage();
   const errors = [];
@@ -249,7 +264,8 @@ export async function openPage() {
   await page.setViewport({ width: 800, height: 600, deviceScaleFactor: 1 });
   // Every page loads fresh from the server: no 304s, nothing left over from an earlier test.
   await page.setCacheEnabled(false);
-  await page.evaluateOnNewDocument(INJECTION_SOURCE);
+  // The benchmark needs the real clock: it times frames with performance.now().
+  if (deterministic) await page.evaluateOnNewDocument(INJECTION_SOURCE);
   return { page, errors, context };
 }
 
@@ -354,15 +370,16 @@ void main() {
  * Compiles a complete fragment shader (e.g. composeImageShader(source).code) in a plain WebGL2
  * context, no three.js, no page code, and draws one fullscreen triangle with Shadertoy's uniforms
  * at their first-frame values: iResolution = (width, height, 1), iTime 0, iFrame 0, iMouse 0,
- * iDate from the (frozen) clock.
+ * iDate from the (frozen) clock. `uniforms` overrides any of them, e.g.
+ * { iTime: 1.5, iFrame: 3, iMouse: [40, 59, 40, -59] } (ints for iFrame, arrays for vectors).
  * @returns {Promise<{stage:'compile'|'link', log:string} | {width, height, data:Buffer, glError:number, renderer:string}>}
  */
-export async function renderRawShader(code, { width, height }) {
+export async function renderRawShader(code, { width, height, uniforms = {} }) {
   const { page, errors } = await openPage();
   try {
     await page.goto('data:text/html,<!doctype html><title>raw WebGL2</title><body></body>');
     const result = await page.evaluate(
-      (fragment, vertex, w, h) => {
+      (fragment, vertex, w, h, overrides) => {
         if (!window.__deterministic) return { stage: 'setup', log: 'the deterministic injection did not run' };
         const canvas = document.createElement('canvas');
         canvas.width = w;
@@ -405,6 +422,13 @@ export async function renderRawShader(code, { width, height }) {
         gl.uniform1fv(at('iChannelTime'), new Float32Array(4));
         gl.uniform3fv(at('iChannelResolution'), new Float32Array(12));
         for (let i = 0; i < 4; i++) gl.uniform1i(at(`iChannel${i}`), i);
+        // per-call values (iTime, iMouse, iFrame, ...): floats and vectors as numbers or arrays
+        for (const [name, value] of Object.entries(overrides)) {
+          const location = at(name);
+          if (name === 'iFrame') gl.uniform1i(location, value);
+          else if (Array.isArray(value)) gl[`uniform${value.length}fv`](location, new Float32Array(value));
+          else gl.uniform1f(location, value);
+        }
         gl.viewport(0, 0, w, h);
         gl.drawArrays(gl.TRIANGLES, 0, 3);
         const pixels = new Uint8Array(w * h * 4);
@@ -427,6 +451,7 @@ export async function renderRawShader(code, { width, height }) {
       RAW_VERTEX_SHADER,
       width,
       height,
+      uniforms,
     );
     if (errors.length) throw new Error(`raw WebGL2 page logged errors:\n  ${errors.join('\n  ')}`);
     if (result.stage) return result;
@@ -571,6 +596,7 @@ export async function expectMatchesGolden(name, image) {
       }
     }
     writePng(golden, image);
+    console.log(`${exists ? 'updated' : 'created'} ${rel(golden)}`);
     return { status: 'written' };
   }
 
@@ -673,6 +699,105 @@ export async function evaluateFloatShader(code, { width, height, table, tableHei
     if (errors.length) throw new Error(`float WebGL2 page logged errors:\n  ${errors.join('\n  ')}`);
     if (result.error) throw new Error(`evaluateFloatShader: ${result.error}`);
     return new Float32Array(result.data);
+  } finally {
+    await page.close().catch(() => {});
+  }
+}
+
+// ------------------------------------------------------------------------------------------------
+// A second page server, with file watching (the shared one runs with watch: null)
+// ------------------------------------------------------------------------------------------------
+
+/**
+ * Starts another Vite dev server for the page, in the test worker, with file watching and hot
+ * updates on: for tests of what `npm run dev` does when a shader file changes. Close it after.
+ * @returns {Promise<{baseUrl: string, close: () => Promise<void>}>}
+ */
+export async function startWatchingServer() {
+  const { createServer } = await import('vite');
+  const port = await freePort();
+  const server = await createServer({
+    configFile: path.join(REPO_ROOT, 'vite.config.js'),
+    logLevel: 'warn',
+    clearScreen: false,
+    server: { host: '127.0.0.1', port, strictPort: true, open: false },
+  });
+  await server.listen();
+  return { baseUrl: `http://127.0.0.1:${port}`, close: () => server.close() };
+}
+
+/**
+ * Times a complete fragment shader in a plain WebGL2 canvas (no page code): `warmup` untimed
+ * frames (the first compiles SwiftShader's code), then `frames` timed frames, each a draw plus a
+ * 1-pixel readPixels so that what is timed is the rendering; then the last frame's pixels.
+ * Shadertoy's uniforms are at their first-frame values (iTime 0, iMouse 0); `uniforms` adds
+ * others as { name, type, value } (float, int, vec2, vec3, vec4).
+ * @returns {Promise<{times: number[], width, height, data: Buffer} | {error: string}>}
+ */
+export async function timeShader(code, { width, height, frames = 15, warmup = 3, uniforms = [] }) {
+  const { page, errors } = await openPage({ deterministic: false });
+  try {
+    await page.goto('data:text/html,<!doctype html><title>benchmark</title><body></body>');
+    const result = await page.evaluate(
+      (fragment, vertex, w, h, timed, untimed, extra) => {
+        const canvas = document.createElement('canvas');
+        canvas.width = w;
+        canvas.height = h;
+        const gl = canvas.getContext('webgl2', { antialias: false, depth: false, stencil: false });
+        if (!gl) return { error: 'no WebGL2 context' };
+        const compile = (type, text) => {
+          const shader = gl.createShader(type);
+          gl.shaderSource(shader, text);
+          gl.compileShader(shader);
+          if (!gl.getShaderParameter(shader, gl.COMPILE_STATUS)) throw new Error(gl.getShaderInfoLog(shader));
+          return shader;
+        };
+        const program = gl.createProgram();
+        try {
+          gl.attachShader(program, compile(gl.VERTEX_SHADER, vertex));
+          gl.attachShader(program, compile(gl.FRAGMENT_SHADER, fragment));
+        } catch (error) {
+          return { error: `compile: ${error.message}` };
+        }
+        gl.linkProgram(program);
+        if (!gl.getProgramParameter(program, gl.LINK_STATUS)) return { error: `link: ${gl.getProgramInfoLog(program)}` };
+        gl.useProgram(program);
+        const at = (name) => gl.getUniformLocation(program, name);
+        gl.uniform3f(at('iResolution'), w, h, 1);
+        for (const { name, type, value } of extra) {
+          const v = Array.isArray(value) ? value : [Number(value)];
+          if (type === 'int' || type === 'bool') gl.uniform1i(at(name), v[0]);
+          else gl[`uniform${v.length}fv`](at(name), new Float32Array(v));
+        }
+        gl.viewport(0, 0, w, h);
+        const one = new Uint8Array(4);
+        const times = [];
+        for (let i = 0; i < untimed + timed; i++) {
+          const start = performance.now();
+          gl.drawArrays(gl.TRIANGLES, 0, 3);
+          gl.readPixels(0, 0, 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, one);
+          if (i >= untimed) times.push(performance.now() - start);
+        }
+        const pixels = new Uint8Array(w * h * 4);
+        gl.readPixels(0, 0, w, h, gl.RGBA, gl.UNSIGNED_BYTE, pixels);
+        const flipped = new Uint8Array(pixels.length);
+        const row = w * 4;
+        for (let y = 0; y < h; y++) flipped.set(pixels.subarray((h - 1 - y) * row, (h - y) * row), y * row);
+        let binary = '';
+        for (let i = 0; i < flipped.length; i += 0x8000) binary += String.fromCharCode.apply(null, flipped.subarray(i, i + 0x8000));
+        return { times, data: btoa(binary) };
+      },
+      code,
+      RAW_VERTEX_SHADER,
+      width,
+      height,
+      frames,
+      warmup,
+      uniforms,
+    );
+    if (errors.length) throw new Error(`benchmark page logged errors:\n  ${errors.join('\n  ')}`);
+    if (result.error) return result;
+    return { times: result.times, width, height, data: decodeRgba(result.data, width, height, 'benchmark frame') };
   } finally {
     await page.close().catch(() => {});
   }

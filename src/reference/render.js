@@ -185,12 +185,13 @@ function jitter(x, y, i, axis) {
  * Renders the scene in float64.
  * @param {string} shaderSource the text of shaders/raytrace.glsl (controls and constants)
  * @param {object} view { width, height, time, mouse, controls: {NAME: value} }
- * @param {{mode?: 'same-rays'|'converged', samplesPerAxis?: number}} [options] converged mode
- *   takes samplesPerAxis^2 jittered stratified samples per pixel (default 8: 64 samples)
+ * @param {{mode?: 'same-rays'|'converged', samplesPerAxis?: number, rows?: [number, number]}} [options]
+ *   converged mode takes samplesPerAxis^2 jittered stratified samples per pixel (default 8: 64
+ *   samples); rows = [first, end) renders only those rows (to split an image over threads)
  * @returns {{width, height, rgb: Float64Array}} display values in [0, 1], 3 per pixel, rows
  *   top to bottom (as the page's readPixels returns them)
  */
-export function renderReference(shaderSource, view, { mode = 'same-rays', samplesPerAxis = 8 } = {}) {
+export function renderReference(shaderSource, view, { mode = 'same-rays', samplesPerAxis = 8, rows } = {}) {
   const { width, height } = view;
   const s = referenceSettings(shaderSource, view.controls);
   const camera = referenceCamera(s, view);
@@ -200,8 +201,9 @@ export function renderReference(shaderSource, view, { mode = 'same-rays', sample
   const perAxis = converged ? samplesPerAxis : Math.round(Math.sqrt(s.SAMPLES));
   const coneSpread = (2 * camera.tanHalfFov) / (height * perAxis);
   const filter = !converged && s.TEXTURE_FILTER === 1;
-  const rgb = new Float64Array(width * height * 3);
-  for (let row = 0; row < height; row++) {
+  const [firstRow, endRow] = rows ?? [0, height];
+  const rgb = new Float64Array(width * (endRow - firstRow) * 3);
+  for (let row = firstRow; row < endRow; row++) {
     const fy = height - 1 - row + 0.5; // fragCoord.y counts from the bottom
     for (let x = 0; x < width; x++) {
       const sum = [0, 0, 0];
@@ -219,7 +221,7 @@ export function renderReference(shaderSource, view, { mode = 'same-rays', sample
           sum[0] += c[0]; sum[1] += c[1]; sum[2] += c[2];
         }
       }
-      const k = (row * width + x) * 3;
+      const k = ((row - firstRow) * width + x) * 3;
       for (let ch = 0; ch < 3; ch++) rgb[k + ch] = Math.min(Math.max(sum[ch] / (perAxis * perAxis), 0), 1);
     }
   }

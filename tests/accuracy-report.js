@@ -1,0 +1,67 @@
+// The accuracy table: every hard view (tests/hard-views.js) and the default view, rendered by the
+// page in headless Chromium and compared with the float64 reference twice: with the same rays
+// (arithmetic error alone) and converged (64 jittered samples per pixel, texture point-sampled:
+// the total error, aliasing included). Writes tests/accuracy/results.json and the table between
+// the accuracy markers in README.md.
+//
+//   npm run accuracy            (about three minutes on two cores)
+
+import fs from 'node:fs';
+import path from 'node:path';
+import { renderReference } from '../src/reference/render.js';
+import { imageError } from '../src/error.js';
+import { REPO_ROOT, SHADER_FILE, disconnect, renderView, startHarness, useHarness } from './harness.js';
+import { HARD_VIEWS, HARD_VIEW_SIZE, referenceView } from './hard-views.js';
+import { replaceMarkedSection } from './readme-section.js';
+
+const CONVERGED_SAMPLES_PER_AXIS = 8;
+const VIEWS = [{ name: 'default', what: 'the default view', params: { time: 0 } }, ...HARD_VIEWS];
+
+const pct = (f) => `${(100 * f).toFixed(3)}%`;
+const row = (name, same, converged) =>
+  `| ${name} | ${same.rmse.toExponential(1)} | ${same.maxAbs.toFixed(3)} | ${pct(same.over2)} | ${same.nonFinite} | ` +
+  `${converged.rmse.toExponential(1)} | ${converged.psnr.toFixed(1)} | ${pct(converged.over1)} | ${pct(converged.over2)} |`;
+
+async function main() {
+  const source = fs.readFileSync(SHADER_FILE, 'utf8');
+  const { context, close } = await startHarness();
+  useHarness(context);
+  const results = [];
+  try {
+    for (const [i, view] of VIEWS.entries()) {
+      const [width, height] = view.size ?? HARD_VIEW_SIZE;
+      process.stdout.write(`[${i + 1}/${VIEWS.length}] ${view.name}: page`);
+      const image = await renderView({ ...view, size: [width, height] });
+      process.stdout.write(', same-ray reference');
+      const same = imageError(image, renderReference(source, referenceView({ ...view, size: [width, height] })));
+      process.stdout.write(`, converged reference (${CONVERGED_SAMPLES_PER_AXIS ** 2} spp)`);
+      const converged = imageError(
+        image,
+        renderReference(source, referenceView({ ...view, size: [width, height] }), { mode: 'converged', samplesPerAxis: CONVERGED_SAMPLES_PER_AXIS }),
+      );
+      console.log(' done');
+      results.push({ name: view.name, what: view.what, width, height, sameRays: same, converged });
+    }
+  } finally {
+    await disconnect();
+    await close();
+  }
+
+  const outDir = path.join(REPO_ROOT, 'tests', 'accuracy');
+  fs.mkdirSync(outDir, { recursive: true });
+  fs.writeFileSync(path.join(outDir, 'results.json'), JSON.stringify({ environment: context.environment, convergedSamples: CONVERGED_SAMPLES_PER_AXIS ** 2, results }, null, 2) + '\n');
+  const table = [
+    `Measured by \`npm run accuracy\` at ${HARD_VIEW_SIZE.join('×')}, 1 sample per pixel, on ${context.environment.renderer.replace(/\s*\(0x[0-9A-F]+\)/i, '')} (${context.environment.chromium}).`,
+    '',
+    '| view | same-ray RMSE | same-ray max | same-ray >2/255 | NaN/Inf | converged RMSE | converged PSNR (dB) | converged >1/255 | converged >2/255 |',
+    '|---|---|---|---|---|---|---|---|---|',
+    ...results.map((r) => row(r.name, r.sameRays, r.converged)),
+  ].join('\n');
+  replaceMarkedSection(path.join(REPO_ROOT, 'README.md'), 'accuracy', table);
+  console.log(`\n${table}\n\nwrote tests/accuracy/results.json and the accuracy table in README.md`);
+}
+
+main().catch((error) => {
+  console.error(error);
+  process.exit(1);
+});

@@ -1,0 +1,200 @@
+// composePeer: splicing a benchmark peer's replacement functions into shaders/raytrace.glsl.
+// Plain-Node tests of the splice, then the two real peers composed with the real shader,
+// compiled in Shadertoy's header and drawn in the harness's Chromium (SwiftShader).
+import fs from 'node:fs';
+import { afterAll, describe, expect, test } from 'vitest';
+import { composeImageShader, hostControlBlock } from '../../../src/shadertoy.js';
+import { parseControls } from '../../../src/controls.js';
+import { assertNotBlank, disconnect, mapShaderLog, renderRawShader } from '../../harness.js';
+import { ComposePeerError, composePeer, replacedNames, scanTopLevel } from './compose-peer.js';
+
+const PROJECT_FILE = new URL('../../../shaders/raytrace.glsl', import.meta.url);
+const PEERS = ['assignment', 'sdf'];
+const peerSource = (name) => fs.readFileSync(new URL(`./${name}.glsl`, import.meta.url), 'utf8');
+
+const PROJECT = `// project
+const float K = 1.0;
+float a(float x) { return x + K; } // a's tail comment
+/* a { brace } in a comment */
+struct S { float v; };
+float b(S s) {
+    if (s.v > 0.0) { return a(s.v); }
+    return 0.0;
+}
+#if FEATURE
+float c(float x) { return b(S(x)); }
+#endif
+void mainImage(out vec4 o, in vec2 f) { o = vec4(c(f.x)); }
+`;
+
+describe('scanTopLevel', () => {
+  test('finds functions, structs and other declarations, skipping comments and directives', () => {
+    const items = scanTopLevel(PROJECT);
+    expect(items.map((i) => [i.kind, i.name])).toEqual([
+      ['other', null],
+      ['function', 'a'],
+      ['struct', 'S'],
+      ['function', 'b'],
+      ['function', 'c'],
+      ['function', 'mainImage'],
+    ]);
+    const b = items.find((i) => i.name === 'b');
+    expect(PROJECT.slice(b.start, b.end)).toMatch(/^float b\(S s\) \{[\s\S]*return 0\.0;\n\}$/);
+  });
+
+  test('a prototype is not a definition; a multi-line #define is skipped whole', () => {
+    const items = scanTopLevel('float f(float x);\n#define M(x) { \\\n  x; }\nfloat f(float x) { return x; }\n');
+    expect(items.map((i) => [i.kind, i.name])).toEqual([
+      ['other', null],
+      ['function', 'f'],
+    ]);
+  });
+
+  test('unbalanced braces fail loudly', () => {
+    expect(() => scanTopLevel('void f() { }\n}\n')).toThrow(ComposePeerError);
+    expect(() => scanTopLevel('void f() { \n')).toThrow(/unclosed/);
+  });
+});
+
+describe('composePeer', () => {
+  test('replaces a listed function in place and keeps the rest of the project byte for byte', () => {
+    const peer = '// @replaces b\nfloat b(S s) { return 2.0 * s.v; }\n';
+    const out = composePeer(PROJECT, peer, { peerName: 'p' });
+    expect(out).toContain('float b(S s) { return 2.0 * s.v; }');
+    expect(out).not.toContain('return a(s.v)');
+    const [before, after] = PROJECT.split(/float b\(S s\) \{[\s\S]*?return 0\.0;\n\}/);
+    expect(out.startsWith(before)).toBe(true);
+    expect(out.endsWith(after)).toBe(true);
+    expect(out).toContain("// ---- p: replaces the project's b ----");
+  });
+
+  test('helpers land right before the replacement they precede, trailing text after the last', () => {
+    const peer = [
+      '// @replaces a, c',
+      'const float H = 3.0;',
+      'float helperA(float x) { return x * H; }',
+      'float a(float x) { return helperA(x); }',
+      'float helperC(float x) { return x; }',
+      'float c(float x) { return helperC(x); }',
+      'float tail(float x) { return x; }',
+      '',
+    ].join('\n');
+    const out = composePeer(PROJECT, peer);
+    const at = (s) => out.indexOf(s);
+    expect(at('const float K')).toBeLessThan(at('const float H'));
+    expect(at('const float H')).toBeLessThan(at('float helperA'));
+    expect(at('float helperA')).toBeLessThan(at('float a(float x) { return helperA'));
+    expect(at('float a(float x) { return helperA')).toBeLessThan(at('struct S'));
+    // helperC goes inside the project's #if FEATURE, where c was
+    expect(at('#if FEATURE')).toBeLessThan(at('float helperC'));
+    expect(at('float c(float x) { return helperC(x); }')).toBeLessThan(at('float tail'));
+    expect(at('float tail')).toBeLessThan(at('#endif'));
+    expect(out).not.toContain('return x + K');
+    expect(out).not.toContain('return b(S(x))');
+  });
+
+  test('replaces a struct by name', () => {
+    const out = composePeer(PROJECT, '// @replaces S\nstruct S { float v; float w; };\n');
+    expect(out).toContain('struct S { float v; float w; };');
+    expect(out.match(/struct S/g)).toHaveLength(1);
+  });
+
+  test.each([
+    ['no @replaces line', 'float a(float x) { return x; }\n', /no "\/\/ @replaces/],
+    ['a name the project lacks (renamed)', '// @replaces zz\nfloat zz() { return 1.0; }\n', /zz, which the project does not define/],
+    ['a listed name the peer lacks', '// @replaces a\nfloat q() { return 1.0; }\n', /lists a in @replaces but does not define it/],
+    ['an unlisted project name', '// @replaces a\nfloat a(float x) { return x; }\nfloat b(S s) { return 1.0; }\n', /defines b, which the project also defines/],
+    ['the project order broken', '// @replaces a b\nfloat b(S s) { return 1.0; }\nfloat a(float x) { return x; }\n', /defines b before a/],
+    ['a name listed twice', '// @replaces a a\nfloat a(float x) { return x; }\n', /listed twice/],
+    ['a peer definition given twice', '// @replaces a\nfloat a(float x) { return x; }\nfloat a(int x) { return 1.0; }\n', /defines a 2 times/],
+    ['an #if spanning a replacement', '// @replaces a b\n#if X\nfloat a(float x) { return x; }\n#endif\nfloat b(S s) { return 1.0; }\n', /#if without its #endif/],
+  ])('fails loudly on %s', (_, peer, message) => {
+    expect(() => composePeer(PROJECT, peer)).toThrow(ComposePeerError);
+    expect(() => composePeer(PROJECT, peer)).toThrow(message);
+  });
+
+  test('fails loudly on an overloaded project function', () => {
+    const project = 'float f(float x) { return x; }\nfloat f(vec2 x) { return x.x; }\n';
+    expect(() => composePeer(project, '// @replaces f\nfloat f(float x) { return 0.0; }\n')).toThrow(/defines f 2 times/);
+  });
+});
+
+describe('the real peers with the real shader', () => {
+  const project = fs.readFileSync(PROJECT_FILE, 'utf8');
+
+  test.each(PEERS)('%s composes: each replaced definition once, the control block untouched', (name) => {
+    const peer = peerSource(name);
+    const out = composePeer(project, peer, { peerName: name });
+    const defined = scanTopLevel(out).filter((i) => i.kind !== 'other').map((i) => i.name);
+    for (const replaced of replacedNames(peer)) expect(defined.filter((n) => n === replaced), replaced).toHaveLength(1);
+    expect(new Set(defined).size).toBe(defined.length);
+    expect(parseControls(out)).toEqual(parseControls(project));
+    expect(out).toContain('void mainImage(');
+  });
+
+  test('the sdf peer takes MAX_STEPS and HIT_THRESHOLD from a prefix, with defaults', () => {
+    const out = composePeer(project, peerSource('sdf'));
+    expect(out).toMatch(/#ifndef MAX_STEPS\s+#define MAX_STEPS 128\s+#endif/);
+    expect(out).toMatch(/#ifndef HIT_THRESHOLD\s+#define HIT_THRESHOLD 1e-4\s+#endif/);
+  });
+});
+
+// ---- in the browser ------------------------------------------------------------------------
+// Each variant the benchmark builds must compile in Shadertoy's header and draw a scene. The SDF
+// peer at 256 steps must also draw the project's scene: below the horizon band (where sphere
+// tracing runs out of steps on the grazing ground) nearly every pixel matches the project's.
+describe('composed peers in WebGL2 (SwiftShader)', () => {
+  afterAll(disconnect);
+  const project = fs.readFileSync(PROJECT_FILE, 'utf8');
+  const WIDTH = 160;
+  const HEIGHT = 90;
+
+  async function render(source, hostBlock, label) {
+    const { code, firstSourceLine } = composeImageShader(source, { hostBlock });
+    const raw = await renderRawShader(code, { width: WIDTH, height: HEIGHT });
+    if (raw.stage) throw new Error(`${label} fails to ${raw.stage}:\n${mapShaderLog(raw.log, { firstSourceLine, source, fileName: label })}`);
+    expect(raw.glError, `${label}: WebGL error`).toBe(0);
+    assertNotBlank(raw, label);
+    return raw;
+  }
+
+  // Fraction of pixels below row `fromRow` whose largest channel difference exceeds `levels`.
+  function differing(a, b, levels, fromRow) {
+    let n = 0;
+    let total = 0;
+    for (let y = fromRow; y < a.height; y++) {
+      for (let x = 0; x < a.width; x++) {
+        const i = (y * a.width + x) * 4;
+        total++;
+        if (Math.max(...[0, 1, 2].map((c) => Math.abs(a.data[i + c] - b.data[i + c]))) > levels) n++;
+      }
+    }
+    return n / total;
+  }
+
+  test('every variant compiles and draws; sdf at 256 steps draws the project\'s scene', async () => {
+    const projectImage = await render(project, '', 'project');
+    const assignment = composePeer(project, peerSource('assignment'), { peerName: 'assignment' });
+    const assignmentImage = await render(assignment, '', 'assignment');
+    // Its funnel-shaped "cone" covers much of the lower half.
+    expect(differing(assignmentImage, projectImage, 16, HEIGHT / 3)).toBeGreaterThan(0.05);
+    const sdf = composePeer(project, peerSource('sdf'), { peerName: 'sdf' });
+    for (const steps of [32, 64, 128]) await render(sdf, `#define MAX_STEPS ${steps}\n`, `sdf ${steps}`);
+    const sdf256 = await render(sdf, '#define MAX_STEPS 256\n', 'sdf 256');
+    expect(differing(sdf256, projectImage, 16, HEIGHT / 3)).toBeLessThan(0.02);
+  });
+
+  test('the peers honour the project\'s compile-time controls through a host block', async () => {
+    for (const name of PEERS) {
+      const source = composePeer(project, peerSource(name), { peerName: name });
+      const controls = parseControls(source);
+      const values = { BOUNCES: 0, SHADOWS: 0, TEXTURE: 1, TEXTURE_FILTER: 0, SAMPLES: 4 };
+      // A host block declares the live controls as uniforms; unset uniforms read 0, so this
+      // checks compilation and a draw, not the picture.
+      const { code, firstSourceLine } = composeImageShader(source, { hostBlock: hostControlBlock(controls, values) });
+      const raw = await renderRawShader(code, { width: 32, height: 18 });
+      if (raw.stage) throw new Error(`${name} with a host block fails to ${raw.stage}:\n${mapShaderLog(raw.log, { firstSourceLine, source, fileName: name })}`);
+      expect(raw.glError).toBe(0);
+    }
+  });
+});

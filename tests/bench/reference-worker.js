@@ -1,0 +1,8 @@
+// Renders rows of the converged float64 reference in a worker thread (tests/bench/reference.js
+// splits an image over the machine's cores).
+import { parentPort, workerData } from 'node:worker_threads';
+import { renderReference } from '../../src/reference/render.js';
+
+const { source, view, options } = workerData;
+const { rgb } = renderReference(source, view, options);
+parentPort.postMessage(rgb, [rgb.buffer]);

@@ -1,0 +1,166 @@
+// The benchmark: speed against error, for the project's shader across its quality controls, with
+// its savings switched off, an empty shader (the floor), and two peers (tests/bench/peers/).
+//
+//   npm run bench              640x360 and 1280x720, 15 timed frames after 3 warm-up frames
+//   npm run bench -- --quick   every variant once at 160x90 (CI runs this so the benchmark
+//                              cannot rot; it asserts no time and writes no results)
+//
+// Each variant is compiled inside Shadertoy's header and timed in headless Chromium on
+// SwiftShader (tests/harness.js, timeShader: a draw plus a 1-pixel read-back per frame, so the
+// rendering is what is timed). Its last frame is compared with the converged float64 reference
+// of the project's scene at its default settings (src/reference/, 64 jittered samples per pixel
+// at 640x360, 16 at 1280x720, texture point-sampled): RMSE and the fraction of pixels off by
+// more than 2/255 (src/error.js). Writes tests/bench/results.json, results.md, chart.svg, and
+// the table in README.md.
+
+import fs from 'node:fs';
+import path from 'node:path';
+import { composeImageShader, hostControlBlock } from '../../src/shadertoy.js';
+import { parseControls } from '../../src/controls.js';
+import { imageError } from '../../src/error.js';
+import { REPO_ROOT, SHADER_FILE, disconnect, startHarness, timeShader, useHarness } from '../harness.js';
+import { replaceMarkedSection } from '../readme-section.js';
+import { composePeer } from './peers/compose-peer.js';
+import { renderReferenceParallel } from './reference.js';
+import { paretoFront, chartSvg } from './chart.js';
+import { evaluateTargets } from './targets.js';
+
+const quick = process.argv.includes('--quick');
+const SIZES = quick ? [[160, 90]] : [[640, 360], [1280, 720]];
+const FRAMES = quick ? 1 : 15;
+const WARMUP = quick ? 1 : 3;
+const REFERENCE_SAMPLES_PER_AXIS = (width) => (quick ? 2 : width <= 640 ? 8 : 4);
+const BENCH_DIR = path.join(REPO_ROOT, 'tests', 'bench');
+const read = (file) => fs.readFileSync(file, 'utf8');
+
+const source = read(SHADER_FILE);
+const controls = parseControls(source);
+const uniformValues = controls.filter((c) => c.kind === 'uniform').map((c) => ({ name: c.name, type: c.type, value: c.default }));
+
+/** The project's shader with some compile-time controls changed (and SAVINGS, the switch). */
+function project(defines = {}, { savings = true } = {}) {
+  const hostBlock = (savings ? '' : '#define SAVINGS 0\n') + hostControlBlock(controls, defines);
+  return composeImageShader(source, { hostBlock }).code;
+}
+function peer(file, extra = '') {
+  const composed = composePeer(source, read(path.join(BENCH_DIR, 'peers', file)), { peerName: file });
+  return composeImageShader(composed, { hostBlock: hostControlBlock(controls, {}) + extra }).code;
+}
+const EMPTY = composeImageShader('void mainImage(out vec4 fragColor, in vec2 fragCoord) {\n    fragColor = vec4(0.5, 0.5, 0.5, 1.0);\n}\n').code;
+
+// group: which series a variant belongs to on the chart; spp: samples per pixel.
+export const VARIANTS = [
+  { name: 'empty shader (floor)', group: 'floor', spp: 1, code: () => EMPTY },
+  ...[1, 4, 9, 16].map((spp) => ({ name: `project, ${spp} spp`, group: 'project: samples', spp, code: () => project({ SAMPLES: spp }) })),
+  ...[0, 1, 2, 4].map((bounces) => ({ name: `project, bounces ${bounces}`, group: 'project: bounces', spp: 1, code: () => project({ BOUNCES: bounces }) })),
+  { name: 'project, no shadows', group: 'project: features', spp: 1, code: () => project({ SHADOWS: 0 }) },
+  { name: 'project, primary rays only', group: 'project: features', spp: 1, code: () => project({ SHADOWS: 0, BOUNCES: 0 }) },
+  { name: 'project, unfiltered stripes', group: 'project: features', spp: 1, code: () => project({ TEXTURE_FILTER: 0 }) },
+  { name: 'project, savings off', group: 'project: savings off', spp: 1, code: () => project({}, { savings: false }) },
+  { name: 'assignment (peer 1)', group: 'peer: assignment', spp: 1, code: () => peer('assignment.glsl') },
+  ...[32, 64, 128, 256].map((steps) => ({ name: `sphere tracing, ${steps} steps (peer 2)`, group: 'peer: sphere tracing', spp: 1, code: () => peer('sdf.glsl', `#define MAX_STEPS ${steps}\n`) })),
+];
+
+const median = (xs) => {
+  const s = [...xs].sort((a, b) => a - b);
+  return s.length % 2 ? s[(s.length - 1) / 2] : (s[s.length / 2 - 1] + s[s.length / 2]) / 2;
+};
+
+async function main() {
+  console.log(`benchmark${quick ? ' (quick)' : ''}: ${VARIANTS.length} variants at ${SIZES.map((s) => s.join('x')).join(' and ')}`);
+  const { context, close } = await startHarness();
+  useHarness(context);
+  const results = [];
+  const failures = [];
+  try {
+    for (const [width, height] of SIZES) {
+      const perAxis = REFERENCE_SAMPLES_PER_AXIS(width);
+      process.stdout.write(`${width}x${height}: converged float64 reference (${perAxis * perAxis} spp) ... `);
+      const started = Date.now();
+      const reference = await renderReferenceParallel(source, { width, height, time: 0, mouse: [0, 0, 0, 0], controls: {} }, { mode: 'converged', samplesPerAxis: perAxis });
+      console.log(`${((Date.now() - started) / 1000).toFixed(0)} s`);
+      for (const [i, variant] of VARIANTS.entries()) {
+        process.stdout.write(`  [${i + 1}/${VARIANTS.length}] ${variant.name} ... `);
+        const result = await timeShader(variant.code(), { width, height, frames: FRAMES, warmup: WARMUP, uniforms: variant.group === 'floor' ? [] : uniformValues });
+        if (result.error) {
+          console.log('FAILED');
+          failures.push(`${variant.name} at ${width}x${height}: ${result.error}`);
+          continue;
+        }
+        const error = imageError(result, reference);
+        const entry = {
+          name: variant.name,
+          group: variant.group,
+          width,
+          height,
+          samplesPerPixel: variant.spp,
+          medianMs: median(result.times),
+          minMs: Math.min(...result.times),
+          maxMs: Math.max(...result.times),
+          frames: result.times.length,
+          rmse: error.rmse,
+          over2: error.over2,
+          chromium: context.environment.chromium,
+          renderer: context.environment.renderer,
+        };
+        results.push(entry);
+        console.log(`${entry.medianMs.toFixed(1)} ms (min ${entry.minMs.toFixed(1)}), RMSE ${entry.rmse.toFixed(4)}, >2/255 ${(100 * entry.over2).toFixed(2)}%`);
+      }
+    }
+  } finally {
+    await disconnect();
+    await close();
+  }
+  if (failures.length) {
+    console.error(`\n${failures.length} variant(s) failed:\n  ${failures.join('\n  ')}`);
+    process.exit(1);
+  }
+  if (quick) {
+    console.log(`\nquick run: all ${VARIANTS.length} variants compiled, rendered and were measured; nothing written.`);
+    return;
+  }
+
+  fs.writeFileSync(path.join(BENCH_DIR, 'results.json'), JSON.stringify(results, null, 2) + '\n');
+  const [w, h] = SIZES[0];
+  const atSize = (width) => results.filter((r) => r.width === width);
+  fs.writeFileSync(path.join(BENCH_DIR, 'chart.svg'), chartSvg(atSize(w), { title: `Time against error at ${w}×${h} (SwiftShader, 2 cores)` }));
+  const front = new Set(paretoFront(atSize(w)).map((r) => r.name));
+  const table = (width) => {
+    const rows = atSize(width);
+    const floor = rows.find((r) => r.group === 'floor');
+    return [
+      `| variant | spp | median ms | min–max ms | RMSE | >2/255 |${width === w ? ' Pareto |' : ''}`,
+      `|---|---|---|---|---|---|${width === w ? '---|' : ''}`,
+      ...rows.map(
+        (r) =>
+          `| ${r.name} | ${r.samplesPerPixel} | ${r.medianMs.toFixed(1)} | ${r.minMs.toFixed(1)}–${r.maxMs.toFixed(1)} | ${r.rmse.toFixed(4)} | ${(100 * r.over2).toFixed(2)}% |${width === w ? (front.has(r.name) ? ' ● |' : ' |') : ''}`,
+      ),
+      '',
+      `Floor: the empty shader takes ${floor.medianMs.toFixed(1)} ms at this size.`,
+    ].join('\n');
+  };
+  const targets = evaluateTargets(atSize(w));
+  const markdown = [
+    `Measured by \`npm run bench\` on ${results[0].renderer.replace(/\s*\(0x[0-9A-F]+\)/i, '')}, ${results[0].chromium}; median of ${FRAMES} frames after ${WARMUP} warm-up frames. Error against the converged float64 reference of the default scene.`,
+    '',
+    `### ${w}×${h}`,
+    '',
+    table(w),
+    '',
+    `### ${SIZES[1][0]}×${SIZES[1][1]}`,
+    '',
+    table(SIZES[1][0]),
+    '',
+    `### Targets at ${w}×${h}, 1 sample per pixel`,
+    '',
+    ...targets.map((t) => `- ${t.met ? 'met' : '**missed**'}: ${t.text}`),
+  ].join('\n');
+  fs.writeFileSync(path.join(BENCH_DIR, 'results.md'), markdown + '\n');
+  replaceMarkedSection(path.join(REPO_ROOT, 'README.md'), 'bench', markdown);
+  console.log(`\n${markdown}\n\nwrote tests/bench/results.json, results.md, chart.svg and the table in README.md`);
+}
+
+main().catch((error) => {
+  console.error(error);
+  process.exit(1);
+});
