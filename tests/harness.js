@@ -264,7 +264,6 @@ export async function openPage({ deterministic = true } = {}) {
   await page.setViewport({ width: 800, height: 600, deviceScaleFactor: 1 });
   // Every page loads fresh from the server: no 304s, nothing left over from an earlier test.
   await page.setCacheEnabled(false);
-  // The benchmark needs the real clock: it times frames with performance.now().
   if (deterministic) await page.evaluateOnNewDocument(INJECTION_SOURCE);
   return { page, errors, context };
 }
@@ -359,12 +358,57 @@ async function renderViewOnce(view) {
   }
 }
 
-const RAW_VERTEX_SHADER = `#version 300 es
+/**
+ * Installed in the raw WebGL2 pages below (renderRawShader, evaluateFloatShader, timeShader):
+ * what they share, in the page's own context. `program` compiles a fullscreen-triangle vertex
+ * shader and `fragment`, links them and returns { program } or { stage, log } on failure;
+ * `toBase64` turns GL's bottom-up RGBA8 rows into top-down base64.
+ */
+function installRawWebGL() {
+  const vertex = `#version 300 es
 void main() {
     vec2 p = vec2(float((gl_VertexID << 1) & 2), float(gl_VertexID & 2));
     gl_Position = vec4(p * 2.0 - 1.0, 0.0, 1.0);
 }
 `;
+  window.__rawWebGL = {
+    program(gl, fragment) {
+      const compile = (type, text) => {
+        const shader = gl.createShader(type);
+        gl.shaderSource(shader, text);
+        gl.compileShader(shader);
+        return shader;
+      };
+      const vs = compile(gl.VERTEX_SHADER, vertex);
+      if (!gl.getShaderParameter(vs, gl.COMPILE_STATUS)) return { stage: 'vertex', log: gl.getShaderInfoLog(vs) };
+      const fs = compile(gl.FRAGMENT_SHADER, fragment);
+      if (!gl.getShaderParameter(fs, gl.COMPILE_STATUS)) return { stage: 'compile', log: gl.getShaderInfoLog(fs) };
+      const program = gl.createProgram();
+      gl.attachShader(program, vs);
+      gl.attachShader(program, fs);
+      gl.linkProgram(program);
+      if (!gl.getProgramParameter(program, gl.LINK_STATUS)) return { stage: 'link', log: gl.getProgramInfoLog(program) };
+      gl.useProgram(program);
+      return { program };
+    },
+    toBase64(pixels, w, h) {
+      const flipped = new Uint8Array(pixels.length);
+      const row = w * 4;
+      for (let y = 0; y < h; y++) flipped.set(pixels.subarray((h - 1 - y) * row, (h - y) * row), y * row);
+      let binary = '';
+      for (let i = 0; i < flipped.length; i += 0x8000) binary += String.fromCharCode.apply(null, flipped.subarray(i, i + 0x8000));
+      return btoa(binary);
+    },
+  };
+}
+
+/** A blank page with the raw WebGL2 helpers; `deterministic: false` keeps the real clock. */
+async function openRawPage(title, options) {
+  const opened = await openPage(options);
+  await opened.page.goto(`data:text/html,<!doctype html><title>${title}</title><body></body>`);
+  await opened.page.evaluate(installRawWebGL);
+  return opened;
+}
 
 /**
  * Compiles a complete fragment shader (e.g. composeImageShader(source).code) in a plain WebGL2
@@ -375,11 +419,10 @@ void main() {
  * @returns {Promise<{stage:'compile'|'link', log:string} | {width, height, data:Buffer, glError:number, renderer:string}>}
  */
 export async function renderRawShader(code, { width, height, uniforms = {} }) {
-  const { page, errors } = await openPage();
+  const { page, errors } = await openRawPage('raw WebGL2');
   try {
-    await page.goto('data:text/html,<!doctype html><title>raw WebGL2</title><body></body>');
     const result = await page.evaluate(
-      (fragment, vertex, w, h, overrides) => {
+      (fragment, w, h, overrides) => {
         if (!window.__deterministic) return { stage: 'setup', log: 'the deterministic injection did not run' };
         const canvas = document.createElement('canvas');
         canvas.width = w;
@@ -387,22 +430,9 @@ export async function renderRawShader(code, { width, height, uniforms = {} }) {
         document.body.appendChild(canvas);
         const gl = canvas.getContext('webgl2', { antialias: false, depth: false, stencil: false, premultipliedAlpha: false, preserveDrawingBuffer: true });
         if (!gl) return { stage: 'setup', log: 'no WebGL2 context' };
-        const compile = (type, text) => {
-          const shader = gl.createShader(type);
-          gl.shaderSource(shader, text);
-          gl.compileShader(shader);
-          return shader;
-        };
-        const vs = compile(gl.VERTEX_SHADER, vertex);
-        if (!gl.getShaderParameter(vs, gl.COMPILE_STATUS)) return { stage: 'vertex', log: gl.getShaderInfoLog(vs) };
-        const fs = compile(gl.FRAGMENT_SHADER, fragment);
-        if (!gl.getShaderParameter(fs, gl.COMPILE_STATUS)) return { stage: 'compile', log: gl.getShaderInfoLog(fs) };
-        const program = gl.createProgram();
-        gl.attachShader(program, vs);
-        gl.attachShader(program, fs);
-        gl.linkProgram(program);
-        if (!gl.getProgramParameter(program, gl.LINK_STATUS)) return { stage: 'link', log: gl.getProgramInfoLog(program) };
-        gl.useProgram(program);
+        const built = window.__rawWebGL.program(gl, fragment);
+        if (built.stage) return built;
+        const { program } = built;
         const at = (name) => gl.getUniformLocation(program, name);
         const now = new Date();
         gl.uniform3f(at('iResolution'), w, h, 1);
@@ -434,21 +464,14 @@ export async function renderRawShader(code, { width, height, uniforms = {} }) {
         const pixels = new Uint8Array(w * h * 4);
         gl.readPixels(0, 0, w, h, gl.RGBA, gl.UNSIGNED_BYTE, pixels);
         const glError = gl.getError();
-        // GL rows run bottom to top; images run top to bottom.
-        const flipped = new Uint8Array(pixels.length);
-        const row = w * 4;
-        for (let y = 0; y < h; y++) flipped.set(pixels.subarray((h - 1 - y) * row, (h - y) * row), y * row);
-        let binary = '';
-        for (let i = 0; i < flipped.length; i += 0x8000) binary += String.fromCharCode.apply(null, flipped.subarray(i, i + 0x8000));
         const debug = gl.getExtension('WEBGL_debug_renderer_info');
         return {
-          data: btoa(binary),
+          data: window.__rawWebGL.toBase64(pixels, w, h),
           glError,
           renderer: debug ? gl.getParameter(debug.UNMASKED_RENDERER_WEBGL) : gl.getParameter(gl.RENDERER),
         };
       },
       code,
-      RAW_VERTEX_SHADER,
       width,
       height,
       uniforms,
@@ -640,32 +663,17 @@ export async function expectMatchesGolden(name, image) {
  * @returns {Promise<Float32Array>} RGBA floats, row 0 first (GL order)
  */
 export async function evaluateFloatShader(code, { width, height, table, tableHeight, tableUniform }) {
-  const { page, errors } = await openPage();
+  const { page, errors } = await openRawPage('float WebGL2');
   try {
-    await page.goto('data:text/html,<!doctype html><title>float WebGL2</title><body></body>');
     const result = await page.evaluate(
-      (fragment, vertex, w, h, tableData, th, uniformName) => {
+      (fragment, w, h, tableData, th, uniformName) => {
         const canvas = document.createElement('canvas');
         const gl = canvas.getContext('webgl2');
         if (!gl) return { error: 'no WebGL2 context' };
         if (!gl.getExtension('EXT_color_buffer_float')) return { error: 'EXT_color_buffer_float is not supported' };
-        const compile = (type, text) => {
-          const shader = gl.createShader(type);
-          gl.shaderSource(shader, text);
-          gl.compileShader(shader);
-          if (!gl.getShaderParameter(shader, gl.COMPILE_STATUS)) throw new Error(gl.getShaderInfoLog(shader));
-          return shader;
-        };
-        const program = gl.createProgram();
-        try {
-          gl.attachShader(program, compile(gl.VERTEX_SHADER, vertex));
-          gl.attachShader(program, compile(gl.FRAGMENT_SHADER, fragment));
-        } catch (error) {
-          return { error: `compile: ${error.message}` };
-        }
-        gl.linkProgram(program);
-        if (!gl.getProgramParameter(program, gl.LINK_STATUS)) return { error: `link: ${gl.getProgramInfoLog(program)}` };
-        gl.useProgram(program);
+        const built = window.__rawWebGL.program(gl, fragment);
+        if (built.stage) return { error: `${built.stage}: ${built.log}` };
+        const { program } = built;
         const input = gl.createTexture();
         gl.activeTexture(gl.TEXTURE0);
         gl.bindTexture(gl.TEXTURE_2D, input);
@@ -689,7 +697,6 @@ export async function evaluateFloatShader(code, { width, height, table, tableHei
         return { data: Array.from(out) };
       },
       code,
-      RAW_VERTEX_SHADER,
       width,
       height,
       Array.from(table),
@@ -735,33 +742,19 @@ export async function startWatchingServer() {
  * @returns {Promise<{times: number[], width, height, data: Buffer} | {error: string}>}
  */
 export async function timeShader(code, { width, height, frames = 15, warmup = 3, uniforms = [] }) {
-  const { page, errors } = await openPage({ deterministic: false });
+  // The benchmark needs the real clock: no deterministic injection here.
+  const { page, errors } = await openRawPage('benchmark', { deterministic: false });
   try {
-    await page.goto('data:text/html,<!doctype html><title>benchmark</title><body></body>');
     const result = await page.evaluate(
-      (fragment, vertex, w, h, timed, untimed, extra) => {
+      (fragment, w, h, timed, untimed, extra) => {
         const canvas = document.createElement('canvas');
         canvas.width = w;
         canvas.height = h;
         const gl = canvas.getContext('webgl2', { antialias: false, depth: false, stencil: false });
         if (!gl) return { error: 'no WebGL2 context' };
-        const compile = (type, text) => {
-          const shader = gl.createShader(type);
-          gl.shaderSource(shader, text);
-          gl.compileShader(shader);
-          if (!gl.getShaderParameter(shader, gl.COMPILE_STATUS)) throw new Error(gl.getShaderInfoLog(shader));
-          return shader;
-        };
-        const program = gl.createProgram();
-        try {
-          gl.attachShader(program, compile(gl.VERTEX_SHADER, vertex));
-          gl.attachShader(program, compile(gl.FRAGMENT_SHADER, fragment));
-        } catch (error) {
-          return { error: `compile: ${error.message}` };
-        }
-        gl.linkProgram(program);
-        if (!gl.getProgramParameter(program, gl.LINK_STATUS)) return { error: `link: ${gl.getProgramInfoLog(program)}` };
-        gl.useProgram(program);
+        const built = window.__rawWebGL.program(gl, fragment);
+        if (built.stage) return { error: `${built.stage}: ${built.log}` };
+        const { program } = built;
         const at = (name) => gl.getUniformLocation(program, name);
         gl.uniform3f(at('iResolution'), w, h, 1);
         for (const { name, type, value } of extra) {
@@ -780,15 +773,9 @@ export async function timeShader(code, { width, height, frames = 15, warmup = 3,
         }
         const pixels = new Uint8Array(w * h * 4);
         gl.readPixels(0, 0, w, h, gl.RGBA, gl.UNSIGNED_BYTE, pixels);
-        const flipped = new Uint8Array(pixels.length);
-        const row = w * 4;
-        for (let y = 0; y < h; y++) flipped.set(pixels.subarray((h - 1 - y) * row, (h - y) * row), y * row);
-        let binary = '';
-        for (let i = 0; i < flipped.length; i += 0x8000) binary += String.fromCharCode.apply(null, flipped.subarray(i, i + 0x8000));
-        return { times, data: btoa(binary) };
+        return { times, data: window.__rawWebGL.toBase64(pixels, w, h) };
       },
       code,
-      RAW_VERTEX_SHADER,
       width,
       height,
       frames,
