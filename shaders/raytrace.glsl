@@ -189,16 +189,16 @@ vec4 intersectCone(vec3 ro, vec3 rd, vec3 pa, vec3 pb, float ra, float rb) {
     if (part == 1) return vec4(tShift + tBest, -axis);
     if (part == 2) return vec4(tShift + tBest, axis);
 
-    // Side normal: the gradient of |w_perp| - r(y), i.e. unit radial direction - k A.
-    // Within the hit point's own rounding error of the axis (the apex of a pointed cone, where
-    // the gradient is 0/0) the radial direction is noise: use the one facing the ray instead.
+    // Side normal: the gradient of |w_perp| - r(y), i.e. (unit radial direction - k A), whose
+    // length is sqrt(1 + k^2) because the two parts are orthogonal. Within the hit point's own
+    // rounding error of the axis (the apex of a pointed cone, where the gradient is 0/0) the
+    // radial direction is noise: the one facing the ray is used instead, and for a ray along
+    // the axis itself any direction perpendicular to it.
     vec3 wPerp = oPerp + tBest * dPerp;
     float radialNoise = 8.0 * EPS32 * (height + max(ra, rb) + tBest);
-    vec3 radial;
-    if (length(wPerp) > radialNoise) radial = normalize(wPerp);
-    else if (length(dPerp) > 0.0) radial = -normalize(dPerp);
-    else radial = normalize(cross(axis, abs(axis.x) < 0.9 ? vec3(1, 0, 0) : vec3(0, 1, 0)));
-    return vec4(tShift + tBest, normalize(radial - slope * axis));
+    vec3 radial = dot(wPerp, wPerp) > radialNoise * radialNoise ? wPerp : -dPerp;
+    if (dot(radial, radial) == 0.0) radial = abs(axis.x) < 0.9 ? vec3(0.0, axis.z, -axis.y) : vec3(-axis.z, 0.0, axis.x);
+    return vec4(tShift + tBest, (normalize(radial) - slope * axis) * inversesqrt(1.0 + slope * slope));
 }
 
 // ---- the scene -------------------------------------------------------------------------------
@@ -424,18 +424,13 @@ vec3 reprojectOnSurface(Scene s, vec3 p, vec3 n, int id) {
     return p;
 }
 
-// Moves p off its surface along n by a few ulps of its own coordinates (the integer-ulp scheme
-// of Waechter and Binder, Ray Tracing Gems ch. 6; 1/32, 1/65536 and 256 are its constants).
-// Only used for rays that start inside a solid, which may hit the same solid again.
+// Moves p off its surface along n by 256 ulps of its largest coordinate, and by at least
+// 2^-16 near the origin: a float form of the integer-ulp offset of Waechter and Binder (Ray
+// Tracing Gems ch. 6, whose constants these are). An ulp of x is 2 EPS32 |x| or less. Only used
+// for rays that start inside a solid, which may hit the same solid again.
 vec3 offsetAlong(vec3 p, vec3 n) {
-    ivec3 ulps = ivec3(256.0 * n);
-    vec3 stepped = intBitsToFloat(floatBitsToInt(p) + ivec3(p.x < 0.0 ? -ulps.x : ulps.x,
-                                                            p.y < 0.0 ? -ulps.y : ulps.y,
-                                                            p.z < 0.0 ? -ulps.z : ulps.z));
-    vec3 nearZero = p + (1.0 / 65536.0) * n;
-    return vec3(abs(p.x) < 1.0 / 32.0 ? nearZero.x : stepped.x,
-                abs(p.y) < 1.0 / 32.0 ? nearZero.y : stepped.y,
-                abs(p.z) < 1.0 / 32.0 ? nearZero.z : stepped.z);
+    float largest = max(max(abs(p.x), abs(p.y)), abs(p.z));
+    return p + n * max(1.0 / 65536.0, 256.0 * 2.0 * EPS32 * largest);
 }
 
 // The cone's radius at a height above its base (0 above the apex).
