@@ -505,11 +505,10 @@ vec2 sinCos(float angle) {
     float r2 = r * r;
     float sinR = r * (1.0 - r2 / 6.0 * (1.0 - r2 / 20.0 * (1.0 - r2 / 42.0 * (1.0 - r2 / 72.0))));
     float cosR = 1.0 - r2 / 2.0 * (1.0 - r2 / 12.0 * (1.0 - r2 / 30.0 * (1.0 - r2 / 56.0 * (1.0 - r2 / 90.0))));
-    int q = int(mod(quadrant, 4.0));
-    if (q == 0) return vec2(sinR, cosR);
-    if (q == 1) return vec2(cosR, -sinR);
-    if (q == 2) return vec2(-sinR, -cosR);
-    return vec2(-cosR, sinR);
+    // Each quarter turn maps (sin, cos) to (cos, -sin); two of them negate both.
+    float q = mod(quadrant, 4.0);
+    vec2 turned = mod(q, 2.0) == 1.0 ? vec2(cosR, -sinR) : vec2(sinR, cosR);
+    return q >= 2.0 ? -turned : turned;
 }
 
 void mainImage(out vec4 fragColor, in vec2 fragCoord) {
