@@ -1,13 +1,69 @@
 // Vite serves the page from src/ (index.html lives there); the shader is imported from ../shaders
-// with `?raw`, static files come from ../public, and the build goes to ../dist.
+// with `?raw`, static files come from ../public (examples/*.glsl among them), and the build goes
+// to ../dist.
+//
+// The glsl-files plugin makes every shader a URL the page can load with ?shader=: public/**.glsl
+// are static files anyway, and shaders/*.glsl are served (and copied into the build) as
+// /shaders/NAME.glsl. Under `npm run dev` it tells the page when any of them changes (the
+// `glsl-file-changed` event, with the file's URL path), so the page reloads that shader in place
+// instead of reloading itself.
+import fs from 'node:fs';
+import path from 'node:path';
 import { fileURLToPath } from 'node:url';
 import { defineConfig } from 'vite';
 
 const repo = fileURLToPath(new URL('.', import.meta.url));
+const shadersDir = path.join(repo, 'shaders');
+const publicDir = path.join(repo, 'public');
+
+/** The URL path a .glsl file is served at, or null if the page does not serve it. */
+function glslUrl(file) {
+  if (!file.endsWith('.glsl')) return null;
+  for (const [dir, prefix] of [
+    [shadersDir, '/shaders/'],
+    [publicDir, '/'],
+  ]) {
+    const relative = path.relative(dir, file);
+    if (!relative.startsWith('..') && !path.isAbsolute(relative)) return prefix + relative.split(path.sep).join('/');
+  }
+  return null;
+}
+
+function glslFiles() {
+  return {
+    name: 'glsl-files',
+    configureServer(server) {
+      server.watcher.add(shadersDir);
+      server.middlewares.use((req, res, next) => {
+        const pathname = decodeURIComponent((req.url ?? '').split('?')[0]);
+        const match = /^\/shaders\/([\w.-]+\.glsl)$/.exec(pathname);
+        if (!match || (req.method !== 'GET' && req.method !== 'HEAD')) return next();
+        const file = path.join(shadersDir, match[1]);
+        fs.readFile(file, (error, data) => {
+          if (error) return next();
+          res.setHeader('Content-Type', 'text/plain; charset=utf-8');
+          res.setHeader('Cache-Control', 'no-cache');
+          res.end(req.method === 'HEAD' ? undefined : data);
+        });
+      });
+    },
+    hotUpdate({ file }) {
+      if (this.environment.name !== 'client') return;
+      const url = glslUrl(file);
+      if (url) this.environment.hot.send({ type: 'custom', event: 'glsl-file-changed', data: { url } });
+    },
+    generateBundle() {
+      for (const name of fs.readdirSync(shadersDir).filter((n) => n.endsWith('.glsl'))) {
+        this.emitFile({ type: 'asset', fileName: `shaders/${name}`, source: fs.readFileSync(path.join(shadersDir, name), 'utf8') });
+      }
+    },
+  };
+}
 
 export default defineConfig({
   root: `${repo}src`,
-  publicDir: `${repo}public`,
+  publicDir,
+  plugins: [glslFiles()],
   server: {
     host: '127.0.0.1',
     // the page imports ../shaders/*.glsl, outside the root: allow the whole repository

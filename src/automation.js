@@ -11,26 +11,31 @@
 //   setControls({NAME: value})   Promise: sets shader controls (as the URL does: coerced into
 //                         range, unknown names warned about); resolves once compiled.
 //   setSource(glsl)       Promise<{ok, error?}>: compiles another Image-tab source.
-//   play(), pause(), setTime(seconds), setMouse([x, y, z, w])
+//   play(), pause(), togglePlay(), restart(), setTime(seconds), setSpeed(s), setMouse([x, y, z, w])
+//   nextFrame()           Promise<{width, height, data, iFrame}>: the next frame the page draws by
+//                         itself (after a click, a key, a play tick), read in the same task; rows
+//                         top to bottom. Asks for no frame.
+//   capture({width, height}?)  Promise<{width, height, data}>: the last frame drawn again off
+//                         screen at that size (default: the canvas's), as the Screenshot button
+//                         saves it.
+//   setChannel(i, url|null)    Promise: an image into iChannel i (null: black again).
+//   loadShader(url)       Promise<{ok, error?}>: fetches and runs a shader as ?shader= does.
+//   shareUrl()            the link "Copy link" copies (reproduces this view).
 //   info()                {renderer (UNMASKED_RENDERER_WEBGL), vendor, version, shadingLanguage,
-//                         width, height, frame, time, playing, mouse (iMouse),
-//                         controls: {NAME: value}}
+//                         width, height, frame, time, playing, speed, mouse (iMouse),
+//                         controls: {NAME: value}, fileName, shaderUrl, origin, contextLost,
+//                         compiled (successful compiles so far)}
 //
 // Every method waits for `ready` and for any compile under way, so a call right after
 // setControls() sees the new values.
+
+import { fetchShader, shaderName } from './shader-loader.js';
+import { flipRows } from './app.js';
 
 function toBase64(bytes) {
   let binary = '';
   for (let i = 0; i < bytes.length; i += 0x8000) binary += String.fromCharCode.apply(null, bytes.subarray(i, i + 0x8000));
   return btoa(binary);
-}
-
-/** GL rows run bottom to top; images run top to bottom. */
-function flipRows(pixels, width, height) {
-  const row = width * 4;
-  const out = new Uint8Array(pixels.length);
-  for (let y = 0; y < height; y++) out.set(pixels.subarray((height - 1 - y) * row, (height - y) * row), y * row);
-  return out;
 }
 
 function median(values) {
@@ -43,8 +48,11 @@ function median(values) {
  * @param {import('./app.js').RaytracerApp | null} app null when the page could not start
  * @param {Promise<void>} ready
  */
-export function installAutomation(app, ready) {
+export function installAutomation(app, ready, ui) {
+  // the first source may still be on its way (?shader= is fetched): calls wait for it
+  const loaded = () => (app.loading ?? Promise.resolve()).catch(() => {});
   const settled = async () => {
+    await loaded();
     await ready;
     await app.whenCompiled();
   };
@@ -73,12 +81,14 @@ export function installAutomation(app, ready) {
     },
 
     async setControls(changes) {
+      await loaded();
       await ready.catch(() => {});
       await app.setControls(changes);
     },
 
     async setSource(source) {
-      app.loadSource(source);
+      await loaded();
+      app.loadSource(source, { origin: 'editor' });
       try {
         await app.compile();
         return { ok: true };
@@ -89,14 +99,39 @@ export function installAutomation(app, ready) {
 
     play: () => app.play(),
     pause: () => app.pause(),
-    setTime(seconds) {
-      app.inputs.setTime(Number(seconds));
-      app.requestRender();
+    togglePlay: () => app.togglePlay(),
+    restart: () => app.restart(),
+    setTime: (seconds) => app.setTime(seconds),
+    setSpeed: (speed) => app.setSpeed(speed),
+    setMouse: (mouse) => app.setMouse(mouse),
+
+    async nextFrame() {
+      const { width, height, pixels, iFrame } = await app.nextFrame();
+      return { width, height, iFrame, data: toBase64(flipRows(pixels, width, height)) };
     },
-    setMouse(mouse) {
-      app.inputs.setMouse(mouse);
-      app.requestRender();
+
+    async capture(size = null) {
+      await settled();
+      const { width, height, data } = app.capture(size);
+      return { width, height, data: toBase64(data) };
     },
+
+    async setChannel(index, url) {
+      await app.setChannel(index, url);
+    },
+
+    async loadShader(url) {
+      await loaded();
+      try {
+        const source = await fetchShader(url);
+        await app.setSource(source, { name: shaderName(url), origin: 'url', url });
+        return { ok: true };
+      } catch (error) {
+        return { ok: false, error: error.report ?? error.message };
+      }
+    },
+
+    shareUrl: () => ui.shareUrl(),
 
     info() {
       return {
@@ -106,8 +141,14 @@ export function installAutomation(app, ready) {
         frame: app.framesRendered,
         time: app.inputs.time,
         playing: app.inputs.playing,
+        speed: app.inputs.speed,
         mouse: app.inputs.mouse(),
         controls: structuredClone(app.values),
+        fileName: app.fileName,
+        shaderUrl: app.shaderUrl,
+        origin: app.origin,
+        contextLost: app.renderer.contextLost,
+        compiled: app.compiled,
       };
     },
   };
@@ -124,9 +165,17 @@ export function installFailedAutomation(error) {
     renderFrames: fail,
     setControls: fail,
     setSource: fail,
+    nextFrame: fail,
+    capture: fail,
+    setChannel: fail,
+    loadShader: fail,
+    shareUrl: () => location.href,
     play() {},
     pause() {},
+    togglePlay() {},
+    restart() {},
     setTime() {},
+    setSpeed() {},
     setMouse() {},
     info: () => ({ error: error.message }),
   };

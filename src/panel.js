@@ -1,51 +1,90 @@
-// The lil-gui panel: play/pause, a frame-time readout, the resolution scale, and one widget per
-// shader control (built from parseControls): floats → slider, ints → integer slider,
-// toggles → checkbox, choices → dropdown, vec2/3/4 → a folder with one slider per component.
+// The lil-gui panel: the view (resolution scale, size cap, screenshot size), images for the four
+// channels, and one widget per shader control (built from parseControls): floats → slider,
+// ints → integer slider, toggles → checkbox, choices → dropdown, vec2/3/4 → a folder with one
+// slider per component. A shader without a control block gets no "Shader controls" folder.
 
 import GUI from 'lil-gui';
 import { MAX_SCALE, MIN_SCALE } from './url-params.js';
 
 const COMPONENTS = ['x', 'y', 'z', 'w'];
 
+/** Longer side of the drawing buffer, in device pixels (0: no cap). */
+export const CAP_CHOICES = { 'No cap': 0, '3840 px': 3840, '2560 px': 2560, '1920 px': 1920, '1280 px': 1280, '960 px': 960, '640 px': 640, '320 px': 320 };
+export const SCREENSHOT_CHOICES = { 'Canvas size': 'current', '2× canvas': 'double', '1280×720': '1280x720', '1920×1080': '1920x1080', '3840×2160': '3840x2160' };
+
+/** The screenshot size a SCREENSHOT_CHOICES value means for a canvas of width × height, or null for the canvas size. */
+export function screenshotSize(choice, width, height) {
+  if (choice === 'double') return { width: width * 2, height: height * 2 };
+  const m = /^(\d+)x(\d+)$/.exec(choice);
+  return m ? { width: Number(m[1]), height: Number(m[2]) } : null;
+}
+
 export class Panel {
   /**
    * @param {object} options
-   * @param {boolean} options.playing
    * @param {number} options.scale
-   * @param {boolean} options.scaleLocked true when the URL fixed the size (the scale is moot)
-   * @param {(playing: boolean) => void} options.onPlay
+   * @param {number} options.cap
+   * @param {boolean} options.sizeFixed true when the URL fixed the size (scale and cap are moot)
    * @param {(scale: number) => void} options.onScale
+   * @param {(cap: number) => void} options.onCap
    * @param {(name: string, value: unknown) => void} options.onControl
+   * @param {(index: number, file: File|null) => void} options.onChannel
    */
-  constructor({ playing, scale, scaleLocked, onPlay, onScale, onControl }) {
-    this.gui = new GUI({ title: 'Raytracer' });
+  constructor({ scale, cap, sizeFixed, onScale, onCap, onControl, onChannel }) {
+    // inside the stage (above the toolbar), not fixed to the window
+    this.gui = new GUI({ title: 'Controls', container: document.getElementById('stage') ?? document.body });
+    if (window.innerWidth < 640) this.gui.close(); // a phone: the picture first
     this.onControl = onControl;
 
-    this._state = { playing, frameTime: '–', scale };
-    this._actions = { togglePlay: () => onPlay(!this._state.playing) };
-    this._play = this.gui.add(this._actions, 'togglePlay');
-    this.setPlaying(playing);
-    this._frameTime = this.gui.add(this._state, 'frameTime').name('Frame time').disable();
-    const scaleController = this.gui.add(this._state, 'scale', MIN_SCALE, MAX_SCALE, 0.05).name('Resolution scale').onChange(onScale);
-    if (scaleLocked) scaleController.name('Resolution scale (size fixed by URL)').disable();
+    this._state = { scale, cap: Object.values(CAP_CHOICES).includes(cap) ? cap : 0, screenshot: 'current' };
+    const view = this.gui.addFolder('View');
+    const scaleController = view.add(this._state, 'scale', MIN_SCALE, MAX_SCALE, 0.05).name('Resolution scale').onChange(onScale);
+    const capController = view.add(this._state, 'cap', CAP_CHOICES).name('Max canvas size').onChange((v) => onCap(Number(v)));
+    if (sizeFixed) {
+      scaleController.name('Scale (size fixed)').disable();
+      capController.name('Max size (size fixed)').disable();
+    }
+    view.add(this._state, 'screenshot', SCREENSHOT_CHOICES).name('Screenshot size');
+
+    // one hidden file input serves the four channels
+    this._file = Object.assign(document.createElement('input'), { type: 'file', accept: 'image/*', hidden: true });
+    this._file.setAttribute('aria-label', 'Image file for a channel');
+    document.body.append(this._file);
+    this._file.addEventListener('change', () => {
+      const file = this._file.files?.[0];
+      if (file) onChannel(this._fileChannel, file);
+      this._file.value = '';
+    });
+    const channels = this.gui.addFolder('Channels').close();
+    this._channelNames = [];
+    for (let i = 0; i < 4; i++) {
+      const actions = {
+        load: () => {
+          this._fileChannel = i;
+          this._file.click();
+        },
+        clear: () => onChannel(i, null),
+      };
+      this._channelNames.push(channels.add(actions, 'load').name(`Load image into iChannel${i}…`));
+      channels.add(actions, 'clear').name(`Clear iChannel${i}`);
+    }
 
     this._controlsFolder = null;
     this._view = {}; // what the widgets edit: scalars by name, vectors as {x, y, z, w}
     this._controls = [];
   }
 
-  setPlaying(playing) {
-    this._state.playing = playing;
-    this._play.name(playing ? '❚❚ Pause' : '▶ Play');
+  /** The screenshot size chosen in the panel, for a canvas of width × height (null: canvas size). */
+  screenshotSize(width, height) {
+    return screenshotSize(this._state.screenshot, width, height);
   }
 
-  /** Shows a frame time in milliseconds (or a word such as "paused"). */
-  setFrameTime(ms) {
-    this._state.frameTime = typeof ms === 'number' ? `${ms.toFixed(1)} ms (${(1000 / ms).toFixed(0)} fps)` : ms;
-    this._frameTime.updateDisplay();
+  /** Shows each channel's image size next to its button. */
+  setChannelSizes(sizes) {
+    sizes.forEach(([w, h], i) => this._channelNames[i].name(`Load image into iChannel${i}…${w ? ` (${w}×${h})` : ''}`));
   }
 
-  /** (Re)builds the shader-control widgets. */
+  /** (Re)builds the shader-control widgets; none (and no folder) for a shader without controls. */
   setControls(controls, values) {
     this._controlsFolder?.destroy();
     this._controls = controls;
@@ -54,7 +93,7 @@ export class Panel {
       this._controlsFolder = null;
       return;
     }
-    const folder = this.gui.addFolder('Shader');
+    const folder = this.gui.addFolder('Shader controls');
     this._controlsFolder = folder;
     for (const control of controls) this._addControl(folder, control);
     this.sync(values);

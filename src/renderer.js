@@ -54,7 +54,8 @@ function shadertoyUniforms() {
     iDate: { value: new THREE.Vector4() },
     iSampleRate: { value: 44100 },
     iChannelTime: { value: [0, 0, 0, 0] },
-    iChannelResolution: { value: [1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1] }, // vec3[4], flat
+    // vec3[4], flat. An empty channel reports 0 × 0, as on Shadertoy (it samples black).
+    iChannelResolution: { value: [0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0] },
     iChannel0: { value: black },
     iChannel1: { value: black },
     iChannel2: { value: black },
@@ -90,6 +91,9 @@ export class ShaderRenderer {
     this.stagingMesh = new THREE.Mesh(geometry, null);
     this.stagingMesh.frustumCulled = false;
     this.stagingScene.add(this.stagingMesh);
+
+    this._black = this.uniforms.iChannel0.value;
+    this._channels = [null, null, null, null]; // textures loaded into iChannel0..3
 
     this._compiling = null; // set while three.js checks a program, read by _onShaderError
     this._serial = 0; // compiles started
@@ -183,6 +187,75 @@ export class ShaderRenderer {
       messages.push(...parseShaderLog(gl.getProgramInfoLog(program) ?? 'link failed', null, 0));
     }
     check.error = new ShaderCompileError(formatShaderMessages(messages, check.source, check.fileName), messages);
+  }
+
+  /** True between webglcontextlost and webglcontextrestored. */
+  get contextLost() {
+    return this.gl.isContextLost();
+  }
+
+  /**
+   * The largest drawing buffer or render target side this context takes, in device pixels.
+   * Zero while the context is lost (the caller keeps its last size then).
+   */
+  get maxSize() {
+    const gl = this.gl;
+    if (gl.isContextLost()) return 0;
+    const dims = gl.getParameter(gl.MAX_VIEWPORT_DIMS);
+    return Math.min(gl.getParameter(gl.MAX_RENDERBUFFER_SIZE), gl.getParameter(gl.MAX_TEXTURE_SIZE), dims[0], dims[1]);
+  }
+
+  /**
+   * Puts an image into iChannel0..3 (null: back to the 1×1 black texture). Sampled as Shadertoy
+   * samples an image by default: mipmapped, repeating, rows flipped so that uv (0,0) is the
+   * image's bottom-left corner, no colour-space conversion.
+   * @param {number} index 0..3
+   * @param {HTMLImageElement|HTMLCanvasElement|ImageBitmap|null} image
+   */
+  setChannel(index, image) {
+    this._channels[index]?.dispose();
+    let texture = null;
+    if (image) {
+      texture = new THREE.Texture(image);
+      texture.flipY = true;
+      texture.wrapS = THREE.RepeatWrapping;
+      texture.wrapT = THREE.RepeatWrapping;
+      texture.minFilter = THREE.LinearMipmapLinearFilter;
+      texture.magFilter = THREE.LinearFilter;
+      texture.generateMipmaps = true;
+      texture.colorSpace = THREE.NoColorSpace;
+      texture.needsUpdate = true;
+    }
+    this._channels[index] = texture;
+    this.uniforms[`iChannel${index}`].value = texture ?? this._black;
+    const resolution = this.uniforms.iChannelResolution.value;
+    const width = image ? (image.naturalWidth ?? image.width) : 0;
+    const height = image ? (image.naturalHeight ?? image.height) : 0;
+    resolution.splice(index * 3, 3, width, height, image ? 1 : 0);
+  }
+
+  /** [width, height] of the image in each channel (0, 0 when empty). */
+  channelSizes() {
+    const r = this.uniforms.iChannelResolution.value;
+    return [0, 1, 2, 3].map((i) => [r[i * 3], r[i * 3 + 1]]);
+  }
+
+  /**
+   * Draws the current shader into an off-screen width × height target and reads it back
+   * (RGBA8, rows bottom to top). The caller writes the uniforms for that size first.
+   */
+  renderOffscreen(width, height) {
+    const target = new THREE.WebGLRenderTarget(width, height, { depthBuffer: false, stencilBuffer: false, generateMipmaps: false });
+    try {
+      this.three.setRenderTarget(target);
+      this.three.render(this.scene, this.camera);
+      const pixels = new Uint8Array(width * height * 4);
+      this.three.readRenderTargetPixels(target, 0, 0, width, height, pixels);
+      return pixels;
+    } finally {
+      this.three.setRenderTarget(null);
+      target.dispose();
+    }
   }
 
   /** Sizes the drawing buffer in device pixels (the CSS size is the page's business). */

@@ -1,21 +1,30 @@
 // The per-frame Shadertoy inputs: the clock (iTime, iTimeDelta, iFrameRate, iFrame), the mouse
 // (iMouse) and the date (iDate), with the site's semantics.
 //
-// iMouse, in device pixels with y up:
-//   xy  position while the left button is held; frozen after release
+// iMouse, in device pixels with y up (the pixel under the pointer, as fragCoord's floor):
+//   xy  position while the left button (or a finger) is down; frozen after release
 //   z   x of the click, positive while held, negated on release
 //   w   y of the click, positive only on the frame the button went down, negative after
+//
+// The clock runs at `speed` times real time: iTime advances by iTimeDelta each frame, and
+// iTimeDelta is that step (so a shader that integrates iTimeDelta agrees with iTime); iFrameRate
+// is the real rate at which frames are drawn. iFrame counts drawn frames from 0 (restart() sets
+// it and iTime back to 0).
 
 const NOMINAL_DELTA = 1 / 60; // iTimeDelta for the first frame and for renders while paused
 
 export class ShadertoyInputs {
   constructor() {
     this.time = 0;
+    this.speed = 1;
     this.playing = true;
     this.frame = 0;
     this.delta = NOMINAL_DELTA;
+    this.frameRate = 1 / NOMINAL_DELTA;
+    /** The values the last drawn frame used (a screenshot draws that frame again). */
+    this.last = null;
     this._lastNow = null;
-    this._mouse = { x: 0, y: 0, clickX: 0, clickY: 0, down: false, clicked: false };
+    this._mouse = { x: 0, y: 0, clickX: 0, clickY: 0, down: false, clicked: false, pointerId: null };
     this._fixedMouse = null; // from the URL: used as given until the user clicks
     /** Called when pointer input changes iMouse (the page re-renders if paused). */
     this.onMouseChange = () => {};
@@ -30,8 +39,19 @@ export class ShadertoyInputs {
     this.playing = false;
   }
 
+  /** iTime and iFrame back to 0 (Shadertoy's rewind); the play state and the mouse stay. */
+  restart() {
+    this.time = 0;
+    this.frame = 0;
+    this._lastNow = null;
+  }
+
   setTime(seconds) {
     this.time = seconds;
+  }
+
+  setSpeed(speed) {
+    this.speed = speed;
   }
 
   /** Fixes iMouse to these four numbers (device pixels) until the next click. */
@@ -39,7 +59,10 @@ export class ShadertoyInputs {
     this._fixedMouse = [x, y, z, w];
   }
 
-  /** Tracks the left button on `canvas`. */
+  /**
+   * Tracks the left button, or one finger, on `canvas`: a drag orbits on a phone as it does with
+   * a mouse. Extra fingers are ignored.
+   */
   attach(canvas) {
     const toDevice = (event) => {
       const rect = canvas.getBoundingClientRect();
@@ -50,23 +73,26 @@ export class ShadertoyInputs {
     };
     const m = this._mouse;
     canvas.addEventListener('pointerdown', (event) => {
-      if (event.button !== 0) return;
-      canvas.setPointerCapture(event.pointerId);
+      if (event.button !== 0 || !event.isPrimary || m.down) return;
+      event.preventDefault(); // no text selection, no emulated mouse events after a touch
+      canvas.setPointerCapture?.(event.pointerId);
       [m.x, m.y] = toDevice(event);
       [m.clickX, m.clickY] = [m.x, m.y];
       m.down = true;
       m.clicked = true;
+      m.pointerId = event.pointerId;
       this._fixedMouse = null;
       this.onMouseChange();
     });
     canvas.addEventListener('pointermove', (event) => {
-      if (!m.down) return;
+      if (!m.down || event.pointerId !== m.pointerId) return;
       [m.x, m.y] = toDevice(event);
       this.onMouseChange();
     });
-    const release = () => {
-      if (!m.down) return;
+    const release = (event) => {
+      if (!m.down || event.pointerId !== m.pointerId) return;
       m.down = false;
+      m.pointerId = null;
       this.onMouseChange();
     };
     canvas.addEventListener('pointerup', release);
@@ -75,7 +101,7 @@ export class ShadertoyInputs {
 
   /** The current iMouse as [x, y, z, w]. */
   mouse() {
-    if (this._fixedMouse) return this._fixedMouse;
+    if (this._fixedMouse) return this._fixedMouse.slice();
     const m = this._mouse;
     return [m.x, m.y, m.down ? m.clickX : -m.clickX, m.clicked ? m.clickY : -m.clickY];
   }
@@ -87,29 +113,56 @@ export class ShadertoyInputs {
   beginFrame(uniforms, width, height, now) {
     if (this.playing) {
       if (this._lastNow !== null) {
-        this.delta = Math.max(0, (now - this._lastNow) / 1000);
+        const real = Math.max(0, (now - this._lastNow) / 1000);
+        this.delta = real * this.speed;
+        this.frameRate = real > 0 ? 1 / real : 0;
         this.time += this.delta;
       } else {
-        this.delta = NOMINAL_DELTA;
+        this.delta = NOMINAL_DELTA * this.speed;
+        this.frameRate = 1 / NOMINAL_DELTA;
       }
       this._lastNow = now;
     } else {
       this.delta = NOMINAL_DELTA;
+      this.frameRate = 1 / NOMINAL_DELTA;
     }
 
     const date = new Date();
     const midnight = new Date(date.getFullYear(), date.getMonth(), date.getDate());
-    uniforms.iResolution.value.set(width, height, 1);
-    uniforms.iTime.value = this.time;
-    uniforms.iTimeDelta.value = this.delta;
-    uniforms.iFrameRate.value = this.delta > 0 ? 1 / this.delta : 0;
-    uniforms.iFrame.value = this.frame;
-    uniforms.iMouse.value.fromArray(this.mouse());
-    uniforms.iDate.value.set(date.getFullYear(), date.getMonth(), date.getDate(), (date - midnight) / 1000);
+    this.last = {
+      width,
+      height,
+      time: this.time,
+      delta: this.delta,
+      frameRate: this.frameRate,
+      frame: this.frame,
+      mouse: this.mouse(),
+      date: [date.getFullYear(), date.getMonth(), date.getDate(), (date - midnight) / 1000],
+    };
+    writeUniforms(uniforms, this.last);
   }
 
   endFrame() {
     this.frame++;
     this._mouse.clicked = false;
   }
+}
+
+/**
+ * Writes one frame's values into the uniforms. Used again by a screenshot, at another size:
+ * then iMouse is scaled with the size, so that it points at the same place in the picture.
+ */
+export function writeUniforms(uniforms, frame, size = null) {
+  const width = size?.width ?? frame.width;
+  const height = size?.height ?? frame.height;
+  const sx = width / frame.width;
+  const sy = height / frame.height;
+  const [mx, my, mz, mw] = frame.mouse;
+  uniforms.iResolution.value.set(width, height, 1);
+  uniforms.iTime.value = frame.time;
+  uniforms.iTimeDelta.value = frame.delta;
+  uniforms.iFrameRate.value = frame.frameRate;
+  uniforms.iFrame.value = frame.frame;
+  uniforms.iMouse.value.set(mx * sx, my * sy, mz * sx, mw * sy);
+  uniforms.iDate.value.fromArray(frame.date);
 }

@@ -1,18 +1,32 @@
 // The page's URL contract, for sharing a view and for automation:
 //
-//   ?time=T        render at iTime = T seconds, paused
-//   &mouse=x,y,z,w iMouse in device pixels (until the first click)
-//   &size=WxH      drawing buffer of W×H device pixels (CSS size W/dpr × H/dpr; no scaling)
-//   &scale=s       resolution scale, 0.25 .. 1 of device pixels (ignored with size)
-//   &NAME=value    any shader control; vectors as comma lists (LIGHT_POSITION=1,2,3)
+//   ?shader=URL      the Image-tab source to run: a URL the page's own server serves (relative,
+//                    such as examples/pattern.glsl, or absolute on the same origin). Without it
+//                    the page runs shaders/raytrace.glsl.
+//   &time=T          render at iTime = T seconds, paused (0 .. 1e6)
+//   &mouse=x,y,z,w   iMouse in device pixels (until the first click); x,y alone means z = w = 0
+//   &size=WxH        drawing buffer of W×H device pixels (CSS size W/dpr × H/dpr; no scaling)
+//   &scale=s         resolution scale, 0.25 .. 1 of device pixels (ignored with size)
+//   &cap=N           cap on the drawing buffer's longer side, in device pixels (ignored with size)
+//   &speed=s         time speed, 0 .. 16 (1 is real time)
+//   &iChannel0=URL   an image for iChannel0 (likewise iChannel1..3), same origin as the page
+//   &NAME=value      any shader control; vectors as comma lists (LIGHT_POSITION=1,2,3)
 //
-// Anything unreadable is reported in `warnings` and ignored; the page never fails on a URL.
-// Control values are returned as written: the app checks them against the shader's controls
-// (coerceControlValue), as it does for the panel and the automation hook.
+// Anything unreadable is reported in `warnings` and ignored, anything out of range is clamped and
+// reported; the page never fails on a URL. Control values are returned as written: the app checks
+// them against the shader's controls (coerceControlValue), as it does for the panel and the
+// automation hook. formatUrlParams writes the same contract back (the "Copy link" button).
 
 export const MIN_SCALE = 0.25;
 export const MAX_SCALE = 1;
-const MAX_SIZE = 16384;
+export const MAX_SIZE = 16384;
+/** Beyond 8K UHD a drawing buffer is not a view but a way to exhaust memory. */
+export const MAX_PIXELS = 7680 * 4320;
+export const MIN_CAP = 16;
+export const MAX_SPEED = 16;
+export const MAX_TIME = 1e6;
+const MAX_MOUSE = 1e6;
+export const CHANNEL_PARAMS = ['iChannel0', 'iChannel1', 'iChannel2', 'iChannel3'];
 
 function finiteNumbers(text) {
   const parts = text.split(',').map((s) => (s.trim() === '' ? NaN : Number(s)));
@@ -20,35 +34,130 @@ function finiteNumbers(text) {
 }
 
 /**
- * @param {string} search location.search
- * @returns {{time?: number, mouse?: number[], size?: {width:number, height:number},
- *   scale?: number, controls: Record<string, string>, warnings: string[]}}
+ * A same-origin URL from a query value, or null. `base` is the page's address.
+ * @returns {{url: string|null, why?: string}}
  */
-export function parseUrlParams(search) {
-  const out = { controls: {}, warnings: [] };
+export function sameOriginUrl(value, base) {
+  let url;
+  try {
+    url = new URL(value, base);
+  } catch {
+    return { url: null, why: 'not a URL' };
+  }
+  const origin = new URL(base).origin;
+  if (url.origin !== origin) return { url: null, why: `only files served by this page's server (${origin}) can be loaded` };
+  return { url: url.href };
+}
+
+/** Scales a size down (keeping its aspect) so that it fits MAX_SIZE and MAX_PIXELS. */
+export function clampSize({ width, height }, maxSide = MAX_SIZE, maxPixels = MAX_PIXELS) {
+  let k = Math.min(1, maxSide / width, maxSide / height, Math.sqrt(maxPixels / (width * height)));
+  if (k >= 1) return { width, height };
+  const out = { width: Math.max(1, Math.floor(width * k)), height: Math.max(1, Math.floor(height * k)) };
+  // floor may still leave the product a hair over
+  while (out.width * out.height > maxPixels) {
+    k *= 0.999;
+    out.width = Math.max(1, Math.floor(width * k));
+    out.height = Math.max(1, Math.floor(height * k));
+  }
+  return out;
+}
+
+/**
+ * @param {string} search location.search
+ * @param {string} [base] the page's address (resolves `shader` and `iChannelN` URLs)
+ * @returns {{shader?: string, time?: number, mouse?: number[], size?: {width:number, height:number},
+ *   scale?: number, cap?: number, speed?: number, channels: (string|undefined)[],
+ *   controls: Record<string, string>, warnings: string[]}}
+ */
+export function parseUrlParams(search, base = 'http://localhost/') {
+  const out = { controls: {}, channels: [], warnings: [] };
   const warn = (key, value, why) => out.warnings.push(`URL parameter ${key}=${value} ignored: ${why}`);
+  const clamped = (key, value, used) => out.warnings.push(`URL parameter ${key}=${value} is out of range: using ${used}`);
+  const number = (key, value, min, max, what) => {
+    const n = finiteNumbers(value);
+    if (!n || n.length !== 1) {
+      warn(key, value, `expected ${what}`);
+      return undefined;
+    }
+    const v = Math.min(max, Math.max(min, n[0]));
+    if (v !== n[0]) clamped(key, value, v);
+    return v;
+  };
 
   for (const [key, value] of new URLSearchParams(search)) {
     if (key === 'time') {
-      const t = finiteNumbers(value);
-      if (t && t.length === 1) out.time = t[0];
-      else warn(key, value, 'expected a number of seconds');
+      const t = number(key, value, 0, MAX_TIME, 'a number of seconds');
+      if (t !== undefined) out.time = t;
     } else if (key === 'mouse') {
       const m = finiteNumbers(value);
-      if (m && (m.length === 4 || m.length === 2)) out.mouse = m.length === 4 ? m : [...m, 0, 0];
-      else warn(key, value, 'expected x,y,z,w');
+      if (m && (m.length === 4 || m.length === 2)) {
+        const mouse = (m.length === 4 ? m : [...m, 0, 0]).map((v) => Math.min(MAX_MOUSE, Math.max(-MAX_MOUSE, v)));
+        if (mouse.some((v, i) => v !== m[i] && i < m.length)) clamped(key, value, mouse.join(','));
+        out.mouse = mouse;
+      } else warn(key, value, 'expected x,y,z,w (finite numbers, device pixels)');
     } else if (key === 'size') {
-      const m = value.trim().match(/^(\d+)\s*[xX×]\s*(\d+)$/);
+      const m = value.trim().match(/^(\d{1,9})\s*[xX×]\s*(\d{1,9})$/);
       const [width, height] = m ? [Number(m[1]), Number(m[2])] : [0, 0];
-      if (width >= 1 && height >= 1 && width <= MAX_SIZE && height <= MAX_SIZE) out.size = { width, height };
-      else warn(key, value, `expected WxH, 1 .. ${MAX_SIZE} device pixels`);
+      if (width >= 1 && height >= 1) {
+        const size = clampSize({ width, height });
+        if (size.width !== width || size.height !== height) clamped(key, value, `${size.width}x${size.height}`);
+        out.size = size;
+      } else warn(key, value, `expected WxH, whole device pixels of at least 1`);
     } else if (key === 'scale') {
-      const s = finiteNumbers(value);
-      if (s && s.length === 1 && s[0] > 0) out.scale = Math.min(MAX_SCALE, Math.max(MIN_SCALE, s[0]));
-      else warn(key, value, `expected a number in ${MIN_SCALE} .. ${MAX_SCALE}`);
+      const s = number(key, value, MIN_SCALE, MAX_SCALE, `a number in ${MIN_SCALE} .. ${MAX_SCALE}`);
+      if (s !== undefined) out.scale = s;
+    } else if (key === 'cap') {
+      const c = number(key, value, MIN_CAP, MAX_SIZE, `a whole number of device pixels, ${MIN_CAP} .. ${MAX_SIZE}`);
+      if (c !== undefined) out.cap = Math.round(c);
+    } else if (key === 'speed') {
+      const s = number(key, value, 0, MAX_SPEED, `a number in 0 .. ${MAX_SPEED}`);
+      if (s !== undefined) out.speed = s;
+    } else if (key === 'shader' || CHANNEL_PARAMS.includes(key)) {
+      const { url, why } = value.trim() ? sameOriginUrl(value.trim(), base) : { url: null, why: 'empty' };
+      if (!url) warn(key, value, why);
+      else if (key === 'shader') out.shader = value.trim();
+      else out.channels[CHANNEL_PARAMS.indexOf(key)] = value.trim();
+    } else if (!/^[A-Za-z_]\w*$/.test(key)) {
+      warn(key, value, 'not a page parameter or a shader control name');
     } else {
       out.controls[key] = value;
     }
   }
   return out;
+}
+
+function formatNumber(v) {
+  // short but exact enough to reproduce a frame: at most 6 decimals, no trailing zeros
+  return Number.isInteger(v) ? String(v) : String(Number(v.toFixed(6)));
+}
+
+/**
+ * The query string (with its `?`) for a view, the inverse of parseUrlParams.
+ * @param {object} state
+ * @param {string} [state.shader] the shader's URL as the page was given it (omitted: built-in)
+ * @param {{width:number, height:number}} state.size drawing buffer, device pixels
+ * @param {number} state.time
+ * @param {number[]} [state.mouse] iMouse; omitted when all zero
+ * @param {number} [state.speed] omitted when 1
+ * @param {(string|undefined)[]} [state.channels] image URLs
+ * @param {Record<string, unknown>} [state.controls] control values to write (vectors as arrays)
+ */
+export function formatUrlParams({ shader, size, time, mouse, speed = 1, channels = [], controls = {} }) {
+  const query = new URLSearchParams();
+  if (shader) query.set('shader', shader);
+  query.set('size', `${size.width}x${size.height}`);
+  query.set('time', formatNumber(time));
+  if (mouse && mouse.some((v) => v !== 0)) query.set('mouse', mouse.map(formatNumber).join(','));
+  if (speed !== 1) query.set('speed', formatNumber(speed));
+  channels.forEach((url, i) => url && query.set(CHANNEL_PARAMS[i], url));
+  for (const [name, value] of Object.entries(controls)) {
+    const text = Array.isArray(value)
+      ? value.map(formatNumber).join(',')
+      : typeof value === 'boolean'
+        ? String(value)
+        : formatNumber(value);
+    query.set(name, text);
+  }
+  return `?${query.toString().replaceAll('%2C', ',').replaceAll('%2F', '/')}`;
 }

@@ -1,0 +1,161 @@
+// The bar along the bottom of the page: play/pause, restart, the time slider, the speed, a
+// frame-time graph with fps, the shader's name, and the output buttons. Every button is a real
+// <button> whose accessible name is what it does ("Play", "Pause", "Restart", "Copy for
+// Shadertoy", "Download .glsl", "Screenshot", ...); the icons are decoration.
+
+const SPEEDS = [0, 0.1, 0.25, 0.5, 1, 2, 4, 8];
+const GRAPH_FRAMES = 90; // frame times kept in the graph
+const GRAPH_MAX_MS = 50; // the graph's top (20 fps); slower frames are clipped there
+
+function element(tag, attributes = {}, ...children) {
+  const node = document.createElement(tag);
+  for (const [key, value] of Object.entries(attributes)) {
+    if (key === 'class') node.className = value;
+    else if (key.startsWith('aria-') || key === 'role' || key === 'title' || key === 'for' || key === 'id') node.setAttribute(key, value);
+    else node[key] = value;
+  }
+  node.append(...children);
+  return node;
+}
+
+// 16×16 icons, drawn in the button's text colour
+const ICONS = {
+  play: '<path d="M4 2.5v11l9.5-5.5z"/>',
+  pause: '<path d="M3.5 2.5h3v11h-3zM9.5 2.5h3v11h-3z"/>',
+  restart: '<path d="M2.5 2.5h2v11h-2zM13.5 2.5v11L5.5 8z"/>',
+  edit: '<path d="M11.2 1.8l3 3-8.7 8.7-3.8.8.8-3.8z"/>',
+  copy: '<g fill="none" stroke="currentColor" stroke-width="1.5"><path d="M5.5 1.75h8v9.5h-8z"/><path d="M2.75 4.5v9.75h8"/></g>',
+  download: '<g fill="none" stroke="currentColor" stroke-width="1.6"><path d="M8 1.5v8.5M4.3 6.6 8 10.3l3.7-3.7M2.5 14h11"/></g>',
+  camera: '<g fill="none" stroke="currentColor" stroke-width="1.5"><path d="M1.75 4.5h3l1.3-2h3.9l1.3 2h3v9H1.75z"/><circle cx="8" cy="8.8" r="2.6"/></g>',
+  link: '<g fill="none" stroke="currentColor" stroke-width="1.6" stroke-linecap="round"><path d="M6.3 9.7l3.4-3.4M7.2 4.6l1.1-1.1a2.7 2.7 0 0 1 3.8 3.8L11 8.4M8.8 11.4l-1.1 1.1a2.7 2.7 0 0 1-3.8-3.8L5 7.6"/></g>',
+};
+
+function icon(name) {
+  const span = element('span', { class: 'icon', 'aria-hidden': 'true' });
+  span.innerHTML = `<svg viewBox="0 0 16 16" width="14" height="14" fill="currentColor">${ICONS[name]}</svg>`;
+  return span;
+}
+
+export class Toolbar {
+  /**
+   * @param {HTMLElement} root the (empty) toolbar element
+   * @param {object} actions callbacks: togglePlay, restart, setTime(s), setSpeed(s), toggleEditor,
+   *   copyForShadertoy, download, screenshot, copyLink
+   */
+  constructor(root, actions) {
+    this.root = root;
+    root.setAttribute('role', 'toolbar');
+    root.setAttribute('aria-label', 'Playback and output');
+
+    this.playButton = element('button', { type: 'button', class: 'play' });
+    this.playButton.addEventListener('click', () => actions.togglePlay());
+    const restart = element('button', { type: 'button', 'aria-label': 'Restart', title: 'Restart: time and frame back to 0 (R)' }, icon('restart'));
+    restart.addEventListener('click', () => actions.restart());
+
+    this.timeSlider = element('input', { type: 'range', min: 0, max: 60, step: 0.01, value: 0, 'aria-label': 'Time', title: 'Time (iTime, seconds)' });
+    this._dragging = false;
+    this.timeSlider.addEventListener('input', () => {
+      this._dragging = true;
+      actions.setTime(Number(this.timeSlider.value));
+    });
+    this.timeSlider.addEventListener('change', () => (this._dragging = false));
+    this.timeText = element('output', { class: 'time', 'aria-live': 'off', title: 'iTime' }, '0.00 s');
+
+    this.speedSelect = element('select', { 'aria-label': 'Speed', title: 'Time speed' });
+    for (const s of SPEEDS) this.speedSelect.append(element('option', { value: String(s) }, `${s}×`));
+    this.speedSelect.value = '1';
+    this.speedSelect.addEventListener('change', () => actions.setSpeed(Number(this.speedSelect.value)));
+
+    this.graph = element('canvas', { class: 'graph', width: GRAPH_FRAMES, height: 24, 'aria-hidden': 'true' });
+    this.fpsText = element('span', { class: 'fps', title: 'Time between frames (smoothed) and frames per second' }, 'paused');
+    this._frameTimes = [];
+    this._average = null;
+    this._shownAt = 0;
+
+    this.nameText = element('span', { class: 'name', title: 'The running shader' });
+    const editButton = element('button', { type: 'button', 'aria-label': 'Edit shader', 'aria-expanded': 'false', title: 'Show the shader source (paste a shader there, or drop a .glsl file on the page)' }, icon('edit'), element('span', { class: 'label' }, ' Edit'));
+    editButton.addEventListener('click', () => actions.toggleEditor());
+    this.editButton = editButton;
+    const button = (label, title, glyph, action) => {
+      const b = element('button', { type: 'button', title, 'aria-label': label }, icon(glyph), element('span', { class: 'label' }, ` ${label}`));
+      b.addEventListener('click', () => action());
+      return b;
+    };
+
+    root.append(
+      element('div', { class: 'group' }, this.playButton, restart, this.timeSlider, this.timeText, this.speedSelect),
+      element('div', { class: 'group meter' }, this.graph, this.fpsText),
+      element('div', { class: 'group grow' }, this.nameText),
+      element(
+        'div',
+        { class: 'group' },
+        editButton,
+        button('Copy for Shadertoy', "Copies the shader's text, ready to paste into Shadertoy's Image tab", 'copy', actions.copyForShadertoy),
+        button('Download .glsl', 'Saves the shader as a .glsl file', 'download', actions.download),
+        button('Screenshot', 'Saves the current frame as a PNG (size: Controls → View)', 'camera', actions.screenshot),
+        button('Copy link', 'Copies a link that reproduces this view: shader URL, controls, mouse, time and size', 'link', actions.copyLink),
+      ),
+    );
+  }
+
+  /** Play state, time, speed and shader name from the app. */
+  update({ playing, time, speed, name }) {
+    const label = playing ? 'Pause' : 'Play';
+    if (this.playButton.getAttribute('aria-label') !== label) {
+      this.playButton.setAttribute('aria-label', label);
+      this.playButton.title = `${label} (Space)`;
+      this.playButton.replaceChildren(icon(playing ? 'pause' : 'play'));
+    }
+    if (!this._dragging) {
+      const max = Math.max(60, Math.ceil((time + 1) / 60) * 60);
+      if (Number(this.timeSlider.max) !== max) this.timeSlider.max = String(max);
+      this.timeSlider.value = String(time);
+    }
+    this.timeText.value = `${time.toFixed(2)} s`;
+    if (Number(this.speedSelect.value) !== speed) {
+      if (![...this.speedSelect.options].some((o) => Number(o.value) === speed)) {
+        this.speedSelect.append(element('option', { value: String(speed) }, `${speed}×`));
+      }
+      this.speedSelect.value = [...this.speedSelect.options].find((o) => Number(o.value) === speed).value;
+    }
+    if (this.nameText.textContent !== name) this.nameText.textContent = name;
+    if (!playing) {
+      this._frameTimes.length = 0;
+      this._average = null;
+      this.fpsText.textContent = 'paused';
+      this._drawGraph();
+    }
+  }
+
+  setEditorOpen(open) {
+    this.editButton.setAttribute('aria-expanded', String(open));
+  }
+
+  /** One more frame interval (ms) while playing. */
+  addFrameTime(ms, now = performance.now()) {
+    this._frameTimes.push(ms);
+    if (this._frameTimes.length > GRAPH_FRAMES) this._frameTimes.shift();
+    this._average = this._average === null ? ms : this._average * 0.9 + ms * 0.1;
+    this._drawGraph();
+    if (now - this._shownAt > 250) {
+      this._shownAt = now;
+      this.fpsText.textContent = `${this._average.toFixed(1)} ms · ${(1000 / this._average).toFixed(0)} fps`;
+    }
+  }
+
+  _drawGraph() {
+    const g = this.graph.getContext('2d');
+    const { width, height } = this.graph;
+    g.clearRect(0, 0, width, height);
+    // guides at 60 fps and 30 fps
+    g.fillStyle = 'rgba(255,255,255,0.18)';
+    for (const ms of [1000 / 60, 1000 / 30]) g.fillRect(0, Math.round(height - (ms / GRAPH_MAX_MS) * height), width, 1);
+    const times = this._frameTimes;
+    for (let i = 0; i < times.length; i++) {
+      const ms = times[i];
+      const h = Math.max(1, Math.min(height, Math.round((ms / GRAPH_MAX_MS) * height)));
+      g.fillStyle = ms <= 1000 / 55 ? '#46a758' : ms <= 1000 / 28 ? '#f5d90a' : '#e5484d';
+      g.fillRect(width - times.length + i, height - h, 1, h);
+    }
+  }
+}

@@ -1,0 +1,259 @@
+// The page's widgets around the canvas, wired to the app: the toolbar (time and output), the
+// lil-gui panel, the editor, keyboard shortcuts (Space: play/pause, R: restart), dropping a
+// .glsl file or an image on the page, and a status line for short confirmations.
+
+import { Editor } from './editor.js';
+import { Panel } from './panel.js';
+import { Toolbar } from './toolbar.js';
+import { droppedKind } from './shader-loader.js';
+import { formatUrlParams } from './url-params.js';
+
+/** Saves a Blob as a file, as a link with `download` does. */
+function saveBlob(blob, fileName) {
+  const url = URL.createObjectURL(blob);
+  const link = document.createElement('a');
+  link.href = url;
+  link.download = fileName;
+  link.hidden = true;
+  document.body.append(link);
+  link.click();
+  link.remove();
+  setTimeout(() => URL.revokeObjectURL(url), 60_000);
+}
+
+/** Copies text: the async Clipboard API, or the older copy command where that is refused. */
+async function copyText(text) {
+  try {
+    await navigator.clipboard.writeText(text);
+    return true;
+  } catch {
+    const area = document.createElement('textarea');
+    area.value = text;
+    area.setAttribute('readonly', '');
+    area.style.position = 'fixed';
+    area.style.opacity = '0';
+    document.body.append(area);
+    area.select();
+    let ok = false;
+    try {
+      ok = document.execCommand('copy');
+    } catch {
+      ok = false;
+    }
+    area.remove();
+    return ok;
+  }
+}
+
+/** RGBA rows top to bottom → PNG Blob. */
+export function pngBlob({ width, height, data }) {
+  const canvas = document.createElement('canvas');
+  canvas.width = width;
+  canvas.height = height;
+  const context = canvas.getContext('2d');
+  context.putImageData(new ImageData(new Uint8ClampedArray(data.buffer, data.byteOffset, data.byteLength), width, height), 0, 0);
+  return new Promise((resolve, reject) => canvas.toBlob((blob) => (blob ? resolve(blob) : reject(new Error('PNG encoding failed'))), 'image/png'));
+}
+
+/** A file name without its folders and extension. */
+function stem(name) {
+  const base = name.slice(name.lastIndexOf('/') + 1);
+  return base.replace(/\.[^.]*$/, '') || 'shader';
+}
+
+function isTextEntry(target) {
+  return target instanceof Element && Boolean(target.closest('input, textarea, select, [contenteditable=""], [contenteditable="true"]'));
+}
+
+/**
+ * @param {import('./app.js').RaytracerApp} app
+ * @returns the page's output actions, for the automation hook and the tests
+ */
+export function installUi(app) {
+  const statusLine = document.getElementById('toast');
+  let toastTimer = 0;
+  const toast = (text) => {
+    statusLine.textContent = text;
+    statusLine.hidden = false;
+    clearTimeout(toastTimer);
+    toastTimer = setTimeout(() => (statusLine.hidden = true), 3000);
+  };
+
+  // ---- output --------------------------------------------------------------------------------
+
+  const shareUrl = () => {
+    const query = formatUrlParams({
+      shader: app.origin === 'builtin' ? null : app.shaderUrl,
+      size: { width: app.renderer.width, height: app.renderer.height },
+      time: app.inputs.time,
+      mouse: app.inputs.mouse(),
+      speed: app.inputs.speed,
+      channels: app.channelUrls,
+      controls: app.changedControls(),
+    });
+    return `${location.origin}${location.pathname}${query}`;
+  };
+
+  const actions = {
+    togglePlay: () => app.togglePlay(),
+    restart: () => app.restart(),
+    setTime: (t) => app.setTime(t),
+    setSpeed: (s) => app.setSpeed(s),
+    toggleEditor: () => editor.toggle(),
+
+    /** Exactly the text Shadertoy's Image tab takes: the shader file (Shadertoy adds the header). */
+    async copyForShadertoy() {
+      const ok = await copyText(app.source);
+      toast(ok ? `Copied ${app.fileName} (${app.source.split('\n').length} lines): paste it into Shadertoy's Image tab` : 'The browser refused to copy; use Download .glsl instead');
+      return ok;
+    },
+
+    download() {
+      const name = `${stem(app.fileName)}.glsl`;
+      saveBlob(new Blob([app.source], { type: 'text/plain;charset=utf-8' }), name);
+      toast(`Saved ${name}`);
+      return name;
+    },
+
+    /** A PNG of the current frame, at the size chosen in the panel (canvas size by default). */
+    async screenshot(size = null) {
+      try {
+        const image = app.capture(size ?? panel.screenshotSize(app.renderer.width, app.renderer.height));
+        const name = `${stem(app.fileName)}-t${app.inputs.last.time.toFixed(2)}-${image.width}x${image.height}.png`;
+        saveBlob(await pngBlob(image), name);
+        toast(`Saved ${name}`);
+        return { name, width: image.width, height: image.height };
+      } catch (error) {
+        console.warn(`Screenshot failed: ${error.message}`);
+        toast(`Screenshot failed: ${error.message}`);
+        return null;
+      }
+    },
+
+    async copyLink() {
+      const url = shareUrl();
+      const ok = await copyText(url);
+      const caveat =
+        app.origin === 'editor' || app.origin === 'file'
+          ? app.shaderUrl
+            ? ' (a link cannot hold your edits: it opens the file the shader came from)'
+            : ' (a link cannot hold a pasted or dropped shader: share its text with Download .glsl)'
+          : '';
+      toast(ok ? `Copied a link to this view${caveat}` : 'The browser refused to copy the link');
+      return url;
+    },
+  };
+
+  // ---- widgets -------------------------------------------------------------------------------
+
+  const toolbar = new Toolbar(document.getElementById('toolbar'), actions);
+  const panel = new Panel({
+    scale: app.scale,
+    cap: app.cap,
+    sizeFixed: Boolean(app.fixedSize),
+    onScale: (s) => app.setScale(s),
+    onCap: (c) => app.setCap(c),
+    onControl: (name, value) => app.setControls({ [name]: value }, 'panel'),
+    onChannel: (i, file) =>
+      app.setChannel(i, file).then(
+        () => toast(file ? `Loaded ${file.name} into iChannel${i}` : `Emptied iChannel${i}`),
+        (error) => {
+          console.warn(error.message);
+          toast(error.message);
+        },
+      ),
+  });
+  const editor = new Editor(document.getElementById('editor'), {
+    apply: (source) => app.setSource(source, { origin: 'editor' }).catch(() => {}),
+    onToggle: (open) => toolbar.setEditorOpen(open),
+  });
+
+  const showState = () => {
+    toolbar.update({ playing: app.inputs.playing, time: app.inputs.time, speed: app.inputs.speed, name: app.fileName });
+  };
+  let shownAt = 0;
+  app.on('state', () => {
+    panel.sync(app.values);
+    panel.setChannelSizes(app.renderer.channelSizes());
+    showState();
+  });
+  app.on('frame', (_, ms) => {
+    toolbar.addFrameTime(ms);
+    const now = performance.now();
+    if (now - shownAt > 100) {
+      shownAt = now;
+      showState();
+    }
+  });
+  app.on('source', () => {
+    panel.setControls(app.controls, app.values);
+    editor.setSource(app.source, app.fileName);
+    document.title = `${app.fileName} · Shadertoy runner`;
+    showState();
+  });
+  app.on('compile', () => {
+    editor.setErrors(app.compileErrors);
+    showState(); // a paused restart or time change shows once drawn
+  });
+  showState();
+
+  // ---- keyboard ------------------------------------------------------------------------------
+
+  window.addEventListener('keydown', (event) => {
+    if (event.defaultPrevented || event.ctrlKey || event.metaKey || event.altKey || isTextEntry(event.target)) return;
+    const onButton = event.target instanceof Element && event.target.closest('button');
+    if (event.code === 'Space' && !onButton) {
+      event.preventDefault();
+      app.togglePlay();
+    } else if (event.code === 'KeyR' && !event.repeat) {
+      event.preventDefault();
+      app.restart();
+    }
+  });
+
+  // ---- drag and drop -------------------------------------------------------------------------
+
+  const dropHint = document.getElementById('drop-hint');
+  let dragDepth = 0;
+  const hasFiles = (event) => [...(event.dataTransfer?.types ?? [])].includes('Files');
+  document.addEventListener('dragenter', (event) => {
+    if (!hasFiles(event)) return;
+    event.preventDefault();
+    dragDepth++;
+    dropHint.hidden = false;
+  });
+  document.addEventListener('dragover', (event) => {
+    if (!hasFiles(event)) return;
+    event.preventDefault();
+    event.dataTransfer.dropEffect = 'copy';
+  });
+  document.addEventListener('dragleave', () => {
+    if (--dragDepth <= 0) {
+      dragDepth = 0;
+      dropHint.hidden = true;
+    }
+  });
+  document.addEventListener('drop', async (event) => {
+    if (!hasFiles(event)) return;
+    event.preventDefault();
+    dragDepth = 0;
+    dropHint.hidden = true;
+    const file = event.dataTransfer.files[0];
+    if (!file) return;
+    const kind = droppedKind(file);
+    if (kind === 'image') {
+      await app.setChannel(0, file).then(
+        () => toast(`Loaded ${file.name} into iChannel0`),
+        (error) => toast(error.message),
+      );
+    } else if (kind === 'shader') {
+      const source = await file.text();
+      app.setSource(source, { name: file.name, origin: 'file' }).catch(() => {});
+      toast(`Running ${file.name}`);
+    } else {
+      toast(`${file.name} is neither a shader (.glsl) nor an image`);
+    }
+  });
+
+  return { toast, toolbar, panel, editor, actions, shareUrl };
+}

@@ -1,0 +1,163 @@
+// Shared steps of the page tests (tests/page-*.test.js): open the real page in the harness's
+// Chromium, wait for its first frame, read pixels and the inputs the example inspector shader
+// (public/examples/inputs.glsl) encodes, and fail on any console error the page logged.
+
+import fs from 'node:fs';
+import path from 'node:path';
+import { expect } from 'vitest';
+import { REPO_ROOT, openPage } from './harness.js';
+
+export const EXAMPLES_DIR = path.join(REPO_ROOT, 'public', 'examples');
+export const exampleSource = (name) => fs.readFileSync(path.join(EXAMPLES_DIR, `${name}.glsl`), 'utf8');
+
+/**
+ * Runs `body({page, errors, warnings, context, goto})` on a fresh page and closes it. The test
+ * fails if the page logged a console error or threw, even when `body` passed.
+ * @param {(p: object) => Promise<void>} body
+ * @param {{viewport?: object, beforeLoad?: (page) => Promise<void>}} [options]
+ */
+export async function withPage(body, { viewport, beforeLoad } = {}) {
+  const { page, errors, context } = await openPage();
+  const warnings = [];
+  page.on('console', (message) => {
+    if (message.type() === 'warn' || message.type() === 'warning') warnings.push(message.text());
+  });
+  if (viewport) await page.setViewport(viewport);
+  if (beforeLoad) await beforeLoad(page);
+  /** Loads the page at `query` ("?shader=...") and waits for its first frame (or its failure). */
+  const goto = async (query, { expectReady = true, base = context.baseUrl } = {}) => {
+    await page.goto(`${base}/${query}`, { waitUntil: 'load' });
+    await page.waitForFunction(() => window.raytracer || document.documentElement.dataset.error, { polling: 50 });
+    if (expectReady) {
+      const outcome = await page.evaluate(() => window.raytracer.ready.then(() => 'ok', (e) => `ready rejected: ${e?.message ?? e}`));
+      expect(outcome, `${query}: the page did not draw its first frame`).toBe('ok');
+    }
+  };
+  try {
+    await body({ page, errors, warnings, context, goto });
+  } finally {
+    await page.close().catch(() => {});
+  }
+  expect(errors, 'the page logged errors').toEqual([]);
+}
+
+function decode64(data) {
+  return Buffer.from(data, 'base64');
+}
+
+/** window.raytracer.readPixels(): a new frame, rows top to bottom. */
+export async function readPixels(page) {
+  const r = await page.evaluate(() => window.raytracer.readPixels());
+  return { width: r.width, height: r.height, data: decode64(r.data) };
+}
+
+/**
+ * Starts waiting for the next frame the page draws by itself, and returns once the page is
+ * waiting (so that an action sent after it cannot be drawn before). Call the returned function
+ * after acting: it resolves with that frame.
+ */
+export async function nextFrame(page) {
+  await page.evaluate(() => {
+    window.__nextFrame = window.raytracer.nextFrame();
+  });
+  return () => page.evaluate(() => window.__nextFrame).then((r) => ({ width: r.width, height: r.height, iFrame: r.iFrame, data: decode64(r.data) }));
+}
+
+export async function info(page) {
+  return page.evaluate(() => window.raytracer.info());
+}
+
+/** RGB of the pixel at (x, y), y counted from the top. */
+export function pixel(image, x, y) {
+  const i = (y * image.width + x) * 4;
+  return [image.data[i], image.data[i + 1], image.data[i + 2]];
+}
+
+// ---- public/examples/inputs.glsl --------------------------------------------------------------
+
+export const DATA = Object.freeze({
+  iFrame: 0,
+  mouseX: 1,
+  mouseY: 2,
+  mouseZ: 3,
+  mouseW: 4,
+  resX: 5,
+  resY: 6,
+  resZ1000: 7,
+  year: 8,
+  month: 9,
+  day: 10,
+  seconds: 11,
+  timeMs: 12,
+  delta1e5: 13,
+  fragX2: 14,
+  fragY2: 15,
+});
+export const CHECKS = [
+  'iResolution.z == 1',
+  'fragCoord at pixel centres',
+  'fragCoord inside the canvas',
+  'iFrame >= 0',
+  'iTimeDelta > 0 and iFrameRate > 0',
+  'iMouse.w > 0 only while held (z > 0)',
+  'clicks land on the canvas',
+  'iDate fields in range',
+  'an empty channel samples black',
+  'iTime >= 0',
+];
+const CELL = 10;
+const PASS = [0, 200, 80];
+const FAIL = [230, 30, 30];
+
+/** A value of the data strip at a pixel (gl x, gl y within rows 0..9). */
+export function dataAt(image, glX, glY) {
+  const [r, g, b] = pixel(image, glX, image.height - 1 - glY);
+  return r * 65536 + g * 256 + b - 8388608;
+}
+
+/** Data cell `k`, read at its centre. */
+export function dataCell(image, k) {
+  return dataAt(image, k * CELL + CELL / 2, CELL / 2);
+}
+
+/** Every decoded input of a frame of inputs.glsl. */
+export function decodeInputs(image) {
+  const out = {};
+  for (const [name, k] of Object.entries(DATA)) out[name] = dataCell(image, k);
+  out.mouse = [out.mouseX, out.mouseY, out.mouseZ, out.mouseW];
+  return out;
+}
+
+/** The check strip: { name: 'pass'|'fail'|'?' } for each rule. */
+export function checkResults(image) {
+  return Object.fromEntries(
+    CHECKS.map((name, k) => {
+      const colour = pixel(image, k * CELL + CELL / 2, image.height - 1 - (CELL + CELL / 2));
+      const is = (c) => c.every((v, i) => Math.abs(v - colour[i]) <= 1);
+      return [name, is(PASS) ? 'pass' : is(FAIL) ? 'fail' : `? rgb(${colour})`];
+    }),
+  );
+}
+
+/** The canvas's box in CSS pixels. */
+export async function canvasBox(page) {
+  return page.evaluate(() => {
+    const r = document.getElementById('view').getBoundingClientRect();
+    return { left: r.left, top: r.top, width: r.width, height: r.height };
+  });
+}
+
+/** The overlay's text, or null while it is hidden. */
+export async function overlayText(page) {
+  return page.evaluate(() => {
+    const o = document.querySelector('[role="alert"]');
+    return o && !o.hidden ? o.textContent : null;
+  });
+}
+
+/** A button by its accessible name (puppeteer's ARIA query). */
+export async function button(page, name) {
+  const handle = await page.$(`::-p-aria([name="${name}"][role="button"])`);
+  if (!handle) throw new Error(`no button named "${name}"`);
+  return handle;
+}

@@ -1,0 +1,429 @@
+// Getting shaders in and pictures out, through the page's own widgets in the real browser: the
+// editor (a pasted shader, a broken one), a dropped .glsl file or image, channel images, the
+// clipboard ("Copy for Shadertoy", "Copy link"), downloads (".glsl", "Screenshot"), compile
+// errors, a lost GPU context, no WebGL2 at all, and the dev server's shader reload.
+import fs from 'node:fs';
+import os from 'node:os';
+import path from 'node:path';
+import { PNG } from 'pngjs';
+import { afterAll, describe, expect, test } from 'vitest';
+import { composeImageShader } from '../src/shadertoy.js';
+import { REPO_ROOT, SHADER_FILE, disconnect, renderRawShader, startWatchingServer } from './harness.js';
+import { EXAMPLES_DIR, button, exampleSource, info, overlayText, pixel, readPixels, withPage } from './page-helpers.js';
+
+afterAll(disconnect);
+
+const SIZE = 'size=160x90';
+const PATTERN = `?shader=examples/pattern.glsl&${SIZE}&time=2`;
+const solid = (r, g, b) => `void mainImage(out vec4 fragColor, in vec2 fragCoord) {\n    fragColor = vec4(${r / 255}, ${g / 255}, ${b / 255}, 1.0);\n}\n`;
+
+function sameImage(a, b) {
+  return a.width === b.width && a.height === b.height && Buffer.compare(Buffer.from(a.data), Buffer.from(b.data)) === 0;
+}
+
+function allPixels(image, rgb) {
+  for (let i = 0; i < image.width * image.height; i++) {
+    const p = [image.data[i * 4], image.data[i * 4 + 1], image.data[i * 4 + 2]];
+    if (p.some((v, c) => Math.abs(v - rgb[c]) > 1)) return false;
+  }
+  return true;
+}
+
+/** Lets the page read and write the clipboard (and focuses it: the Clipboard API wants focus). */
+async function allowClipboard(page, baseUrl) {
+  await page.browserContext().overridePermissions(baseUrl, ['clipboard-read', 'clipboard-write', 'clipboard-sanitized-write']);
+  await page.bringToFront();
+}
+
+/** Saves the page's downloads in a fresh folder; `next()` waits for the next finished file. */
+async function captureDownloads(page) {
+  const dir = fs.mkdtempSync(path.join(os.tmpdir(), 'raytracer-downloads-'));
+  const session = await page.browser().target().createCDPSession();
+  await session.send('Browser.setDownloadBehavior', { behavior: 'allow', downloadPath: dir });
+  const seen = new Set();
+  return {
+    async next(timeoutMs = 20_000) {
+      const end = Date.now() + timeoutMs;
+      while (Date.now() < end) {
+        const done = fs.readdirSync(dir).filter((f) => !f.endsWith('.crdownload') && !seen.has(f));
+        if (done.length) {
+          seen.add(done[0]);
+          return { name: done[0], file: path.join(dir, done[0]) };
+        }
+        await new Promise((r) => setTimeout(r, 50));
+      }
+      throw new Error(`no download arrived in ${timeoutMs} ms`);
+    },
+    async close() {
+      await session.send('Browser.setDownloadBehavior', { behavior: 'default' }).catch(() => {});
+      await session.detach().catch(() => {});
+      fs.rmSync(dir, { recursive: true, force: true });
+    },
+  };
+}
+
+/** Drops files on the page as a person does from a file manager (CDP drag events). */
+async function dropFiles(page, files) {
+  const session = await page.createCDPSession();
+  const data = { items: [], files, dragOperationsMask: 1 };
+  for (const type of ['dragEnter', 'dragOver', 'drop']) await session.send('Input.dispatchDragEvent', { type, x: 300, y: 200, data });
+  await session.detach();
+}
+
+function writeTempPng(file, width, height, rgb) {
+  const png = new PNG({ width, height });
+  for (let i = 0; i < width * height; i++) png.data.set([...rgb, 255], i * 4);
+  fs.writeFileSync(file, PNG.sync.write(png));
+}
+
+// ------------------------------------------------------------------------------------------------
+
+describe('the editor', () => {
+  // A broken line in the user's file must be reported with the user's line number, also when the
+  // page puts a host control block (raymarch.glsl) between Shadertoy's header and the file.
+  const BROKEN = [
+    { name: 'pattern', find: 'float turn = ', error: 'undeclared' },
+    { name: 'raymarch', find: 'float sphere = ', error: 'undeclared' },
+  ];
+  test.each(BROKEN.map((b) => [b.name, b]))('pasting a broken %s.glsl names the right line and keeps the last image', async (name, broken) => {
+    await withPage(async ({ page, context, goto }) => {
+      await allowClipboard(page, context.baseUrl);
+      await goto(`?shader=examples/${name}.glsl&${SIZE}&time=2`);
+      const before = await readPixels(page);
+      const lines = exampleSource(name).split('\n');
+      const index = lines.findIndex((l) => l.includes(broken.find));
+      lines[index] = lines[index].replace(broken.find, `${broken.find}notDeclaredAnywhere + `);
+      const line = index + 1;
+
+      await (await button(page, 'Edit shader')).click();
+      await page.waitForSelector('textarea[aria-label="Shader source"]', { visible: true });
+      expect(await page.$eval('textarea', (t) => t.value)).toBe(exampleSource(name));
+      await page.evaluate((text) => navigator.clipboard.writeText(text), lines.join('\n'));
+      await page.focus('textarea');
+      await page.keyboard.down('Control');
+      await page.keyboard.press('KeyA');
+      await page.keyboard.up('Control');
+      await page.keyboard.press('KeyV', { commands: ['Paste'] });
+
+      await page.waitForFunction(() => !document.querySelector('[role="alert"]').hidden, { polling: 50 });
+      const alert = await overlayText(page);
+      expect(alert).toContain(`${name}.glsl:${line}:`);
+      expect(alert).toContain('notDeclaredAnywhere');
+      expect(alert).toContain(broken.error);
+      expect(alert).toContain('still showing the last version that compiled');
+      expect(await page.$$eval('.editor-gutter .error', (els) => els.map((e) => Number(e.textContent)))).toContain(line);
+      expect(sameImage(await readPixels(page), before), 'the previous image stays').toBe(true);
+
+      // pasting a good shader runs it, and the alert goes
+      await page.evaluate((text) => navigator.clipboard.writeText(text), solid(10, 200, 30));
+      await page.focus('textarea');
+      await page.keyboard.down('Control');
+      await page.keyboard.press('KeyA');
+      await page.keyboard.up('Control');
+      await page.keyboard.press('KeyV', { commands: ['Paste'] });
+      await page.waitForFunction(() => document.querySelector('[role="alert"]').hidden, { polling: 50 });
+      expect(allPixels(await readPixels(page), [10, 200, 30])).toBe(true);
+      expect(await page.$$('.editor-gutter .error')).toHaveLength(0);
+    });
+  });
+
+  test('typing then Ctrl+Enter compiles; a shader without a control block empties the panel', async () => {
+    await withPage(async ({ page, goto }) => {
+      await goto(`?shader=examples/raymarch.glsl&${SIZE}&time=2`);
+      const folders = () => page.$$eval('.lil-gui .lil-title', (els) => els.map((e) => e.textContent.trim()));
+      expect(await folders()).toContain('Shader controls');
+      expect(await page.$('::-p-aria([name="Twist (radians per unit)"])')).not.toBeNull();
+      await (await button(page, 'Edit shader')).click();
+      await page.$eval('textarea', (t) => {
+        t.value = '';
+      });
+      await page.type('textarea', 'void mainImage(out vec4 c, in vec2 f) { c = vec4(1.0, 0.0, 1.0, 1.0); }');
+      await page.keyboard.down('Control');
+      await page.keyboard.press('Enter');
+      await page.keyboard.up('Control');
+      await page.waitForFunction(() => window.raytracer.info().origin === 'editor' && !document.querySelector('.lil-gui .lil-title')?.parentElement.textContent.includes('Twist'));
+      await page.evaluate(() => window.raytracer.readPixels()); // settles the compile
+      expect(allPixels(await readPixels(page), [255, 0, 255])).toBe(true);
+      expect(await folders()).not.toContain('Shader controls');
+      expect((await info(page)).controls).toEqual({});
+    });
+  });
+});
+
+describe('dropping files on the page', () => {
+  test('a .glsl file runs; an image goes into iChannel0', async () => {
+    const dir = fs.mkdtempSync(path.join(os.tmpdir(), 'raytracer-drop-'));
+    try {
+      const shader = path.join(dir, 'dropped-shader.glsl');
+      // left half: the channel's colour; right half: iChannelResolution[0].xy / 255
+      fs.writeFileSync(
+        shader,
+        'void mainImage(out vec4 fragColor, in vec2 fragCoord) {\n' +
+          '    vec2 uv = fragCoord / iResolution.xy;\n' +
+          '    fragColor = uv.x < 0.5 ? texture(iChannel0, uv) : vec4(iChannelResolution[0].xy / 255.0, 0.0, 1.0);\n' +
+          '}\n',
+      );
+      const image = path.join(dir, 'orange.png');
+      writeTempPng(image, 6, 4, [250, 140, 20]);
+      await withPage(async ({ page, goto }) => {
+        await goto(PATTERN);
+        await dropFiles(page, [shader]);
+        await page.waitForFunction(() => window.raytracer.info().fileName === 'dropped-shader.glsl');
+        expect(await info(page)).toMatchObject({ origin: 'file', fileName: 'dropped-shader.glsl' });
+        let frame = await readPixels(page);
+        expect(pixel(frame, 20, 45)).toEqual([0, 0, 0]); // an empty channel is black
+        expect(pixel(frame, 140, 45)).toEqual([0, 0, 0]); // ... of size 0 x 0
+        expect(await page.$eval('textarea', (t) => t.value)).toBe(fs.readFileSync(shader, 'utf8'));
+
+        await dropFiles(page, [image]);
+        await page.waitForFunction(() => document.getElementById('toast').textContent.includes('orange.png'));
+        frame = await readPixels(page);
+        expect(pixel(frame, 20, 45)).toEqual([250, 140, 20]);
+        expect(pixel(frame, 140, 45)).toEqual([6, 4, 0]);
+      });
+    } finally {
+      fs.rmSync(dir, { recursive: true, force: true });
+    }
+  });
+
+  test('the panel loads an image into a channel, and ?iChannel1= loads one from the URL', async () => {
+    const tempDir = path.join(REPO_ROOT, 'public', `test-channel-${process.pid}`);
+    fs.mkdirSync(tempDir, { recursive: true });
+    try {
+      writeTempPng(path.join(tempDir, 'blue.png'), 3, 5, [20, 60, 240]);
+      fs.writeFileSync(
+        path.join(tempDir, 'channels.glsl'),
+        'void mainImage(out vec4 c, in vec2 f) {\n    c = f.x < 80.0 ? texture(iChannel1, vec2(0.5)) : texture(iChannel2, vec2(0.5));\n}\n',
+      );
+      const local = path.join(tempDir, 'green.png');
+      writeTempPng(local, 2, 2, [30, 220, 90]);
+      await withPage(async ({ page, goto }) => {
+        const base = path.basename(tempDir);
+        await goto(`?shader=${base}/channels.glsl&${SIZE}&time=0&iChannel1=${base}/blue.png`);
+        await page.waitForFunction(() => document.querySelector('.lil-gui').textContent.includes('iChannel1… (3×5)'));
+        expect(pixel(await readPixels(page), 20, 45)).toEqual([20, 60, 240]);
+        expect(pixel(await readPixels(page), 120, 45)).toEqual([0, 0, 0]);
+        // Controls → Channels → "Load image into iChannel2…" opens a file chooser
+        await page.evaluate(() => [...document.querySelectorAll('.lil-gui .lil-title')].find((t) => t.textContent.trim() === 'Channels').click());
+        await new Promise((r) => setTimeout(r, 600)); // the folder's opening animation
+        const [chooser] = await Promise.all([page.waitForFileChooser(), (await button(page, 'Load image into iChannel2…')).click()]);
+        await chooser.accept([local]);
+        await page.waitForFunction(() => document.querySelector('.lil-gui').textContent.includes('iChannel2… (2×2)'));
+        expect(pixel(await readPixels(page), 120, 45)).toEqual([30, 220, 90]);
+        expect(await page.evaluate(() => window.raytracer.shareUrl())).toContain(`iChannel1=${base}/blue.png`);
+        await (await button(page, 'Clear iChannel1')).click();
+        await page.waitForFunction(() => !document.querySelector('.lil-gui').textContent.includes('(3×5)'));
+        expect(pixel(await readPixels(page), 20, 45)).toEqual([0, 0, 0]);
+      });
+    } finally {
+      fs.rmSync(tempDir, { recursive: true, force: true });
+    }
+  });
+});
+
+describe('output', () => {
+  test('"Copy for Shadertoy" copies exactly the file, which compiles in Shadertoy\'s header', async () => {
+    let copied;
+    await withPage(async ({ page, context, goto }) => {
+      await allowClipboard(page, context.baseUrl);
+      await goto(`?shader=examples/raymarch.glsl&${SIZE}&time=2&TWIST=2`);
+      await page.evaluate(() => navigator.clipboard.writeText('nothing yet'));
+      await (await button(page, 'Copy for Shadertoy')).click();
+      await page.waitForFunction(() => document.getElementById('toast').textContent.startsWith('Copied'));
+      copied = await page.evaluate(() => navigator.clipboard.readText());
+    });
+    expect(copied).toBe(exampleSource('raymarch'));
+    const raw = await renderRawShader(composeImageShader(copied).code, { width: 16, height: 9 });
+    expect(raw.stage, raw.log).toBeUndefined();
+  });
+
+  test('"Download .glsl" saves the file; "Screenshot" saves the frame as a PNG at the canvas size or a chosen one', async () => {
+    let downloads;
+    await withPage(async ({ page, goto }) => {
+      downloads = await captureDownloads(page);
+      await goto(`?shader=examples/pattern.glsl&${SIZE}&time=2&mouse=30,40,-30,-40`);
+      await (await button(page, 'Download .glsl')).click();
+      const glsl = await downloads.next();
+      expect(glsl.name).toBe('pattern.glsl');
+      expect(fs.readFileSync(glsl.file, 'utf8')).toBe(exampleSource('pattern'));
+
+      const frame = await readPixels(page);
+      await (await button(page, 'Screenshot')).click();
+      const shot = await downloads.next();
+      expect(shot.name).toBe('pattern-t2.00-160x90.png');
+      const png = PNG.sync.read(fs.readFileSync(shot.file));
+      expect(sameImage(png, frame), 'the screenshot is the frame on the canvas').toBe(true);
+
+      const choice = await page.$('::-p-aria([name="Screenshot size"][role="combobox"])');
+      await choice.select('2× canvas');
+      await (await button(page, 'Screenshot')).click();
+      const big = await downloads.next();
+      expect(big.name).toBe('pattern-t2.00-320x180.png');
+      const bigPng = PNG.sync.read(fs.readFileSync(big.file));
+      // the same view drawn at 320x180 (iMouse scaled with it)
+      await goto('?shader=examples/pattern.glsl&size=320x180&time=2&mouse=60,80,-60,-80');
+      expect(sameImage(bigPng, await readPixels(page)), 'the 2x screenshot is the view drawn at 2x').toBe(true);
+    }).finally(() => downloads?.close());
+  });
+
+  test('"Copy link" reproduces the view: shader URL, controls, mouse, time, size', async () => {
+    let link;
+    let original;
+    await withPage(async ({ page, context, goto }) => {
+      await allowClipboard(page, context.baseUrl);
+      await goto(`?shader=examples/raymarch.glsl&${SIZE}`); // playing, default controls
+      await page.evaluate(() => window.raytracer.setControls({ TWIST: 2.25, ALBEDO: [0.2, 0.5, 0.9] }));
+      // a real drag on the canvas
+      const box = await page.evaluate(() => document.getElementById('view').getBoundingClientRect().toJSON());
+      await page.mouse.move(box.left + 30.5, box.top + 20.5);
+      await page.mouse.down();
+      await page.mouse.move(box.left + 120.5, box.top + 50.5, { steps: 3 });
+      await page.mouse.up();
+      await page.keyboard.press('Space'); // pause where it is
+      await page.waitForFunction(() => !window.raytracer.info().playing);
+      await page.evaluate(() => window.raytracer.setTime(3.5));
+      original = await readPixels(page);
+      await (await button(page, 'Copy link')).click();
+      await page.waitForFunction(() => document.getElementById('toast').textContent.startsWith('Copied a link'));
+      link = await page.evaluate(() => navigator.clipboard.readText());
+      expect(link).toBe(await page.evaluate(() => window.raytracer.shareUrl()));
+    });
+    const url = new URL(link);
+    expect(Object.fromEntries(url.searchParams)).toEqual({
+      shader: 'examples/raymarch.glsl',
+      size: '160x90',
+      time: '3.5',
+      mouse: '120,39,-30,-69',
+      TWIST: '2.25',
+      ALBEDO: '0.2,0.5,0.9',
+    });
+    await withPage(async ({ page, goto }) => {
+      await goto(url.search);
+      expect(sameImage(await readPixels(page), original), 'the link shows the same pixels').toBe(true);
+    });
+  });
+});
+
+describe('errors', () => {
+  test('a shader that fails on load: the alert names the line, nothing else runs, nothing throws', async () => {
+    const tempDir = path.join(REPO_ROOT, 'public', `test-broken-${process.pid}`);
+    fs.mkdirSync(tempDir, { recursive: true });
+    try {
+      fs.writeFileSync(path.join(tempDir, 'broken.glsl'), '// line 1\n// line 2\nvoid mainImage(out vec4 c, in vec2 f) {\n    c = vec3(1.0);\n}\n');
+      await withPage(async ({ page, goto }) => {
+        await goto(`?shader=${path.basename(tempDir)}/broken.glsl&${SIZE}&time=0`, { expectReady: false });
+        await page.waitForFunction(() => document.documentElement.dataset.error === 'shader-compile');
+        const alert = await overlayText(page);
+        expect(alert).toContain('broken.glsl did not compile');
+        expect(alert).toContain('broken.glsl:4:');
+      });
+    } finally {
+      fs.rmSync(tempDir, { recursive: true, force: true });
+    }
+  });
+
+  test('a lost WebGL context shows an alert and comes back with the same picture', async () => {
+    await withPage(async ({ page, goto }) => {
+      await goto(PATTERN);
+      const before = await readPixels(page);
+      await page.evaluate(() => {
+        window.__loseContext = document.getElementById('view').getContext('webgl2').getExtension('WEBGL_lose_context');
+        window.__loseContext.loseContext();
+      });
+      await page.waitForFunction(() => window.raytracer.info().contextLost && !document.querySelector('[role="alert"]').hidden);
+      expect(await overlayText(page)).toContain('GPU context was lost');
+      await page.evaluate(() => window.__loseContext.restoreContext());
+      await page.waitForFunction(() => !window.raytracer.info().contextLost && document.querySelector('[role="alert"]').hidden);
+      const after = await readPixels(page);
+      expect(sameImage(after, before), 'the restored context draws the same picture').toBe(true);
+    });
+  });
+
+  test('no WebGL2: a clear message, not a blank page', async () => {
+    await withPage(
+      async ({ page, goto }) => {
+        await goto(PATTERN, { expectReady: false });
+        expect(await page.evaluate(() => document.documentElement.dataset.error)).toBe('webgl2');
+        const alert = await overlayText(page);
+        expect(alert).toContain('WebGL2 is not available');
+        expect(alert).toMatch(/browser or GPU provides no WebGL2/);
+        const rejected = await page.evaluate(() => window.raytracer.ready.then(() => null, (e) => e.message));
+        expect(rejected).toMatch(/WebGL2/);
+      },
+      {
+        beforeLoad: (page) =>
+          page.evaluateOnNewDocument(() => {
+            const getContext = HTMLCanvasElement.prototype.getContext;
+            HTMLCanvasElement.prototype.getContext = function (type, ...rest) {
+              return type === 'webgl2' ? null : getContext.call(this, type, ...rest);
+            };
+          }),
+      },
+    );
+  });
+});
+
+describe('development: editing a shader file reloads it without reloading the page', () => {
+  // A temporary file in each served folder: public/ (as ?shader=NAME.glsl) and shaders/ (served
+  // by vite.config.js as /shaders/NAME.glsl). The page runs it from a server that watches files.
+  test.each([
+    ['public/', path.join(REPO_ROOT, 'public'), ''],
+    ['shaders/', path.join(REPO_ROOT, 'shaders'), 'shaders/'],
+  ])('a file under %s', async (_, dir, prefix) => {
+    const name = `hmr-test-${process.pid}.glsl`;
+    const file = path.join(dir, name);
+    fs.writeFileSync(file, solid(200, 0, 0));
+    const server = await startWatchingServer();
+    try {
+      await withPage(async ({ page, goto }) => {
+        await goto(`?shader=${prefix}${name}&size=32x18&time=0`, { base: server.baseUrl });
+        expect(pixel(await readPixels(page), 5, 5)).toEqual([200, 0, 0]);
+        await page.evaluate(() => (window.__sameDocument = true));
+        // the watcher may still be starting: rewrite until the page has the new colour
+        const deadline = Date.now() + 30_000;
+        let colour;
+        do {
+          fs.writeFileSync(file, solid(0, 0, 200));
+          await new Promise((r) => setTimeout(r, 300));
+          colour = pixel(await readPixels(page), 5, 5);
+        } while (colour[2] !== 200 && Date.now() < deadline);
+        expect(colour).toEqual([0, 0, 200]);
+        expect(await page.evaluate(() => window.__sameDocument)).toBe(true);
+        expect(await info(page)).toMatchObject({ origin: 'url', fileName: name });
+      });
+    } finally {
+      fs.rmSync(file, { force: true });
+      await server.close();
+    }
+  });
+
+  // The built-in shader comes in through a `?raw` import: Vite's own hot update. Only the file's
+  // modification time is touched (the content is never rewritten, so no edit can be lost).
+  test('shaders/raytrace.glsl, the built-in shader', async () => {
+    const server = await startWatchingServer();
+    try {
+      await withPage(async ({ page, goto }) => {
+        await goto('?size=32x18&time=0', { base: server.baseUrl });
+        const before = (await info(page)).compiled;
+        await page.evaluate(() => (window.__sameDocument = true));
+        const deadline = Date.now() + 30_000;
+        let compiled;
+        do {
+          const now = new Date();
+          fs.utimesSync(SHADER_FILE, now, now);
+          await new Promise((r) => setTimeout(r, 400));
+          compiled = (await info(page)).compiled;
+        } while (compiled === before && Date.now() < deadline);
+        expect(compiled).toBeGreaterThan(before);
+        expect(await page.evaluate(() => window.__sameDocument)).toBe(true);
+        expect(await info(page)).toMatchObject({ origin: 'builtin', fileName: 'shaders/raytrace.glsl' });
+      });
+    } finally {
+      await server.close();
+    }
+  });
+});
+
+test('the example shaders are where the page serves them', () => {
+  for (const name of ['raymarch', 'pattern', 'inputs']) expect(fs.existsSync(path.join(EXAMPLES_DIR, `${name}.glsl`))).toBe(true);
+});

@@ -1,0 +1,87 @@
+// The URL contract (src/url-params.js) without a browser: what each parameter reads as, that bad
+// values are clamped or ignored with a warning naming them, and that formatUrlParams writes what
+// parseUrlParams reads back.
+import { describe, expect, test } from 'vitest';
+import { MAX_PIXELS, clampSize, formatUrlParams, parseUrlParams } from '../src/url-params.js';
+
+const BASE = 'http://127.0.0.1:5173/';
+
+describe('parseUrlParams reads good values', () => {
+  test.each([
+    ['time', '?time=2.5', { time: 2.5 }],
+    ['mouse, four values', '?mouse=1,2,-3,-4', { mouse: [1, 2, -3, -4] }],
+    ['mouse, two values', '?mouse=10,20', { mouse: [10, 20, 0, 0] }],
+    ['size', '?size=320x180', { size: { width: 320, height: 180 } }],
+    ['scale', '?scale=0.5', { scale: 0.5 }],
+    ['cap', '?cap=1280', { cap: 1280 }],
+    ['speed', '?speed=2', { speed: 2 }],
+    ['relative shader URL', '?shader=examples/pattern.glsl', { shader: 'examples/pattern.glsl' }],
+    ['same-origin absolute shader URL', `?shader=${BASE}x.glsl`, { shader: `${BASE}x.glsl` }],
+    ['a channel', '?iChannel2=img/noise.png', { channels: [undefined, undefined, 'img/noise.png'] }],
+    ['a control', '?BOUNCES=2&LIGHT=1,2,3', { controls: { BOUNCES: '2', LIGHT: '1,2,3' } }],
+  ])('%s', (_, search, expected) => {
+    const params = parseUrlParams(search, BASE);
+    expect(params.warnings).toEqual([]);
+    expect(params).toMatchObject(expected);
+  });
+});
+
+describe('parseUrlParams warns about bad values and never throws', () => {
+  test.each([
+    ['time=NaN', '?time=NaN', 'time', {}],
+    ['time=abc', '?time=abc', 'time', {}],
+    ['negative time is clamped', '?time=-5', 'time', { time: 0 }],
+    ['huge time is clamped', '?time=1e300', 'time', { time: 1e6 }],
+    ['mouse with a word', '?mouse=1,2,three,4', 'mouse', {}],
+    ['mouse with Infinity', '?mouse=Infinity,1', 'mouse', {}],
+    ['size 0x0', '?size=0x0', 'size', {}],
+    ['size with words', '?size=widexhigh', 'size', {}],
+    ['absurd size is scaled down', '?size=100000x100000', 'size', {}],
+    ['scale above 1 is clamped', '?scale=9', 'scale', { scale: 1 }],
+    ['scale NaN', '?scale=NaN', 'scale', {}],
+    ['cap below the minimum is clamped', '?cap=3', 'cap', { cap: 16 }],
+    ['negative speed is clamped', '?speed=-1', 'speed', { speed: 0 }],
+    ['shader on another origin', '?shader=https://example.com/x.glsl', 'shader', {}],
+    ['shader with a javascript: URL', '?shader=javascript:alert(1)', 'shader', {}],
+    ['empty shader', '?shader=', 'shader', {}],
+    ['channel on another origin', '?iChannel0=https://example.com/a.png', 'iChannel0', {}],
+    ['a name that is no control name', '?a%20b=1', 'a b', {}],
+  ])('%s', (_, search, key, expected) => {
+    const params = parseUrlParams(search, BASE);
+    expect(params.warnings.length).toBe(1);
+    expect(params.warnings[0]).toContain(`${key}=`);
+    expect(params).toMatchObject(expected);
+    if (key === 'size' && params.size) expect(params.size.width * params.size.height).toBeLessThanOrEqual(MAX_PIXELS);
+  });
+
+  test('an absurd size keeps its aspect and fits the limits', () => {
+    const { width, height } = clampSize({ width: 100000, height: 50000 });
+    expect(width * height).toBeLessThanOrEqual(MAX_PIXELS);
+    expect(Math.abs(width / height - 2)).toBeLessThan(0.01);
+    expect(clampSize({ width: 20000, height: 10 })).toEqual({ width: 16384, height: 8 });
+    expect(clampSize({ width: 640, height: 360 })).toEqual({ width: 640, height: 360 });
+  });
+});
+
+test('formatUrlParams writes what parseUrlParams reads', () => {
+  const state = {
+    shader: 'examples/raymarch.glsl',
+    size: { width: 160, height: 90 },
+    time: 3.3,
+    mouse: [40, 59, -40, -59],
+    speed: 2,
+    channels: [null, 'img/a.png'],
+    controls: { TWIST: 2.2, ALBEDO: [0.5, 0.25, 1], MAX_STEPS: 64, FLAG: true },
+  };
+  const query = formatUrlParams(state);
+  expect(query).toBe(
+    '?shader=examples/raymarch.glsl&size=160x90&time=3.3&mouse=40,59,-40,-59&speed=2&iChannel1=img/a.png&TWIST=2.2&ALBEDO=0.5,0.25,1&MAX_STEPS=64&FLAG=true',
+  );
+  const back = parseUrlParams(query, BASE);
+  expect(back.warnings).toEqual([]);
+  expect(back).toMatchObject({ shader: state.shader, size: state.size, time: 3.3, mouse: state.mouse, speed: 2 });
+  expect(back.channels[1]).toBe('img/a.png');
+  expect(back.controls).toEqual({ TWIST: '2.2', ALBEDO: '0.5,0.25,1', MAX_STEPS: '64', FLAG: 'true' });
+  // the built-in shader, no mouse, real time: only size and time
+  expect(formatUrlParams({ size: { width: 8, height: 4 }, time: 0, mouse: [0, 0, 0, 0] })).toBe('?size=8x4&time=0');
+});
