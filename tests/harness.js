@@ -737,16 +737,17 @@ export async function startWatchingServer() {
  * Times a complete fragment shader in a plain WebGL2 canvas (no page code): `warmup` untimed
  * frames (the first compiles SwiftShader's code), then `frames` timed frames, each a draw plus a
  * 1-pixel readPixels so that what is timed is the rendering; then the last frame's pixels.
- * Shadertoy's uniforms are at their first-frame values (iTime 0, iMouse 0); `uniforms` adds
- * others as { name, type, value } (float, int, vec2, vec3, vec4).
+ * Each frame is its own call into the page, so a slow variant never hits a protocol timeout,
+ * and `onFrame(i)` can show progress. Shadertoy's uniforms are at their first-frame values
+ * (iTime 0, iMouse 0); `uniforms` adds others as { name, type, value } (float, int, vecN).
  * @returns {Promise<{times: number[], width, height, data: Buffer} | {error: string}>}
  */
-export async function timeShader(code, { width, height, frames = 15, warmup = 3, uniforms = [] }) {
+export async function timeShader(code, { width, height, frames = 15, warmup = 3, uniforms = [], onFrame = () => {} }) {
   // The benchmark needs the real clock: no deterministic injection here.
   const { page, errors } = await openRawPage('benchmark', { deterministic: false });
   try {
-    const result = await page.evaluate(
-      (fragment, w, h, timed, untimed, extra) => {
+    const setup = await page.evaluate(
+      (fragment, w, h, extra) => {
         const canvas = document.createElement('canvas');
         canvas.width = w;
         canvas.height = h;
@@ -754,8 +755,7 @@ export async function timeShader(code, { width, height, frames = 15, warmup = 3,
         if (!gl) return { error: 'no WebGL2 context' };
         const built = window.__rawWebGL.program(gl, fragment);
         if (built.stage) return { error: `${built.stage}: ${built.log}` };
-        const { program } = built;
-        const at = (name) => gl.getUniformLocation(program, name);
+        const at = (name) => gl.getUniformLocation(built.program, name);
         gl.uniform3f(at('iResolution'), w, h, 1);
         for (const { name, type, value } of extra) {
           const v = Array.isArray(value) ? value : [Number(value)];
@@ -764,27 +764,36 @@ export async function timeShader(code, { width, height, frames = 15, warmup = 3,
         }
         gl.viewport(0, 0, w, h);
         const one = new Uint8Array(4);
-        const times = [];
-        for (let i = 0; i < untimed + timed; i++) {
-          const start = performance.now();
-          gl.drawArrays(gl.TRIANGLES, 0, 3);
-          gl.readPixels(0, 0, 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, one);
-          if (i >= untimed) times.push(performance.now() - start);
-        }
-        const pixels = new Uint8Array(w * h * 4);
-        gl.readPixels(0, 0, w, h, gl.RGBA, gl.UNSIGNED_BYTE, pixels);
-        return { times, data: window.__rawWebGL.toBase64(pixels, w, h) };
+        window.__benchmark = {
+          frame() {
+            const start = performance.now();
+            gl.drawArrays(gl.TRIANGLES, 0, 3);
+            gl.readPixels(0, 0, 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, one);
+            return performance.now() - start;
+          },
+          pixels() {
+            const pixels = new Uint8Array(w * h * 4);
+            gl.readPixels(0, 0, w, h, gl.RGBA, gl.UNSIGNED_BYTE, pixels);
+            return window.__rawWebGL.toBase64(pixels, w, h);
+          },
+        };
+        return {};
       },
       code,
       width,
       height,
-      frames,
-      warmup,
       uniforms,
     );
+    if (setup.error) return setup;
+    const times = [];
+    for (let i = 0; i < warmup + frames; i++) {
+      const ms = await page.evaluate(() => window.__benchmark.frame());
+      if (i >= warmup) times.push(ms);
+      onFrame(i);
+    }
+    const data = await page.evaluate(() => window.__benchmark.pixels());
     if (errors.length) throw new Error(`benchmark page logged errors:\n  ${errors.join('\n  ')}`);
-    if (result.error) return result;
-    return { times: result.times, width, height, data: decodeRgba(result.data, width, height, 'benchmark frame') };
+    return { times, width, height, data: decodeRgba(data, width, height, 'benchmark frame') };
   } finally {
     await page.close().catch(() => {});
   }

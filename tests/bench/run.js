@@ -81,9 +81,16 @@ async function main() {
       console.log(`${((Date.now() - started) / 1000).toFixed(0)} s`);
       for (const [i, variant] of VARIANTS.entries()) {
         process.stdout.write(`  [${i + 1}/${VARIANTS.length}] ${variant.name} ... `);
-        const result = await timeShader(variant.code(), { width, height, frames: FRAMES, warmup: WARMUP, uniforms: variant.group === 'floor' ? [] : uniformValues });
+        const result = await timeShader(variant.code(), {
+          width,
+          height,
+          frames: FRAMES,
+          warmup: WARMUP,
+          uniforms: variant.group === 'floor' ? [] : uniformValues,
+          onFrame: () => process.stdout.write('.'),
+        });
         if (result.error) {
-          console.log('FAILED');
+          console.log(' FAILED');
           failures.push(`${variant.name} at ${width}x${height}: ${result.error}`);
           continue;
         }
@@ -104,7 +111,7 @@ async function main() {
           renderer: context.environment.renderer,
         };
         results.push(entry);
-        console.log(`${entry.medianMs.toFixed(1)} ms (min ${entry.minMs.toFixed(1)}), RMSE ${entry.rmse.toFixed(4)}, >2/255 ${(100 * entry.over2).toFixed(2)}%`);
+        console.log(` ${entry.medianMs.toFixed(1)} ms (min ${entry.minMs.toFixed(1)}), RMSE ${entry.rmse.toFixed(4)}, >2/255 ${(100 * entry.over2).toFixed(2)}%`);
       }
     }
   } finally {
