@@ -359,7 +359,7 @@ async function renderViewOnce(view) {
 }
 
 /**
- * Installed in the raw WebGL2 pages below (renderRawShader, evaluateFloatShader, timeShader):
+ * Installed in the raw WebGL2 pages below (renderRawShader, evaluateFloatShader, timeShaders):
  * what they share, in the page's own context. `program` compiles a fullscreen-triangle vertex
  * shader and `fragment`, links them and returns { program } or { stage, log } on failure;
  * `toBase64` turns GL's bottom-up RGBA8 rows into top-down base64.
@@ -734,66 +734,83 @@ export async function startWatchingServer() {
 }
 
 /**
- * Times a complete fragment shader in a plain WebGL2 canvas (no page code): `warmup` untimed
- * frames (the first compiles SwiftShader's code), then `frames` timed frames, each a draw plus a
- * 1-pixel readPixels so that what is timed is the rendering; then the last frame's pixels.
- * Each frame is its own call into the page, so a slow variant never hits a protocol timeout,
- * and `onFrame(i)` can show progress. Shadertoy's uniforms are at their first-frame values
- * (iTime 0, iMouse 0); `uniforms` adds others as { name, type, value } (float, int, vecN).
- * @returns {Promise<{times: number[], width, height, data: Buffer} | {error: string}>}
+ * Times complete fragment shaders in one plain WebGL2 canvas (no page code), interleaved: each
+ * round draws every shader once, so that a machine that speeds up or slows down during the run
+ * moves all of them alike. `warmup` untimed rounds (the first compiles SwiftShader's code), then
+ * `frames` timed rounds; a frame is a draw plus a 1-pixel readPixels, so that what is timed is
+ * the rendering. Then each shader's last frame is read back. Each frame is its own call into the
+ * page (no protocol timeout however slow), and `onRound(i)` can show progress.
+ * `shaders` is a list of { code, uniforms } where uniforms are { name, type, value } (float,
+ * int, vecN) besides Shadertoy's own at their first-frame values (iTime 0, iMouse 0).
+ * @returns {Promise<Array<{times: number[], width, height, data: Buffer} | {error: string}>>}
  */
-export async function timeShader(code, { width, height, frames = 15, warmup = 3, uniforms = [], onFrame = () => {} }) {
+export async function timeShaders(shaders, { width, height, frames = 15, warmup = 3, onRound = () => {} }) {
   // The benchmark needs the real clock: no deterministic injection here.
   const { page, errors } = await openRawPage('benchmark', { deterministic: false });
   try {
-    const setup = await page.evaluate(
-      (fragment, w, h, extra) => {
+    const setups = await page.evaluate(
+      (list, w, h) => {
         const canvas = document.createElement('canvas');
         canvas.width = w;
         canvas.height = h;
         const gl = canvas.getContext('webgl2', { antialias: false, depth: false, stencil: false });
-        if (!gl) return { error: 'no WebGL2 context' };
-        const built = window.__rawWebGL.program(gl, fragment);
-        if (built.stage) return { error: `${built.stage}: ${built.log}` };
-        const at = (name) => gl.getUniformLocation(built.program, name);
-        gl.uniform3f(at('iResolution'), w, h, 1);
-        for (const { name, type, value } of extra) {
-          const v = Array.isArray(value) ? value : [Number(value)];
-          if (type === 'int' || type === 'bool') gl.uniform1i(at(name), v[0]);
-          else gl[`uniform${v.length}fv`](at(name), new Float32Array(v));
-        }
+        if (!gl) return list.map(() => ({ error: 'no WebGL2 context' }));
         gl.viewport(0, 0, w, h);
         const one = new Uint8Array(4);
+        const programs = list.map(({ code, uniforms }) => {
+          const built = window.__rawWebGL.program(gl, code);
+          if (built.stage) return { error: `${built.stage}: ${built.log}` };
+          const at = (name) => gl.getUniformLocation(built.program, name);
+          gl.uniform3f(at('iResolution'), w, h, 1);
+          for (const { name, type, value } of uniforms) {
+            const v = Array.isArray(value) ? value : [Number(value)];
+            if (type === 'int' || type === 'bool') gl.uniform1i(at(name), v[0]);
+            else gl[`uniform${v.length}fv`](at(name), new Float32Array(v));
+          }
+          return { program: built.program };
+        });
         window.__benchmark = {
-          frame() {
+          frame(i) {
+            gl.useProgram(programs[i].program);
             const start = performance.now();
             gl.drawArrays(gl.TRIANGLES, 0, 3);
             gl.readPixels(0, 0, 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, one);
             return performance.now() - start;
           },
-          pixels() {
+          pixels(i) {
+            gl.useProgram(programs[i].program);
+            gl.drawArrays(gl.TRIANGLES, 0, 3);
             const pixels = new Uint8Array(w * h * 4);
             gl.readPixels(0, 0, w, h, gl.RGBA, gl.UNSIGNED_BYTE, pixels);
             return window.__rawWebGL.toBase64(pixels, w, h);
           },
         };
-        return {};
+        return programs.map((p) => (p.error ? { error: p.error } : {}));
       },
-      code,
+      shaders.map(({ code, uniforms = [] }) => ({ code, uniforms })),
       width,
       height,
-      uniforms,
     );
-    if (setup.error) return setup;
-    const times = [];
-    for (let i = 0; i < warmup + frames; i++) {
-      const ms = await page.evaluate(() => window.__benchmark.frame());
-      if (i >= warmup) times.push(ms);
-      onFrame(i);
+    const live = setups.map((s, i) => (s.error ? null : i)).filter((i) => i !== null);
+    const times = shaders.map(() => []);
+    for (let round = 0; round < warmup + frames; round++) {
+      for (const i of live) {
+        const ms = await page.evaluate((k) => window.__benchmark.frame(k), i);
+        if (round >= warmup) times[i].push(ms);
+      }
+      onRound(round);
     }
-    const data = await page.evaluate(() => window.__benchmark.pixels());
+    const results = [];
+    for (const [i, setup] of setups.entries()) {
+      if (setup.error) {
+        results.push(setup);
+        continue;
+      }
+      const data = await page.evaluate((k) => window.__benchmark.pixels(k), i);
+      results.push({ times: times[i], width, height, data: decodeRgba(data, width, height, 'benchmark frame') });
+    }
     if (errors.length) throw new Error(`benchmark page logged errors:\n  ${errors.join('\n  ')}`);
-    return { times, width, height, data: decodeRgba(data, width, height, 'benchmark frame') };
+    return results;
   } finally {
     await page.close().catch(() => {});
   }

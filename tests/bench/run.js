@@ -6,8 +6,8 @@
 //                              cannot rot; it asserts no time and writes no results)
 //
 // Each variant is compiled inside Shadertoy's header and timed in headless Chromium on
-// SwiftShader (tests/harness.js, timeShader: a draw plus a 1-pixel read-back per frame, so the
-// rendering is what is timed). Its last frame is compared with the converged float64 reference
+// SwiftShader (tests/harness.js, timeShaders: all variants in one page, interleaved round by
+// round, a frame being a draw plus a 1-pixel read-back, so the rendering is what is timed). Its last frame is compared with the converged float64 reference
 // of the project's scene at its default settings (src/reference/, 64 jittered samples per pixel
 // at 640x360, 16 at 1280x720, texture point-sampled): RMSE and the fraction of pixels off by
 // more than 2/255 (src/error.js). Writes tests/bench/results.json, results.md, chart.svg, and
@@ -18,7 +18,7 @@ import path from 'node:path';
 import { composeImageShader, hostControlBlock } from '../../src/shadertoy.js';
 import { parseControls } from '../../src/controls.js';
 import { imageError } from '../../src/error.js';
-import { REPO_ROOT, SHADER_FILE, disconnect, startHarness, timeShader, useHarness } from '../harness.js';
+import { REPO_ROOT, SHADER_FILE, disconnect, startHarness, timeShaders, useHarness } from '../harness.js';
 import { replaceMarkedSection } from '../readme-section.js';
 import { composePeer } from './peers/compose-peer.js';
 import { renderReferenceParallel } from './reference.js';
@@ -79,18 +79,16 @@ async function main() {
       const started = Date.now();
       const reference = await renderReferenceParallel(source, { width, height, time: 0, mouse: [0, 0, 0, 0], controls: {} }, { mode: 'converged', samplesPerAxis: perAxis });
       console.log(`${((Date.now() - started) / 1000).toFixed(0)} s`);
+      // All variants in one page, interleaved round by round (see timeShaders).
+      process.stdout.write(`  timing ${VARIANTS.length} variants, ${WARMUP} warm-up + ${FRAMES} timed rounds: `);
+      const timed = await timeShaders(
+        VARIANTS.map((v) => ({ code: v.code(), uniforms: v.group === 'floor' ? [] : uniformValues })),
+        { width, height, frames: FRAMES, warmup: WARMUP, onRound: (round) => process.stdout.write(`${round + 1} `) },
+      );
+      console.log('done');
       for (const [i, variant] of VARIANTS.entries()) {
-        process.stdout.write(`  [${i + 1}/${VARIANTS.length}] ${variant.name} ... `);
-        const result = await timeShader(variant.code(), {
-          width,
-          height,
-          frames: FRAMES,
-          warmup: WARMUP,
-          uniforms: variant.group === 'floor' ? [] : uniformValues,
-          onFrame: () => process.stdout.write('.'),
-        });
+        const result = timed[i];
         if (result.error) {
-          console.log(' FAILED');
           failures.push(`${variant.name} at ${width}x${height}: ${result.error}`);
           continue;
         }
@@ -111,7 +109,7 @@ async function main() {
           renderer: context.environment.renderer,
         };
         results.push(entry);
-        console.log(` ${entry.medianMs.toFixed(1)} ms (min ${entry.minMs.toFixed(1)}), RMSE ${entry.rmse.toFixed(4)}, >2/255 ${(100 * entry.over2).toFixed(2)}%`);
+        console.log(`  ${variant.name}: ${entry.medianMs.toFixed(1)} ms (min ${entry.minMs.toFixed(1)}), RMSE ${entry.rmse.toFixed(4)}, >2/255 ${(100 * entry.over2).toFixed(2)}%`);
       }
     }
   } finally {
@@ -148,7 +146,7 @@ async function main() {
   };
   const targets = evaluateTargets(atSize(w));
   const markdown = [
-    `Measured by \`npm run bench\` on ${results[0].renderer.replace(/\s*\(0x[0-9A-F]+\)/i, '')}, ${results[0].chromium}; median of ${FRAMES} frames after ${WARMUP} warm-up frames. Error against the converged float64 reference of the default scene.`,
+    `Measured by \`npm run bench\` on ${results[0].renderer.replace(/\s*\(0x[0-9A-F]+\)/i, '')}, ${results[0].chromium}; median of ${FRAMES} frames after ${WARMUP} warm-up frames, all variants interleaved frame by frame. Error against the converged float64 reference of the default scene.`,
     '',
     `### ${w}×${h}`,
     '',
