@@ -30,21 +30,19 @@ export function chartSvg(results, { title, width = 760, height = 460 } = {}) {
     `<rect width="${width}" height="${height}" fill="white"/>`,
     `<text x="${margin.left}" y="22" font-size="14">${escape(title ?? '')}</text>`,
   ];
-  for (let e = Math.ceil(x0); e <= x1; e++) {
-    for (const m of [1, 2, 5]) {
-      const v = m * 10 ** e;
-      if (log(v) < x0 || log(v) > x1) continue;
-      parts.push(`<line x1="${px(v)}" x2="${px(v)}" y1="${margin.top}" y2="${margin.top + plotH}" stroke="#eee"/>`);
-      parts.push(`<text x="${px(v)}" y="${margin.top + plotH + 16}" text-anchor="middle">${v}</text>`);
-    }
+  // Log-scale grid lines at 1, 2 and 5 times each power of ten inside [lo, hi] (log10 units).
+  const ticks = (lo, hi) => {
+    const values = [];
+    for (let e = Math.floor(lo); e <= Math.ceil(hi); e++) for (const m of [1, 2, 5]) if (log(m * 10 ** e) >= lo && log(m * 10 ** e) <= hi) values.push(m * 10 ** e);
+    return values;
+  };
+  for (const v of ticks(x0, x1)) {
+    parts.push(`<line x1="${px(v)}" x2="${px(v)}" y1="${margin.top}" y2="${margin.top + plotH}" stroke="#eee"/>`);
+    parts.push(`<text x="${px(v)}" y="${margin.top + plotH + 16}" text-anchor="middle">${v}</text>`);
   }
-  for (let e = Math.ceil(y0); e <= y1; e++) {
-    for (const m of [1, 2, 5]) {
-      const v = m * 10 ** e;
-      if (log(v) < y0 || log(v) > y1) continue;
-      parts.push(`<line x1="${margin.left}" x2="${margin.left + plotW}" y1="${py(v)}" y2="${py(v)}" stroke="#eee"/>`);
-      parts.push(`<text x="${margin.left - 6}" y="${py(v) + 4}" text-anchor="end">${v}</text>`);
-    }
+  for (const v of ticks(y0, y1)) {
+    parts.push(`<line x1="${margin.left}" x2="${margin.left + plotW}" y1="${py(v)}" y2="${py(v)}" stroke="#eee"/>`);
+    parts.push(`<text x="${margin.left - 6}" y="${py(v) + 4}" text-anchor="end">${v}</text>`);
   }
   parts.push(`<rect x="${margin.left}" y="${margin.top}" width="${plotW}" height="${plotH}" fill="none" stroke="#999"/>`);
   parts.push(`<text x="${margin.left + plotW / 2}" y="${height - 12}" text-anchor="middle">median frame time, ms (log)</text>`);
