@@ -38,25 +38,6 @@ const float CUBE_REFLECTIVITY = 0.25;                  // ui: Cube reflectivity 
 const float CONE_REFLECTIVITY = 0.2;                   // ui: Cone reflectivity | 0 .. 1
 #endif
 
-// ---- the benchmark's switch ------------------------------------------------------------------
-// SAVINGS 1 (the default) does only the work the scene and settings need: features switched
-// off compile out, the cone is culled by its bounding sphere, shadow rays stop at the first
-// occluder and are not cast from surfaces facing away from the light, and reflections stop when
-// what is left of the ray's weight is under 1/255. The benchmark defines SAVINGS 0 to measure
-// what that is worth: every feature then runs as a run-time branch and every saving is off.
-// On a GPU a branch that no pixel of a group takes is skipped; SwiftShader (the CPU WebGL of the
-// tests and the benchmark) runs both sides of every branch and skips only loop iterations, so
-// there only the compile-time savings and the 1/255 cut-off pay (README, "Speed against error").
-#ifndef SAVINGS
-#define SAVINGS 1
-#endif
-#if SAVINGS
-#define RUNTIME(x) (x)
-#else
-// iFrame is never negative, but the compiler cannot know: x stops being a compile-time constant.
-#define RUNTIME(x) ((x) + min(iFrame, 0))
-#endif
-
 // ---- constants -------------------------------------------------------------------------------
 const float PI = 3.14159265358979;
 const float DEG = PI / 180.0;
@@ -68,18 +49,20 @@ const float EPS32 = 5.960464477539063e-8;
 const vec4 MISS = vec4(-1.0, 0.0, 0.0, 0.0);
 
 // ---- intersectors ----------------------------------------------------------------------------
-// Each takes a ray origin ro and a unit direction rd and returns vec4(t, n): t the nearest hit
-// with t > 0, n the unit outward normal there; a miss returns t < 0. A ray that starts inside a
-// closed solid hits its far side.
+// Each takes a ray origin ro, a unit direction rd and a range end tMax, and returns vec4(t, n):
+// t the nearest hit with 0 < t < tMax, n the unit outward normal there; a miss (or a hit at or
+// past tMax) returns t < 0. A ray that starts inside a closed solid hits its far side. tMax lets
+// a scene walk pass the nearest hit so far (and a shadow ray the light's distance), so that on a
+// GPU an object behind it is rejected before its expensive part; tMax = 0 rejects everything.
 
 // Plane dot(plane.xyz, p) + plane.w = 0, plane.xyz unit. Substituting p = ro + t rd:
 // t = -(dot(n, ro) + w) / dot(n, rd). A ray parallel to the plane (dot(n, rd) == 0, also with
 // the origin on the plane) is a miss, never 0/0.
-vec4 intersectPlane(vec3 ro, vec3 rd, vec4 plane) {
+vec4 intersectPlane(vec3 ro, vec3 rd, vec4 plane, float tMax) {
     float approach = dot(plane.xyz, rd);
     if (approach == 0.0) return MISS;
     float t = -(dot(plane.xyz, ro) + plane.w) / approach;
-    return (t > 0.0 && t < T_MAX) ? vec4(t, plane.xyz) : MISS;
+    return (t > 0.0 && t < min(tMax, T_MAX)) ? vec4(t, plane.xyz) : MISS;
 }
 
 // Sphere |p - center| = radius. With f = ro - center and b = f.rd, the roots of
@@ -87,19 +70,20 @@ vec4 intersectPlane(vec3 ro, vec3 rd, vec4 plane) {
 // catastrophically when the sphere is small or far (both terms ~ |f|^2); r^2 - |f - b rd|^2 is
 // the same number computed from the ray's perpendicular offset, with no cancellation
 // (Haines et al., Ray Tracing Gems ch. 7). The roots come as q = -b - sign(b) sqrt(disc) and
-// c / q, so neither subtracts nearly equal numbers.
-vec4 intersectSphere(vec3 ro, vec3 rd, vec3 center, float radius) {
+// c / q, so neither subtracts nearly equal numbers. Distance bound: the sphere lies beyond
+// t = -b - radius, so a ray whose range ends before that misses it.
+vec4 intersectSphere(vec3 ro, vec3 rd, vec3 center, float radius, float tMax) {
     vec3 f = ro - center;
     float b = dot(f, rd);
     vec3 offAxis = f - b * rd;
     float disc = radius * radius - dot(offAxis, offAxis);
-    if (disc < 0.0) return MISS;
+    if (disc < 0.0 || -b - radius >= tMax) return MISS;
     float q = -b - (b >= 0.0 ? 1.0 : -1.0) * sqrt(disc);
     if (q == 0.0) return MISS;  // origin on the surface and tangent: both roots are 0
     float c = dot(f, f) - radius * radius;
     float t0 = min(c / q, q), t1 = max(c / q, q);
     float t = t0 > 0.0 ? t0 : t1;
-    if (!(t > 0.0)) return MISS;
+    if (!(t > 0.0 && t < tMax)) return MISS;
     return vec4(t, normalize(f + t * rd));
 }
 
@@ -109,7 +93,7 @@ vec4 intersectSphere(vec3 ro, vec3 rd, vec3 center, float radius) {
 // that slab for all t, or never. The normal is the single axis that sets the entry (or, from
 // inside, the exit) time, so it is exactly unit length even at an edge or corner. Written on
 // whole vectors: per-component loops with dynamic indexing cost SwiftShader ~10x more.
-vec4 intersectBox(vec3 ro, vec3 rd, vec3 center, vec3 halfSize) {
+vec4 intersectBox(vec3 ro, vec3 rd, vec3 center, vec3 halfSize, float tMax) {
     vec3 o = ro - center;
     bvec3 parallel = equal(rd, vec3(0.0));
     if (any(bvec3(parallel.x && abs(o.x) > halfSize.x, parallel.y && abs(o.y) > halfSize.y,
@@ -124,16 +108,36 @@ vec4 intersectBox(vec3 ro, vec3 rd, vec3 center, vec3 halfSize) {
     if (tEnter > tExit || tExit <= 0.0) return MISS;
     bool outside = tEnter > 0.0;
     float t = outside ? tEnter : tExit;
+    if (t >= tMax) return MISS;
     vec3 times = outside ? tIn : tOut;
     // One axis only: the first whose time is t.
     vec3 axis = times.x == t ? vec3(1, 0, 0) : (times.y == t ? vec3(0, 1, 0) : vec3(0, 0, 1));
     return vec4(t, (outside ? -1.0 : 1.0) * sign(rd) * axis);
 }
 
-// Closed capped cone from pa (radius ra) to pb (radius rb); rb = 0 is a pointed cone.
-// With unit axis A, height H, slope k = (rb - ra) / H, a point w = p - pa has axial coordinate
-// y = A.w and radial offset w_perp = w - y A; the side is |w_perp|^2 = r(y)^2, r(y) = ra + k y,
-// for 0 <= y <= H. On the ray, with o = ro - pa, this is a t^2 + 2 b t + c = 0 with
+// Closed capped cone from base (radius ra) to top (radius rb); rb = 0 is a pointed cone. What
+// depends only on the cone (its axis frame and bounding sphere) is computed once, by makeCone,
+// not once per ray.
+struct Cone {
+    vec3 base;
+    vec3 axis;          // unit, from base to top
+    float height;
+    float ra, rb;
+    float slope;        // k = (rb - ra) / height: the radius changes by k per unit of height
+    vec3 boundCenter;   // the bounding sphere: the axis midpoint, reaching both rims
+    float boundRadius;
+};
+
+Cone makeCone(vec3 pa, vec3 pb, float ra, float rb) {
+    vec3 axisVector = pb - pa;
+    float height = length(axisVector);
+    return Cone(pa, axisVector / height, height, ra, rb, (rb - ra) / height, 0.5 * (pa + pb),
+                length(vec2(0.5 * height, max(ra, rb))));
+}
+
+// With unit axis A, height H, slope k, a point w = p - base has axial coordinate y = A.w and
+// radial offset w_perp = w - y A; the side is |w_perp|^2 = r(y)^2, r(y) = ra + k y, for
+// 0 <= y <= H. On the ray, with o = ro - base, this is a t^2 + 2 b t + c = 0 with
 //   a = |rd_perp|^2 - k^2 (A.rd)^2,  b = o_perp.rd_perp - k (A.rd) r(A.o),  c = |o_perp|^2 - r(A.o)^2.
 // The squared equation also holds on the mirror nappe (r(y) < 0), which lies past the apex, so
 // the test 0 <= y <= H rejects it. For a ray parallel to a generator line a -> 0: the roots are
@@ -141,34 +145,26 @@ vec4 intersectBox(vec3 ro, vec3 rd, vec3 center, vec3 halfSize) {
 // stays exact while q / a runs off (Eberly, Geometric Tools, "Intersection of a ray and a cone").
 // The origin is first moved to the near side of the cone's bounding sphere (Wald, Ray Tracing
 // Gems II ch. 34): the quadratic's error grows with the square of the distance, the shift's only
-// linearly; the bounding sphere also culls most misses cheaply.
-vec4 intersectCone(vec3 ro, vec3 rd, vec3 pa, vec3 pb, float ra, float rb) {
-    vec3 axisVector = pb - pa;
-    float height = length(axisVector);
-    vec3 axis = axisVector / height;
-    float slope = (rb - ra) / height;
-
-    vec3 boundCenter = 0.5 * (pa + pb);
-    float boundRadius = length(vec2(0.5 * height, max(ra, rb)));
-    vec3 toCenter = boundCenter - ro;
+// linearly. The same sphere is the distance bound: a ray that misses it, or whose range ends
+// before it, misses the cone.
+vec4 intersectCone(vec3 ro, vec3 rd, Cone cone, float tMax) {
+    vec3 toCenter = cone.boundCenter - ro;
     float along = dot(toCenter, rd);
     vec3 offAxis = toCenter - along * rd;
-    float tShift = max(0.0, along - boundRadius);
-#if SAVINGS
-    if (dot(offAxis, offAxis) > boundRadius * boundRadius) return MISS;
-    if (along + boundRadius <= 0.0) return MISS;  // bounding sphere wholly behind the ray
-#endif
+    float tShift = max(0.0, along - cone.boundRadius);
+    if (dot(offAxis, offAxis) > cone.boundRadius * cone.boundRadius || along + cone.boundRadius <= 0.0 ||
+        tShift >= tMax) return MISS;
 
-    vec3 o = ro + tShift * rd - pa;
-    float yo = dot(o, axis), yd = dot(rd, axis);
-    vec3 oPerp = o - yo * axis, dPerp = rd - yd * axis;
-    float rOrigin = ra + slope * yo;
+    vec3 o = ro + tShift * rd - cone.base;
+    float yo = dot(o, cone.axis), yd = dot(rd, cone.axis);
+    vec3 oPerp = o - yo * cone.axis, dPerp = rd - yd * cone.axis;
+    float rOrigin = cone.ra + cone.slope * yo;
 
-    float tBest = T_MAX;
+    float tBest = min(tMax - tShift, T_MAX);
     int part = -1;  // 0 side, 1 base cap, 2 top cap
 
-    float a = dot(dPerp, dPerp) - slope * slope * yd * yd;
-    float b = dot(oPerp, dPerp) - slope * yd * rOrigin;
+    float a = dot(dPerp, dPerp) - cone.slope * cone.slope * yd * yd;
+    float b = dot(oPerp, dPerp) - cone.slope * yd * rOrigin;
     float c = dot(oPerp, oPerp) - rOrigin * rOrigin;
     float disc = b * b - a * c;
     if (disc >= 0.0) {
@@ -177,20 +173,19 @@ vec4 intersectCone(vec3 ro, vec3 rd, vec3 pa, vec3 pb, float ra, float rb) {
         float t0 = q != 0.0 ? c / q : -1.0;
         float t1 = a != 0.0 ? q / a : -1.0;
         float y0 = yo + t0 * yd, y1 = yo + t1 * yd;
-        if (t0 > 0.0 && y0 >= 0.0 && y0 <= height) { tBest = t0; part = 0; }
-        if (t1 > 0.0 && t1 < tBest && y1 >= 0.0 && y1 <= height) { tBest = t1; part = 0; }
+        if (t0 > 0.0 && t0 < tBest && y0 >= 0.0 && y0 <= cone.height) { tBest = t0; part = 0; }
+        if (t1 > 0.0 && t1 < tBest && y1 >= 0.0 && y1 <= cone.height) { tBest = t1; part = 0; }
     }
     if (yd != 0.0) {
         float tBase = -yo / yd;
         vec3 wBase = oPerp + tBase * dPerp;
-        if (tBase > 0.0 && tBase < tBest && dot(wBase, wBase) <= ra * ra) { tBest = tBase; part = 1; }
-        float tTop = (height - yo) / yd;
+        if (tBase > 0.0 && tBase < tBest && dot(wBase, wBase) <= cone.ra * cone.ra) { tBest = tBase; part = 1; }
+        float tTop = (cone.height - yo) / yd;
         vec3 wTop = oPerp + tTop * dPerp;
-        if (rb > 0.0 && tTop > 0.0 && tTop < tBest && dot(wTop, wTop) <= rb * rb) { tBest = tTop; part = 2; }
+        if (cone.rb > 0.0 && tTop > 0.0 && tTop < tBest && dot(wTop, wTop) <= cone.rb * cone.rb) { tBest = tTop; part = 2; }
     }
     if (part < 0) return MISS;
-    if (part == 1) return vec4(tShift + tBest, -axis);
-    if (part == 2) return vec4(tShift + tBest, axis);
+    if (part > 0) return vec4(tShift + tBest, part == 1 ? -cone.axis : cone.axis);
 
     // Side normal: the gradient of |w_perp| - r(y), i.e. (unit radial direction - k A), whose
     // length is sqrt(1 + k^2) because the two parts are orthogonal. Within the hit point's own
@@ -198,10 +193,11 @@ vec4 intersectCone(vec3 ro, vec3 rd, vec3 pa, vec3 pb, float ra, float rb) {
     // radial direction is noise: the one facing the ray is used instead, and for a ray along
     // the axis itself any direction perpendicular to it.
     vec3 wPerp = oPerp + tBest * dPerp;
-    float radialNoise = 8.0 * EPS32 * (height + max(ra, rb) + tBest);
+    float radialNoise = 8.0 * EPS32 * (cone.height + max(cone.ra, cone.rb) + tBest);
     vec3 radial = dot(wPerp, wPerp) > radialNoise * radialNoise ? wPerp : -dPerp;
+    vec3 axis = cone.axis;
     if (dot(radial, radial) == 0.0) radial = abs(axis.x) < 0.9 ? vec3(0.0, axis.z, -axis.y) : vec3(-axis.z, 0.0, axis.x);
-    return vec4(tShift + tBest, (normalize(radial) - slope * axis) * inversesqrt(1.0 + slope * slope));
+    return vec4(tShift + tBest, (normalize(radial) - cone.slope * axis) * inversesqrt(1.0 + cone.slope * cone.slope));
 }
 
 // ---- the scene -------------------------------------------------------------------------------
@@ -217,9 +213,11 @@ struct Scene {
     vec4 ground;        // plane y_world = 0, as a plane equation in eye-relative coordinates
     vec3 sphereCenter;
     vec3 cubeCenter;
-    vec3 coneBase;
-    vec3 coneApex;
+    float sphereRadius;
+    vec3 cubeHalfSize;
+    Cone cone;
     vec3 light;
+    vec4 reflectivity;  // ground, sphere, cube, cone
     vec2 textureOrigin; // world xz of the eye, reduced modulo the texture period (2)
 };
 
@@ -228,84 +226,40 @@ Scene sceneRelativeTo(vec3 eyeLocal) {
     s.ground = vec4(0.0, 1.0, 0.0, eyeLocal.y);
     s.sphereCenter = SPHERE_CENTER - eyeLocal;
     s.cubeCenter = CUBE_CENTER - eyeLocal;
-    s.coneBase = CONE_BASE - eyeLocal;
-    s.coneApex = CONE_BASE + vec3(0.0, CONE_HEIGHT, 0.0) - eyeLocal;
+    s.sphereRadius = SPHERE_RADIUS;
+    s.cubeHalfSize = CUBE_HALF_SIZE;
+    s.reflectivity = vec4(GROUND_REFLECTIVITY, SPHERE_REFLECTIVITY, CUBE_REFLECTIVITY, CONE_REFLECTIVITY);
+    s.cone = makeCone(CONE_BASE - eyeLocal, CONE_BASE + vec3(0.0, CONE_HEIGHT, 0.0) - eyeLocal, CONE_RADIUS, 0.0);
     s.light = LIGHT_POSITION - eyeLocal;
     // mod() of each term separately keeps the sum small: SCENE_ORIGIN may be ~1e4 or more.
     s.textureOrigin = mod(SCENE_ORIGIN.xz, 2.0) + mod(eyeLocal.xz, 2.0);
     return s;
 }
 
-// The assignment's addX shape: each object updates the nearest hit found so far.
-// skipId is the convex solid the ray is leaving: it cannot be hit again, so it is not tested.
-void addPlane(vec3 ro, vec3 rd, vec4 plane, int id, int skipId,
-              inout float hitDist, inout vec3 hitNormal, inout int hitId) {
-    if (id == skipId) return;
-    vec4 h = intersectPlane(ro, rd, plane);
-    if (h.x > 0.0 && h.x < hitDist) { hitDist = h.x; hitNormal = h.yzw; hitId = id; }
-}
+struct Hit {
+    float t;    // tMax for a miss
+    vec3 n;     // unit outward normal
+    int id;     // ID_NONE for a miss
+};
 
-void addSphere(vec3 ro, vec3 rd, vec3 center, float radius, int id, int skipId,
-               inout float hitDist, inout vec3 hitNormal, inout int hitId) {
-    if (id == skipId) return;
-    vec4 h = intersectSphere(ro, rd, center, radius);
-    if (h.x > 0.0 && h.x < hitDist) { hitDist = h.x; hitNormal = h.yzw; hitId = id; }
+// The one scene walk, for every ray: the nearest hit with 0 < t < tMax. An eye or reflection
+// ray passes tMax = T_MAX; a shadow ray passes the light's distance, and is blocked when the
+// walk finds anything ("any hit before the light" is "a nearest hit before the light": the
+// same answer, and one copy of the intersector code). Each object is asked only for hits
+// nearer than the best so far. skipId is the convex solid the ray is leaving: it cannot be hit
+// again, so its range is empty (tMax 0).
+Hit traceScene(Scene s, vec3 ro, vec3 rd, int skipId, float tMax) {
+    Hit hit = Hit(tMax, vec3(0.0), ID_NONE);
+    vec4 h = intersectPlane(ro, rd, s.ground, skipId == ID_GROUND ? 0.0 : hit.t);
+    if (h.x > 0.0) hit = Hit(h.x, h.yzw, ID_GROUND);
+    h = intersectSphere(ro, rd, s.sphereCenter, s.sphereRadius, skipId == ID_SPHERE ? 0.0 : hit.t);
+    if (h.x > 0.0) hit = Hit(h.x, h.yzw, ID_SPHERE);
+    h = intersectBox(ro, rd, s.cubeCenter, s.cubeHalfSize, skipId == ID_CUBE ? 0.0 : hit.t);
+    if (h.x > 0.0) hit = Hit(h.x, h.yzw, ID_CUBE);
+    h = intersectCone(ro, rd, s.cone, skipId == ID_CONE ? 0.0 : hit.t);
+    if (h.x > 0.0) hit = Hit(h.x, h.yzw, ID_CONE);
+    return hit;
 }
-
-void addBox(vec3 ro, vec3 rd, vec3 center, vec3 halfSize, int id, int skipId,
-            inout float hitDist, inout vec3 hitNormal, inout int hitId) {
-    if (id == skipId) return;
-    vec4 h = intersectBox(ro, rd, center, halfSize);
-    if (h.x > 0.0 && h.x < hitDist) { hitDist = h.x; hitNormal = h.yzw; hitId = id; }
-}
-
-void addCone(vec3 ro, vec3 rd, vec3 base, vec3 apex, float radius, int id, int skipId,
-             inout float hitDist, inout vec3 hitNormal, inout int hitId) {
-    if (id == skipId) return;
-    vec4 h = intersectCone(ro, rd, base, apex, radius, 0.0);
-    if (h.x > 0.0 && h.x < hitDist) { hitDist = h.x; hitNormal = h.yzw; hitId = id; }
-}
-
-// Nearest hit along the ray; returns the hit id (ID_NONE for a miss).
-int traceScene(Scene s, vec3 ro, vec3 rd, int skipId, out float hitDist, out vec3 hitNormal) {
-    hitDist = T_MAX;
-    hitNormal = vec3(0.0);
-    int hitId = ID_NONE;
-    addPlane(ro, rd, s.ground, ID_GROUND, skipId, hitDist, hitNormal, hitId);
-    addSphere(ro, rd, s.sphereCenter, SPHERE_RADIUS, ID_SPHERE, skipId, hitDist, hitNormal, hitId);
-    addBox(ro, rd, s.cubeCenter, CUBE_HALF_SIZE, ID_CUBE, skipId, hitDist, hitNormal, hitId);
-    addCone(ro, rd, s.coneBase, s.coneApex, CONE_RADIUS, ID_CONE, skipId, hitDist, hitNormal, hitId);
-    return hitId;
-}
-
-#if SHADOWS || !SAVINGS
-// Any-hit query for a shadow ray: the first occluder closer than the light ends it.
-bool occluded(Scene s, vec3 ro, vec3 rd, float lightDist, int skipId) {
-#if !SAVINGS
-    float t;
-    vec3 n;
-    traceScene(s, ro, rd, skipId, t, n);  // the nearest hit, shaded or not
-    return t < lightDist;
-#endif
-    if (skipId != ID_SPHERE) {
-        float t = intersectSphere(ro, rd, s.sphereCenter, SPHERE_RADIUS).x;
-        if (t > 0.0 && t < lightDist) return true;
-    }
-    if (skipId != ID_CUBE) {
-        float t = intersectBox(ro, rd, s.cubeCenter, CUBE_HALF_SIZE).x;
-        if (t > 0.0 && t < lightDist) return true;
-    }
-    if (skipId != ID_CONE) {
-        float t = intersectCone(ro, rd, s.coneBase, s.coneApex, CONE_RADIUS, 0.0).x;
-        if (t > 0.0 && t < lightDist) return true;
-    }
-    if (skipId != ID_GROUND) {
-        float t = intersectPlane(ro, rd, s.ground).x;
-        if (t > 0.0 && t < lightDist) return true;
-    }
-    return false;
-}
-#endif
 
 // ---- materials and texture -------------------------------------------------------------------
 // Plain `const` lines: the float64 reference (src/reference/) reads these values from this file.
@@ -326,13 +280,6 @@ vec3 objectColor(int id) {
     if (id == ID_SPHERE) return SPHERE_COLOR;
     if (id == ID_CUBE) return CUBE_COLOR;
     return CONE_COLOR;
-}
-
-float reflectivity(int id) {
-    if (id == ID_GROUND) return GROUND_REFLECTIVITY;
-    if (id == ID_SPHERE) return SPHERE_REFLECTIVITY;
-    if (id == ID_CUBE) return CUBE_REFLECTIVITY;
-    return CONE_REFLECTIVITY;
 }
 
 // Box filters of width w centred on x, for the two ground patterns. Each uses the closed-form
@@ -397,24 +344,11 @@ vec3 skyColor(vec3 rd) {
 }
 
 // ---- shading ---------------------------------------------------------------------------------
-// Local (non-mirror) shading at p with outward normal n. A surface seen from inside its closed
-// solid gets no direct light: the solid itself stands between it and the light.
-vec3 shadeLocal(Scene s, vec3 p, vec3 n, vec3 rd, int id, vec3 albedo, bool inside) {
+// Direct light at p with outward normal n and albedo, given whether the light is visible: a
+// diffuse term and a Phong highlight, over the ambient term that every surface gets.
+vec3 shadeLocal(vec3 l, vec3 n, vec3 rd, vec3 albedo, float facing, bool lit) {
     vec3 color = AMBIENT * albedo;
-    if (inside) return color;
-    vec3 toLight = s.light - p;
-    float lightDist = length(toLight);
-    vec3 l = toLight / lightDist;
-    float facing = dot(n, l);
-#if SAVINGS
-    if (facing <= 0.0) return color;  // faces away from the light: no shadow ray needed
-#endif
-#if SHADOWS || !SAVINGS
-    if (RUNTIME(SHADOWS) != 0 && occluded(s, p, l, lightDist, id)) return color;
-#endif
-#if !SAVINGS
-    if (facing <= 0.0) return color;  // the same image, after paying for the shadow ray
-#endif
+    if (!lit) return color;
     float highlight = pow(max(dot(reflect(-l, n), -rd), 0.0), SHININESS);
     return color + facing * albedo + SPECULAR * highlight;
 }
@@ -443,31 +377,53 @@ float coneRadiusAt(float heightAboveBase) {
 
 // Radiance along one eye ray. coneSpread is the angle one sample subtends: the ray cone that
 // sizes the texture filter (Akenine-Moeller et al., Ray Tracing Gems ch. 20).
+//
+// Cost: SwiftShader (the CPU WebGL of the tests and the benchmark) runs a 2x2 pixel quad as SIMD
+// lanes and executes both sides of every `if`; only loop iterations that no lane needs are
+// skipped. So the bounce loop is written to end on its last needed iteration: `for (;;)` with
+// the exit at the bottom. A loop whose condition is tested at the top runs its body once more
+// with every lane masked off (tests/bench/branches.js measures it: a 60-sin() body costs 1, 2,
+// 3, 4 bodies for 0, 1, 2, 3 trips, and 1, 2 bodies for 1, 2 trips written this way).
 vec3 radiance(Scene s, vec3 rd, float coneSpread) {
     vec3 ro = vec3(0.0);
     vec3 color = vec3(0.0);
     float throughput = 1.0;
     float coneWidth = 0.0;
     int skipId = ID_NONE;
-    for (int bounce = 0; bounce <= RUNTIME(BOUNCES); bounce++) {
-        float t;
-        vec3 n;
-        int id = traceScene(s, ro, rd, skipId, t, n);
-        if (id == ID_NONE) return color + throughput * skyColor(rd);
-
+    for (int bounce = 0;; bounce++) {
+        Hit hit = traceScene(s, ro, rd, skipId, T_MAX);
+        if (hit.id == ID_NONE) {
+            color += throughput * skyColor(rd);
+            break;
+        }
+        vec3 n = hit.n;
+        int id = hit.id;
         bool inside = dot(rd, n) > 0.0;
-        vec3 p = reprojectOnSurface(s, ro + t * rd, n, id);
-        coneWidth += coneSpread * t;
+        vec3 p = reprojectOnSurface(s, ro + hit.t * rd, n, id);
+        coneWidth += coneSpread * hit.t;
         vec3 albedo = id == ID_GROUND
             ? groundColor(mod(s.textureOrigin + p.xz, 2.0), groundFootprint(rd, coneWidth))
             : objectColor(id);
-        vec3 local = shadeLocal(s, p, n, rd, id, albedo, inside);
 
-        float mirror = reflectivity(id);
+        // A surface seen from inside its closed solid gets no direct light: the solid itself
+        // stands between it and the light. One facing away from the light needs no shadow ray.
+        vec3 toLight = s.light - p;
+        float lightDist = length(toLight);
+        vec3 l = toLight / lightDist;
+        float facing = dot(n, l);
+        bool lit = !inside && facing > 0.0;
+#if SHADOWS
+        lit = lit && traceScene(s, p, l, id, lightDist).id == ID_NONE;
+#endif
+        vec3 local = shadeLocal(l, n, rd, albedo, facing, lit);
+
+        float mirror = s.reflectivity[id];
         // At the bounce limit the surface keeps all its weight as local colour, so lowering the
-        // limit removes reflected detail without darkening the mirrors.
-        if (bounce == RUNTIME(BOUNCES) || (SAVINGS == 1 && throughput * mirror < 1.0 / 255.0)) {
-            return color + throughput * local;
+        // limit removes reflected detail without darkening the mirrors. Below 1/255 of weight
+        // left, a reflection cannot change the 8-bit output: the path ends there.
+        if (bounce == BOUNCES || throughput * mirror < 1.0 / 255.0) {
+            color += throughput * local;
+            break;
         }
         color += throughput * (1.0 - mirror) * local;
         throughput *= mirror;
@@ -476,7 +432,7 @@ vec3 radiance(Scene s, vec3 rd, float coneSpread) {
         if (id == ID_SPHERE) coneSpread += 2.0 * coneWidth / SPHERE_RADIUS;
         // The cone's side curves with radius r(y) across its axis; near the apex r(y) -> 0, so
         // the curvature is capped at that of a mirror as small as the cone's own footprint.
-        if (id == ID_CONE) coneSpread += 2.0 * coneWidth / max(coneRadiusAt(p.y - s.coneBase.y), coneWidth);
+        if (id == ID_CONE) coneSpread += 2.0 * coneWidth / max(coneRadiusAt(p.y - s.cone.base.y), coneWidth);
         rd = reflect(rd, n);
         // Leaving a convex solid: it cannot be hit again, so skip it. From inside: stay
         // eligible, and start a few ulps inside the surface.
@@ -535,16 +491,22 @@ void mainImage(out vec4 fragColor, in vec2 fragCoord) {
     vec2 halfFov = sinCos(0.5 * FIELD_OF_VIEW * DEG);
     float tanHalfFov = halfFov.x / halfFov.y;
     float coneSpread = 2.0 * tanHalfFov / (iResolution.y * float(SAMPLES_PER_AXIS));
+#if SAMPLES_PER_AXIS == 1
+    // One sample at the pixel centre, with no loop around it: a loop costs SwiftShader one more
+    // pass over its body than it has iterations (see radiance), and this body is the whole trace.
+    vec2 uv = (2.0 * fragCoord - iResolution.xy) / iResolution.y;
+    vec3 linear = radiance(s, normalize(-back + tanHalfFov * (uv.x * right + uv.y * up)), coneSpread);
+#else
     vec3 sum = vec3(0.0);
-    for (int sy = 0; sy < RUNTIME(SAMPLES_PER_AXIS); sy++) {
-        for (int sx = 0; sx < RUNTIME(SAMPLES_PER_AXIS); sx++) {
-            // Stratified: the centres of an n x n grid of sub-pixels.
-            vec2 offset = (vec2(sx, sy) + 0.5) / float(SAMPLES_PER_AXIS) - 0.5;
-            vec2 uv = (2.0 * (fragCoord + offset) - iResolution.xy) / iResolution.y;
-            vec3 rd = normalize(-back + tanHalfFov * (uv.x * right + uv.y * up));
-            sum += radiance(s, rd, coneSpread);
-        }
+    for (int i = 0;; i++) {
+        // Stratified: the centres of an n x n grid of sub-pixels, row by row.
+        vec2 offset = (vec2(i % SAMPLES_PER_AXIS, i / SAMPLES_PER_AXIS) + 0.5) / float(SAMPLES_PER_AXIS) - 0.5;
+        vec2 uv = (2.0 * (fragCoord + offset) - iResolution.xy) / iResolution.y;
+        vec3 rd = normalize(-back + tanHalfFov * (uv.x * right + uv.y * up));
+        sum += radiance(s, rd, coneSpread);
+        if (i == SAMPLES_PER_AXIS * SAMPLES_PER_AXIS - 1) break;
     }
     vec3 linear = sum / float(SAMPLES_PER_AXIS * SAMPLES_PER_AXIS);
+#endif
     fragColor = vec4(clamp(linear, 0.0, 1.0), 1.0);
 }

@@ -83,10 +83,10 @@ void main() {
     vec4 q = texelFetch(rayTable, ivec2(i, 3), 0);
     int kind = int(a.w);
     vec4 hit;
-    if (kind == ${KINDS.plane}) hit = intersectPlane(a.xyz, rd, p);
-    else if (kind == ${KINDS.sphere}) hit = intersectSphere(a.xyz, rd, p.xyz, p.w);
-    else if (kind == ${KINDS.box}) hit = intersectBox(a.xyz, rd, p.xyz, vec3(p.w, q.xy));
-    else hit = intersectCone(a.xyz, rd, p.xyz, vec3(p.w, q.xy), q.z, q.w);
+    if (kind == ${KINDS.plane}) hit = intersectPlane(a.xyz, rd, p, T_MAX);
+    else if (kind == ${KINDS.sphere}) hit = intersectSphere(a.xyz, rd, p.xyz, p.w, T_MAX);
+    else if (kind == ${KINDS.box}) hit = intersectBox(a.xyz, rd, p.xyz, vec3(p.w, q.xy), T_MAX);
+    else hit = intersectCone(a.xyz, rd, makeCone(p.xyz, vec3(p.w, q.xy), q.z, q.w), T_MAX);
     shadertoy_out_color = hit;
 }
 `;
@@ -178,14 +178,14 @@ describe('GLSL intersectors against float64', () => {
     const start = source.indexOf('vec4 intersectSphere(');
     const end = source.indexOf('\n}\n', start) + 3;
     expect(start).toBeGreaterThan(0);
-    const textbook = `vec4 intersectSphere(vec3 ro, vec3 rd, vec3 center, float radius) {
+    const textbook = `vec4 intersectSphere(vec3 ro, vec3 rd, vec3 center, float radius, float tMax) {
     vec3 f = ro - center;
     float b = dot(f, rd);
     float disc = b * b - (dot(f, f) - radius * radius);
     if (disc < 0.0) return MISS;
     float t = -b - sqrt(disc);
     if (t <= 0.0) t = -b + sqrt(disc);
-    return t > 0.0 ? vec4(t, normalize(f + t * rd)) : MISS;
+    return t > 0.0 && t < tMax ? vec4(t, normalize(f + t * rd)) : MISS;
 }
 `;
     const family = cases.filter((c) => c.name.startsWith('sphere r=1 from 1e4 #'));
