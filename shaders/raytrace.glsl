@@ -288,9 +288,7 @@ const float SPECULAR = 0.5;
 const float SHININESS = 40.0;
 
 vec3 objectColor(int id) {
-    if (id == ID_SPHERE) return SPHERE_COLOR;
-    if (id == ID_CUBE) return CUBE_COLOR;
-    return CONE_COLOR;
+    return id == ID_SPHERE ? SPHERE_COLOR : (id == ID_CUBE ? CUBE_COLOR : CONE_COLOR);
 }
 
 // Box filters of width w centred on x, for the two ground patterns. Each uses the closed-form
@@ -298,13 +296,15 @@ vec3 objectColor(int id) {
 //   fract:        integral F(x) = floor(x) / 2 + fract(x)^2 / 2
 //   square wave:  s(x) = floor(x) mod 2, integral S(x) = floor(x / 2) + max(2 fract(x / 2) - 1, 0)
 // Both are evaluated on x already reduced to [0, 2), where the differences lose no digits.
+// Inside one period the average is the pattern at the centre, exactly; the integrals' difference
+// would lose digits there (and is 0/0 for w = 0). Both are computed and one is selected: a
+// select costs SwiftShader less than a branch, which it would run both sides of anyway.
 float filteredFract(float x, float w) {
     float lo = x - 0.5 * w, hi = x + 0.5 * w;
-    // Inside one period the average of fract is fract at the centre, exactly.
-    if (floor(lo) == floor(hi)) return fract(x);
     float fLo = 0.5 * floor(lo) + 0.5 * fract(lo) * fract(lo);
     float fHi = 0.5 * floor(hi) + 0.5 * fract(hi) * fract(hi);
-    return (fHi - fLo) / w;
+    float average = (fHi - fLo) / w;
+    return floor(lo) == floor(hi) ? fract(x) : average;
 }
 
 float integralSquareWave(float x) {
@@ -313,8 +313,8 @@ float integralSquareWave(float x) {
 
 float filteredSquareWave(float x, float w) {
     float lo = x - 0.5 * w, hi = x + 0.5 * w;
-    if (floor(lo) == floor(hi)) return mod(floor(x), 2.0);
-    return (integralSquareWave(hi) - integralSquareWave(lo)) / w;
+    float average = (integralSquareWave(hi) - integralSquareWave(lo)) / w;
+    return floor(lo) == floor(hi) ? mod(floor(x), 2.0) : average;
 }
 
 // Ground albedo at texture coordinate uv (world xz reduced modulo 2) for a footprint of
@@ -342,12 +342,13 @@ vec3 groundColor(vec2 uv, vec2 footprint) {
 
 // Extent along world x and z of a ray cone of width coneWidth meeting the ground with unit
 // direction rd: an ellipse with semi-axes coneWidth / |rd.y| along the ray's horizontal heading
-// and coneWidth across it, projected on the two axes.
+// and coneWidth across it, projected on the two axes. Straight down (no heading) it is a
+// circle, where the projection formula would be 0/0.
 vec2 groundFootprint(vec3 rd, float coneWidth) {
     float h2 = rd.x * rd.x + rd.z * rd.z;
-    if (h2 == 0.0) return vec2(coneWidth);
     float dy2 = rd.y * rd.y;
-    return coneWidth * sqrt(vec2(rd.x * rd.x + rd.z * rd.z * dy2, rd.z * rd.z + rd.x * rd.x * dy2) / (dy2 * h2));
+    vec2 projected = coneWidth * sqrt(vec2(rd.x * rd.x + rd.z * rd.z * dy2, rd.z * rd.z + rd.x * rd.x * dy2) / (dy2 * h2));
+    return mix(projected, vec2(coneWidth), bvec2(h2 == 0.0));
 }
 
 vec3 skyColor(vec3 rd) {
@@ -355,21 +356,21 @@ vec3 skyColor(vec3 rd) {
 }
 
 // ---- shading ---------------------------------------------------------------------------------
-// Direct light at p with outward normal n and albedo, given whether the light is visible: a
-// diffuse term and a Phong highlight, over the ambient term that every surface gets.
+// The light leaving a surface towards the viewer (ray direction rd), with outward normal n,
+// direction l to the light and facing = n.l: the ambient term that every surface gets, plus,
+// where the light is visible (lit), a diffuse term and a Phong highlight.
 vec3 shadeLocal(vec3 l, vec3 n, vec3 rd, vec3 albedo, float facing, bool lit) {
-    vec3 color = AMBIENT * albedo;
-    if (!lit) return color;
+    vec3 ambient = AMBIENT * albedo;
     float highlight = pow(max(dot(reflect(-l, n), -rd), 0.0), SHININESS);
-    return color + facing * albedo + SPECULAR * highlight;
+    return mix(ambient, ambient + facing * albedo + SPECULAR * highlight, bvec3(lit));
 }
 
 // Puts a hit point exactly back on its surface where that is cheap: rounding in ro + t rd
 // leaves it slightly off, which shows as acne and speckle in shadows and reflections.
 vec3 reprojectOnSurface(Scene s, vec3 p, vec3 n, int id) {
-    if (id == ID_GROUND) p.y = -s.ground.w;
-    else if (id == ID_SPHERE) p = s.sphereCenter + SPHERE_RADIUS * n;
-    return p;
+    vec3 onGround = vec3(p.x, -s.ground.w, p.z);
+    vec3 onSphere = s.sphereCenter + s.sphereRadius * n;
+    return mix(mix(p, onSphere, bvec3(id == ID_SPHERE)), onGround, bvec3(id == ID_GROUND));
 }
 
 // Moves p off its surface along n by 256 ulps of its largest coordinate, and by at least
@@ -408,9 +409,8 @@ vec3 radiance(Scene s, vec3 rd, float coneSpread) {
         bool inside = dot(rd, n) > 0.0;
         vec3 p = reprojectOnSurface(s, ro + hit.t * rd, n, id);
         coneWidth += coneSpread * hit.t;
-        vec3 albedo = id == ID_GROUND
-            ? groundColor(mod(s.textureOrigin + p.xz, 2.0), groundFootprint(rd, coneWidth))
-            : objectColor(id);
+        vec3 ground = groundColor(mod(s.textureOrigin + p.xz, 2.0), groundFootprint(rd, coneWidth));
+        vec3 albedo = mix(objectColor(id), ground, bvec3(id == ID_GROUND));
 
         // A surface seen from inside its closed solid gets no direct light: the solid itself
         // stands between it and the light. One facing away from the light needs no shadow ray.
@@ -437,14 +437,15 @@ vec3 radiance(Scene s, vec3 rd, float coneSpread) {
         throughput *= mirror;
 
         // A curved mirror widens the ray cone: 2 * width * curvature (flat faces add nothing).
-        if (id == ID_SPHERE) coneSpread += 2.0 * coneWidth / SPHERE_RADIUS;
         // The cone's side curves with radius r(y) across its axis; near the apex r(y) -> 0, so
         // the curvature is capped at that of a mirror as small as the cone's own footprint.
-        if (id == ID_CONE) coneSpread += 2.0 * coneWidth / max(coneRadiusAt(p.y - s.cone.base.y), coneWidth);
+        float sphereSpread = 2.0 * coneWidth / s.sphereRadius;
+        float coneSideSpread = 2.0 * coneWidth / max(coneRadiusAt(p.y - s.cone.base.y), coneWidth);
+        coneSpread += id == ID_SPHERE ? sphereSpread : (id == ID_CONE ? coneSideSpread : 0.0);
         rd = reflect(rd, n);
         // Leaving a convex solid: it cannot be hit again, so skip it. From inside: stay
         // eligible, and start a few ulps inside the surface.
-        ro = inside ? offsetAlong(p, -n) : p;
+        ro = mix(p, offsetAlong(p, -n), bvec3(inside));
         hit = traceScene(s, ro, rd, inside ? ID_NONE : id, T_MAX);
         if (hit.id == ID_NONE) {
             color += throughput * skyColor(rd);
@@ -482,9 +483,17 @@ vec2 sinCos(float angle) {
     return q >= 2.0 ? -turned : turned;
 }
 
-void mainImage(out vec4 fragColor, in vec2 fragCoord) {
-    // Orbit: CAMERA_ORBIT at rest, turning slowly with time; a mouse drag sets the angles, the
-    // screen centre being the rest view.
+// The orbit camera: CAMERA_ORBIT at rest, turning slowly with time; a mouse drag sets the
+// angles, the screen centre being the rest view. Its basis comes straight from the angles, so
+// looking straight down is as well defined as any other view (no cross product with a world up
+// vector).
+struct Camera {
+    vec3 eyeLocal;      // the eye, relative to SCENE_ORIGIN
+    vec3 back, right, up;
+    float tanHalfFov;
+};
+
+Camera orbitCamera() {
     vec2 angles = CAMERA_ORBIT + vec2(ORBIT_SPEED * iTime, 0.0);
     if (iMouse.x != 0.0 || iMouse.y != 0.0) {
         vec2 m = iMouse.xy / iResolution.xy - 0.5;
@@ -492,30 +501,36 @@ void mainImage(out vec4 fragColor, in vec2 fragCoord) {
     }
     vec2 az = sinCos(angles.x * DEG);
     vec2 el = sinCos(clamp(angles.y, -89.0, 90.0) * DEG);
-    // The basis comes straight from the angles, so looking straight down is as well defined as
-    // any other view (no cross product with a world up vector).
-    vec3 back = vec3(el.y * az.x, el.x, el.y * az.y);
-    vec3 right = vec3(az.y, 0.0, -az.x);
-    vec3 up = vec3(-el.x * az.x, el.y, -el.x * az.y);
-    vec3 eyeLocal = CAMERA_TARGET + CAMERA_DISTANCE * back;
-    Scene s = sceneRelativeTo(eyeLocal);
-
     vec2 halfFov = sinCos(0.5 * FIELD_OF_VIEW * DEG);
-    float tanHalfFov = halfFov.x / halfFov.y;
-    float coneSpread = 2.0 * tanHalfFov / (iResolution.y * float(SAMPLES_PER_AXIS));
+    Camera c;
+    c.back = vec3(el.y * az.x, el.x, el.y * az.y);
+    c.right = vec3(az.y, 0.0, -az.x);
+    c.up = vec3(-el.x * az.x, el.y, -el.x * az.y);
+    c.eyeLocal = CAMERA_TARGET + CAMERA_DISTANCE * c.back;
+    c.tanHalfFov = halfFov.x / halfFov.y;
+    return c;
+}
+
+// The eye ray through a point of the image, in pixels.
+vec3 primaryRay(Camera c, vec2 pixel) {
+    vec2 uv = (2.0 * pixel - iResolution.xy) / iResolution.y;
+    return normalize(-c.back + c.tanHalfFov * (uv.x * c.right + uv.y * c.up));
+}
+
+void mainImage(out vec4 fragColor, in vec2 fragCoord) {
+    Camera camera = orbitCamera();
+    Scene s = sceneRelativeTo(camera.eyeLocal);
+    float coneSpread = 2.0 * camera.tanHalfFov / (iResolution.y * float(SAMPLES_PER_AXIS));
 #if SAMPLES_PER_AXIS == 1
     // One sample at the pixel centre, with no loop around it: a loop costs SwiftShader one more
     // pass over its body than it has iterations (see radiance), and this body is the whole trace.
-    vec2 uv = (2.0 * fragCoord - iResolution.xy) / iResolution.y;
-    vec3 linear = radiance(s, normalize(-back + tanHalfFov * (uv.x * right + uv.y * up)), coneSpread);
+    vec3 linear = radiance(s, primaryRay(camera, fragCoord), coneSpread);
 #else
     vec3 sum = vec3(0.0);
     for (int i = 0;; i++) {
         // Stratified: the centres of an n x n grid of sub-pixels, row by row.
         vec2 offset = (vec2(i % SAMPLES_PER_AXIS, i / SAMPLES_PER_AXIS) + 0.5) / float(SAMPLES_PER_AXIS) - 0.5;
-        vec2 uv = (2.0 * (fragCoord + offset) - iResolution.xy) / iResolution.y;
-        vec3 rd = normalize(-back + tanHalfFov * (uv.x * right + uv.y * up));
-        sum += radiance(s, rd, coneSpread);
+        sum += radiance(s, primaryRay(camera, fragCoord + offset), coneSpread);
         if (i == SAMPLES_PER_AXIS * SAMPLES_PER_AXIS - 1) break;
     }
     vec3 linear = sum / float(SAMPLES_PER_AXIS * SAMPLES_PER_AXIS);
