@@ -57,6 +57,35 @@ export const CHROME_ARGS = [
   '--lang=en-US',
 ];
 
+/**
+ * For startHarness({ gpu: true }): CHROME_ARGS without SwiftShader, plus what headless Chromium
+ * needs to use the machine's own GPU, one set per ANGLE back end to try, in order. On Linux that
+ * is Vulkan first (Chrome's recipe for GPUs in headless mode:
+ * https://developer.chrome.com/blog/supercharge-web-ai-testing), then Chromium's default back
+ * end; elsewhere the default (Metal on macOS, Direct3D 11 on Windows).
+ */
+export const GPU_CHROME_ARGS = (process.platform === 'linux'
+  ? [['--use-angle=vulkan', '--enable-features=Vulkan', '--disable-vulkan-surface'], ['--use-angle=default']]
+  : [['--use-angle=default']]
+).map((backend) => [
+  ...CHROME_ARGS.filter((arg) => !/swiftshader/i.test(arg)),
+  '--enable-gpu',
+  '--ignore-gpu-blocklist',
+  ...backend,
+]);
+
+const SOFTWARE_RENDERERS = /swiftshader|llvmpipe|lavapipe|softpipe|software|basic render|mesa offscreen/i;
+
+/**
+ * What draws a WebGL renderer string: 'software' (SwiftShader, Mesa llvmpipe/lavapipe/softpipe,
+ * Microsoft Basic Render Driver, any "Software" renderer), 'unknown' (no string, or the masked
+ * "WebKit WebGL" that names no device), else 'hardware'.
+ */
+export function rendererKind(renderer) {
+  if (!renderer || !String(renderer).trim() || /^webkit webgl$/i.test(String(renderer).trim())) return 'unknown';
+  return SOFTWARE_RENDERERS.test(renderer) ? 'software' : 'hardware';
+}
+
 const PAGE_TIMEOUT_MS = 90_000;
 
 // ------------------------------------------------------------------------------------------------
@@ -127,11 +156,37 @@ async function warmUp(browser, baseUrl) {
 }
 
 /**
+ * Launches Chromium with each of GPU_CHROME_ARGS in turn and keeps the first whose WebGL2 is a
+ * hardware renderer (rendererKind). Never settles for a software one: if none is hardware, it
+ * throws an error with code 'NO_HARDWARE_GPU' that lists what each attempt got.
+ */
+async function launchOnGpu(launch, executablePath, userDataDir) {
+  const tried = [];
+  for (const [i, args] of GPU_CHROME_ARGS.entries()) {
+    const browser = await launch(args, path.join(userDataDir, `gpu-${i}`));
+    const webgl = await probeWebGL(browser).catch(() => null);
+    const kind = rendererKind(webgl?.renderer);
+    if (webgl && kind === 'hardware') return browser;
+    await browser.close();
+    const flags = args.filter((arg) => !CHROME_ARGS.includes(arg)).join(' ');
+    tried.push(`${flags}: ${webgl ? `WebGL2 renderer "${webgl.renderer}" (${kind})` : 'no WebGL2'}`);
+  }
+  const error = new Error(
+    `No hardware GPU found: headless Chromium (${executablePath}) has no WebGL2 on a hardware GPU. Tried:\n  ` +
+      `${tried.join('\n  ')}\nA software renderer (SwiftShader, llvmpipe, ...) is never used in its place.`,
+  );
+  error.code = 'NO_HARDWARE_GPU';
+  throw error;
+}
+
+/**
  * Starts Chromium (checked to be SwiftShader WebGL2) and the page server. Used once per run by
  * vitest's globalSetup below, and directly by scripts (the benchmark, the accuracy report).
+ * With { gpu: true }, Chromium runs on the machine's own GPU instead (launchOnGpu: checked to be
+ * a hardware renderer, else it throws): for `npm run bench -- --gpu` only, never for the goldens.
  * @returns {Promise<{context: {wsEndpoint, baseUrl, environment}, close: () => Promise<void>}>}
  */
-export async function startHarness() {
+export async function startHarness({ gpu = false } = {}) {
   const executablePath = findChrome();
   const userDataDir = fs.mkdtempSync(path.join(os.tmpdir(), 'raytracer-chromium-'));
   const cleanups = [() => fs.rmSync(userDataDir, { recursive: true, force: true })];
@@ -145,15 +200,17 @@ export async function startHarness() {
     }
   };
   try {
-    const browser = await puppeteer.launch({
-      executablePath,
-      headless: true,
-      userDataDir,
-      args: CHROME_ARGS,
-      // iDate uses local time; UTC makes the frozen date the same everywhere.
-      env: { ...process.env, TZ: 'UTC' },
-      defaultViewport: null,
-    });
+    const launch = (args, dataDir) =>
+      puppeteer.launch({
+        executablePath,
+        headless: true,
+        userDataDir: dataDir,
+        args: [...args], // a copy: puppeteer moves --enable-features out of the array it is given
+        // iDate uses local time; UTC makes the frozen date the same everywhere.
+        env: { ...process.env, TZ: 'UTC' },
+        defaultViewport: null,
+      });
+    const browser = gpu ? await launchOnGpu(launch, executablePath, userDataDir) : await launch(CHROME_ARGS, userDataDir);
     cleanups.push(() => browser.close());
 
     const chromium = await browser.version();
@@ -164,7 +221,8 @@ export async function startHarness() {
           'The render tests need SwiftShader WebGL2; without it they would pass while rendering nothing.',
       );
     }
-    if (!/swiftshader/i.test(webgl.renderer)) {
+    if (gpu && rendererKind(webgl.renderer) !== 'hardware') throw new Error(`WebGL2 renderer is "${webgl.renderer}", not a hardware GPU.`);
+    if (!gpu && !/swiftshader/i.test(webgl.renderer)) {
       throw new Error(
         `WebGL2 renderer is "${webgl.renderer}", not SwiftShader. The goldens are SwiftShader renders; ` +
           'a GPU renders different pixels. Check that --use-angle=swiftshader is honoured by this Chromium.',

@@ -1,7 +1,7 @@
 // The harness checks itself: the deterministic injection freezes what it promises and leaves the
 // animation loop running, and the page under test is the real one, drawn by SwiftShader.
 import { afterAll, describe, expect, test } from 'vitest';
-import { disconnect, harnessContext, openPage } from './harness.js';
+import { CHROME_ARGS, GPU_CHROME_ARGS, disconnect, harnessContext, openPage, rendererKind } from './harness.js';
 
 afterAll(disconnect);
 
@@ -72,5 +72,45 @@ describe('environment', () => {
     const response = await fetch(`${baseUrl}/`);
     expect(response.status).toBe(200);
     expect(await response.text()).toMatch(/<canvas/);
+  });
+});
+
+describe('npm run bench -- --gpu', () => {
+  test('software renderers are never taken for a hardware GPU', () => {
+    for (const software of [
+      'ANGLE (Google, Vulkan 1.3.0 (SwiftShader Device (Subzero) (0x0000C0DE)), SwiftShader driver)',
+      'Google SwiftShader',
+      'llvmpipe (LLVM 15.0.6, 256 bits)',
+      'ANGLE (Mesa, llvmpipe (LLVM 15.0.6 256 bits), OpenGL 4.5)',
+      'softpipe',
+      'ANGLE (Microsoft, Microsoft Basic Render Driver (0x0000008C) Direct3D11 vs_5_0 ps_5_0, D3D11)',
+      'Apple Software Renderer',
+    ]) {
+      expect(rendererKind(software), software).toBe('software');
+    }
+    for (const unknown of [undefined, null, '', '  ', 'WebKit WebGL']) expect(rendererKind(unknown), String(unknown)).toBe('unknown');
+  });
+
+  test('GPU renderer strings are hardware', () => {
+    for (const hardware of [
+      'ANGLE (NVIDIA Corporation, NVIDIA GeForce RTX 3080/PCIe/SSE2, OpenGL 4.5.0)',
+      'ANGLE (NVIDIA, Vulkan 1.3.277 (NVIDIA Tesla T4 (0x00001EB8)), NVIDIA)',
+      'ANGLE (Intel, Mesa Intel(R) UHD Graphics 620 (KBL GT2), OpenGL 4.6)',
+      'ANGLE (AMD, AMD Radeon RX 6800 XT (radeonsi, navi21, LLVM 15.0.7, DRM 3.49, 6.1.0), OpenGL 4.6)',
+      'ANGLE (Apple, ANGLE Metal Renderer: Apple M2, Unspecified Version)',
+      'ANGLE (Intel, Intel(R) Iris(R) Xe Graphics (0x00009A49) Direct3D11 vs_5_0 ps_5_0, D3D11)',
+    ]) {
+      expect(rendererKind(hardware), hardware).toBe('hardware');
+    }
+  });
+
+  test('its flags keep the harness flags but never ask for SwiftShader', () => {
+    expect(GPU_CHROME_ARGS.length).toBeGreaterThan(0);
+    for (const args of GPU_CHROME_ARGS) {
+      expect(args.filter((arg) => /swiftshader/i.test(arg))).toEqual([]);
+      expect(args).toEqual(expect.arrayContaining(CHROME_ARGS.filter((arg) => !/swiftshader/i.test(arg))));
+      expect(args).toContain('--enable-gpu');
+      expect(args.some((arg) => arg.startsWith('--use-angle='))).toBe(true);
+    }
   });
 });

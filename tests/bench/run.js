@@ -4,6 +4,10 @@
 //   npm run bench              640x360 and 1280x720, 15 timed frames after 3 warm-up frames
 //   npm run bench -- --quick   every variant once at 160x90 (CI runs this so the benchmark
 //                              cannot rot; it asserts no time and writes no results)
+//   npm run bench -- --gpu     the same on the machine's own GPU instead of SwiftShader (with
+//                              --quick too); it prints the GPU's renderer string, stops with an
+//                              error if WebGL2 is missing or a software renderer, and writes
+//                              tests/bench/results-gpu.json and results-gpu.md only
 //
 // Each variant is compiled inside Shadertoy's header and timed in headless Chromium on
 // SwiftShader (tests/harness.js, timeShaders: all variants in one page, interleaved round by
@@ -26,6 +30,24 @@ import { paretoFront, chartSvg } from './chart.js';
 import { evaluateTargets } from './targets.js';
 
 const quick = process.argv.includes('--quick');
+// --gpu: the machine's own GPU (startHarness({ gpu: true })), into files of its own, so that the
+// SwiftShader results, chart and README table are never overwritten by a GPU run.
+const gpu = process.argv.includes('--gpu');
+const OUTPUT = gpu
+  ? { json: 'results-gpu.json', markdown: 'results-gpu.md', chart: null, readme: false, written: 'tests/bench/results-gpu.json and results-gpu.md' }
+  : { json: 'results.json', markdown: 'results.md', chart: 'chart.svg', readme: true, written: 'tests/bench/results.json, results.md, chart.svg and the table in README.md' };
+/** startHarness, on the GPU with --gpu (its renderer printed); with no hardware GPU, a clear stop. */
+async function startBenchHarness() {
+  try {
+    const harness = await startHarness({ gpu });
+    if (gpu) console.log(`GPU renderer: ${harness.context.environment.renderer} (${harness.context.environment.chromium})`);
+    return harness;
+  } catch (error) {
+    if (error.code !== 'NO_HARDWARE_GPU') throw error;
+    console.error(`\nnpm run bench -- --gpu: ${error.message}\nNothing was measured. The default benchmark, on SwiftShader, is \`npm run bench\`.`);
+    process.exit(1);
+  }
+}
 const SIZES = quick ? [[160, 90]] : [[640, 360], [1280, 720]];
 const FRAMES = quick ? 1 : 15;
 const WARMUP = quick ? 1 : 3;
@@ -68,7 +90,7 @@ const median = (xs) => {
 
 async function main() {
   console.log(`benchmark${quick ? ' (quick)' : ''}: ${VARIANTS.length} variants at ${SIZES.map((s) => s.join('x')).join(' and ')}`);
-  const { context, close } = await startHarness();
+  const { context, close } = await startBenchHarness();
   useHarness(context);
   const results = [];
   const failures = [];
@@ -125,10 +147,10 @@ async function main() {
     return;
   }
 
-  fs.writeFileSync(path.join(BENCH_DIR, 'results.json'), JSON.stringify(results, null, 2) + '\n');
+  fs.writeFileSync(path.join(BENCH_DIR, OUTPUT.json), JSON.stringify(results, null, 2) + '\n');
   const [w, h] = SIZES[0];
   const atSize = (width) => results.filter((r) => r.width === width);
-  fs.writeFileSync(path.join(BENCH_DIR, 'chart.svg'), chartSvg(atSize(w), { title: `Time against error at ${w}×${h} (SwiftShader, 2 cores)` }));
+  if (OUTPUT.chart) fs.writeFileSync(path.join(BENCH_DIR, OUTPUT.chart), chartSvg(atSize(w), { title: `Time against error at ${w}×${h} (SwiftShader, 2 cores)` }));
   const front = new Set(paretoFront(atSize(w)).map((r) => r.name));
   const table = (width) => {
     const rows = atSize(width);
@@ -160,9 +182,9 @@ async function main() {
     '',
     ...targets.map((t) => `- ${t.met ? 'met' : '**missed**'}: ${t.text}`),
   ].join('\n');
-  fs.writeFileSync(path.join(BENCH_DIR, 'results.md'), markdown + '\n');
-  replaceMarkedSection(path.join(REPO_ROOT, 'README.md'), 'bench', markdown);
-  console.log(`\n${markdown}\n\nwrote tests/bench/results.json, results.md, chart.svg and the table in README.md`);
+  fs.writeFileSync(path.join(BENCH_DIR, OUTPUT.markdown), markdown + '\n');
+  if (OUTPUT.readme) replaceMarkedSection(path.join(REPO_ROOT, 'README.md'), 'bench', markdown);
+  console.log(`\n${markdown}\n\nwrote ${OUTPUT.written}`);
 }
 
 main().catch((error) => {
