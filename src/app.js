@@ -8,6 +8,16 @@ import { ShaderRenderer } from './renderer.js';
 import { ShadertoyInputs, writeUniforms } from './shadertoy-inputs.js';
 import { clampSize } from './url-params.js';
 
+/**
+ * How long the live controls must rest before the shader is recompiled with them as constants.
+ * A `const` control is a uniform in the page so that a slider applies without a compile; but
+ * then the compiler folds nothing, and the frame costs more than the pasted shader's (measured
+ * on SwiftShader at 640x360: npm run bench, "page form (uniforms)"). So while the controls are
+ * still, the page runs the shader exactly as it pastes, with the current values as constants,
+ * and goes back to the uniform form (kept compiled) as soon as one moves.
+ */
+export const SPECIALIZE_AFTER_MS = 400;
+
 /** GL rows run bottom to top; images run top to bottom. */
 export function flipRows(pixels, width, height) {
   const row = width * 4;
@@ -59,6 +69,9 @@ export class RaytracerApp {
     this.listeners = { state: [], frame: [], compile: [], source: [] };
 
     this._latestCompile = null;
+    /** Whether the next compile takes the live controls as constants (see SPECIALIZE_AFTER_MS). */
+    this.liveAsConstants = true;
+    this._specializeTimer = 0;
     this._raf = 0;
     this._frameWaiters = [];
     this._lastFrameAt = null;
@@ -104,6 +117,8 @@ export class RaytracerApp {
       if (kept !== undefined) values[c.name] = kept;
     }
     this.source = source;
+    this.liveAsConstants = true;
+    clearTimeout(this._specializeTimer);
     if (from.name) this.fileName = from.name;
     if (from.origin) {
       this.origin = from.origin;
@@ -153,11 +168,29 @@ export class RaytracerApp {
       }
       const changed = JSON.stringify(value) !== JSON.stringify(this.values[name]);
       this.values[name] = value;
-      if (control.kind === 'uniform') this.renderer.setControlUniform(name, value);
-      else if (changed) recompile = true;
+      if (control.kind === 'define') recompile ||= changed;
+      else {
+        this.renderer.setControlUniform(name, value);
+        // The shader on screen has the old value as a constant: back to the uniform form, and
+        // to the constant form again once the controls rest. (Before the first compile there
+        // is nothing on screen: that compile takes the new values as constants.)
+        if (changed && this.renderer.hasProgram) {
+          if (this.liveAsConstants) recompile = true;
+          this.liveAsConstants = false;
+          this._specializeWhenStill();
+        }
+      }
     }
     this._emit('state');
     return recompile;
+  }
+
+  _specializeWhenStill() {
+    clearTimeout(this._specializeTimer);
+    this._specializeTimer = setTimeout(() => {
+      this.liveAsConstants = true;
+      this.compile().catch(() => {}); // a failure is shown like any other
+    }, SPECIALIZE_AFTER_MS);
   }
 
   /** The controls whose values differ from the shader's defaults. */
@@ -178,7 +211,7 @@ export class RaytracerApp {
       return job;
     }
     const defines = Object.fromEntries(this.controls.filter((c) => c.kind === 'define').map((c) => [c.name, this.values[c.name]]));
-    const hostBlock = this.notice ? '' : hostControlBlock(this.controls, defines);
+    const hostBlock = this.notice ? '' : hostControlBlock(this.controls, defines, this.liveAsConstants ? this.values : null);
     const fileName = this.fileName;
     const job = this.renderer.compile(this.source, hostBlock, fileName).then(
       () => {
@@ -371,6 +404,7 @@ export class RaytracerApp {
     });
     this.canvas.addEventListener('webglcontextrestored', () => {
       delete document.documentElement.dataset.context;
+      this.renderer.forgetCompiled();
       // three.js has rebuilt its state; programs and textures are made again from our objects.
       const waiting = this._afterRestore.splice(0);
       const job = this.compile();

@@ -24,7 +24,9 @@
 //   info()                {renderer (UNMASKED_RENDERER_WEBGL), vendor, version, shadingLanguage,
 //                         width, height, frame, time, playing, speed, mouse (iMouse),
 //                         controls: {NAME: value}, fileName, shaderUrl, origin, contextLost,
-//                         compiled (successful compiles so far)}
+//                         compiled (successful compiles so far), liveControls ('constants' while
+//                         the shader on screen has the live controls compiled in, 'uniforms'
+//                         while they move: see SPECIALIZE_AFTER_MS in app.js)}
 //
 // Every method waits for `ready` and for any compile under way, so a call right after
 // setControls() sees the new values.
@@ -149,6 +151,7 @@ export function installAutomation(app, ready, ui) {
         origin: app.origin,
         contextLost: app.renderer.contextLost,
         compiled: app.compiled,
+        liveControls: app.liveAsConstants ? 'constants' : 'uniforms',
       };
     },
   };

@@ -22,6 +22,9 @@ export class ShaderCompileError extends Error {
   }
 }
 
+/** Compiled materials kept for switching back without a compile: a uniform form, a constant form, and one spare. */
+const MATERIALS_KEPT = 3;
+
 const VERTEX_SHADER = `
 in vec3 position;
 void main() {
@@ -98,6 +101,13 @@ export class ShaderRenderer {
     this._compiling = null; // set while three.js checks a program, read by _onShaderError
     this._serial = 0; // compiles started
     this._installed = 0; // the compile on screen
+    /**
+     * Materials that compiled, by their code, most recent last: the page switches between a
+     * shader's uniform form and its constant form (app.js), and switching back must not wait
+     * for a compile.
+     * @type {Map<string, THREE.RawShaderMaterial>}
+     */
+    this._compiled = new Map();
   }
 
   /** True once some shader has compiled (render() draws nothing before). */
@@ -133,6 +143,13 @@ export class ShaderRenderer {
     const { code, firstSourceLine } = composeImageShader(source, { hostBlock });
     // three.js writes `#version` itself (glslVersion), ahead of its own #defines
     const body = code.slice(code.indexOf('\n') + 1);
+    const cached = this._compiled.get(body);
+    if (cached) {
+      this._installed = ++this._serial;
+      this._remember(body, cached);
+      this.mesh.material = cached;
+      return;
+    }
     const material = new THREE.RawShaderMaterial({
       glslVersion: THREE.GLSL3,
       vertexShader: VERTEX_SHADER,
@@ -168,9 +185,25 @@ export class ShaderRenderer {
       return;
     }
     this._installed = serial;
-    const previous = this.mesh.material;
     this.mesh.material = material;
-    if (previous) previous.dispose();
+    this._remember(body, material);
+  }
+
+  /** Keeps the most recent compiled materials (MATERIALS_KEPT); disposes the ones that fall out. */
+  _remember(body, material) {
+    this._compiled.delete(body);
+    this._compiled.set(body, material);
+    for (const [key, old] of this._compiled) {
+      if (this._compiled.size <= MATERIALS_KEPT) break;
+      this._compiled.delete(key);
+      if (old !== this.mesh.material) old.dispose();
+    }
+  }
+
+  /** Forgets the compiled materials but the one on screen (their programs died with a lost context). */
+  forgetCompiled() {
+    for (const material of this._compiled.values()) if (material !== this.mesh.material) material.dispose();
+    this._compiled.clear();
   }
 
   /** three.js's hook for a program that did not link: turn the logs into a ShaderCompileError. */

@@ -76,18 +76,33 @@ function formatDefineValue(value, type) {
   return String(value);
 }
 
+/** A GLSL literal of a control's type: floats keep a decimal point, vectors their constructor. */
+export function glslLiteral(value, type) {
+  if (type === 'bool') return value ? 'true' : 'false';
+  const float = (x) => (Number.isInteger(x) ? x.toFixed(1) : String(x));
+  if (type === 'int') return String(Math.round(value));
+  if (type === 'float') return float(value);
+  return `${type}(${value.map(float).join(', ')})`;
+}
+
 /**
  * Builds the host block that replaces a shader's control defaults: compile-time controls become
- * `#define`s with their current values, live controls become uniforms.
+ * `#define`s with their current values, live controls become uniforms — or, given
+ * `liveValues`, constants with those values: the shader exactly as it would be pasted with
+ * them, which the compiler can fold (the page compiles this form while the controls are still).
  * @param {Array<{name:string, kind:'define'|'uniform', type:string}>} controls from parseControls
  * @param {Record<string, unknown>} defineValues current values of the compile-time controls
+ * @param {Record<string, unknown> | null} [liveValues] values to compile the live controls as constants
  */
-export function hostControlBlock(controls, defineValues = {}) {
+export function hostControlBlock(controls, defineValues = {}, liveValues = null) {
   const lines = [`#define ${HOST_CONTROLS_MACRO}`];
   for (const c of controls) {
     if (c.kind === 'define') {
       const value = c.name in defineValues ? defineValues[c.name] : c.default;
       lines.push(`#define ${c.name} ${formatDefineValue(value, c.type)}`);
+    } else if (liveValues) {
+      const value = c.name in liveValues ? liveValues[c.name] : c.default;
+      lines.push(`const ${c.type} ${c.name} = ${glslLiteral(value, c.type)};`);
     } else {
       lines.push(`uniform ${c.type} ${c.name};`);
     }

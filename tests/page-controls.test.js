@@ -187,6 +187,27 @@ describe('the URL', () => {
     });
   });
 
+  // A live (`const`) control is a uniform while it moves and a constant once it rests, so the
+  // still page runs the shader as it pastes (src/app.js, SPECIALIZE_AFTER_MS): both forms show
+  // the same picture, and a move back is drawn at once from the uniform form kept compiled.
+  test('live controls: uniforms while they move, compiled in as constants when still', async () => {
+    await withPage(async ({ page, goto }) => {
+      await goto('?size=96x54&time=0');
+      expect((await info(page)).liveControls).toBe('constants');
+      const before = await readPixels(page);
+      await page.evaluate(() => window.raytracer.setControls({ CONE_HEIGHT: 2.6 }));
+      expect((await info(page)).liveControls).toBe('uniforms');
+      const moving = await readPixels(page);
+      await page.waitForFunction(() => window.raytracer.info().liveControls === 'constants', { polling: 50, timeout: 10000 });
+      const still = await readPixels(page);
+      expect(still.data.equals(before.data)).toBe(false); // the change is drawn ...
+      const differing = (a, b) => a.data.reduce((n, v, i) => n + (Math.abs(v - b.data[i]) > 2 ? 1 : 0), 0);
+      expect(differing(moving, still)).toBe(0); // ... the same by both forms
+      await page.evaluate(() => window.raytracer.setControls({ CONE_HEIGHT: 1.7 }));
+      expect(differing(await readPixels(page), before)).toBe(0);
+    });
+  });
+
   // Each bad URL: the page still draws a picture, warns on the console naming the parameter, and
   // logs no error. `check` looks at what the page made of it.
   const BAD_URLS = [
