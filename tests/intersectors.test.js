@@ -74,19 +74,21 @@ function inAmbiguityBand(c, S) {
 }
 
 const TEST_MAIN = `
-uniform highp sampler2D rayTable;  // 4 texels a case: (ro, kind), (rd, 0), params 0-3, params 4-7
+uniform highp sampler2D rayTable;  // 4 texels a case: (ro, kind), (rd, tMax), params 0-3, params 4-7
 void main() {
     int i = int(gl_FragCoord.x);
     vec4 a = texelFetch(rayTable, ivec2(i, 0), 0);
-    vec3 rd = texelFetch(rayTable, ivec2(i, 1), 0).xyz;
+    vec4 d = texelFetch(rayTable, ivec2(i, 1), 0);
+    vec3 rd = d.xyz;
+    float tMax = d.w > 0.0 ? d.w : T_MAX;  // 0 in the table: no range end
     vec4 p = texelFetch(rayTable, ivec2(i, 2), 0);
     vec4 q = texelFetch(rayTable, ivec2(i, 3), 0);
     int kind = int(a.w);
     vec4 hit;
-    if (kind == ${KINDS.plane}) hit = intersectPlane(a.xyz, rd, p, T_MAX);
-    else if (kind == ${KINDS.sphere}) hit = intersectSphere(a.xyz, rd, p.xyz, p.w, T_MAX);
-    else if (kind == ${KINDS.box}) hit = intersectBox(a.xyz, rd, p.xyz, vec3(p.w, q.xy), T_MAX);
-    else hit = intersectCone(a.xyz, rd, makeCone(p.xyz, vec3(p.w, q.xy), q.z, q.w), T_MAX);
+    if (kind == ${KINDS.plane}) hit = intersectPlane(a.xyz, rd, p, tMax);
+    else if (kind == ${KINDS.sphere}) hit = intersectSphere(a.xyz, rd, p.xyz, p.w, tMax);
+    else if (kind == ${KINDS.box}) hit = intersectBox(a.xyz, rd, p.xyz, vec3(p.w, q.xy), tMax);
+    else hit = intersectCone(a.xyz, rd, makeCone(p.xyz, vec3(p.w, q.xy), q.z, q.w), tMax);
     shadertoy_out_color = hit;
 }
 `;
@@ -96,19 +98,23 @@ describe('GLSL intersectors against float64', () => {
   const cases = INTERSECTOR_CASES.map((c) => ({ ...c, ro: f32(c.ro), rd: f32(c.rd), params: f32(c.params) }));
   let results;
 
-  beforeAll(async () => {
-    const source = fs.readFileSync(SHADER_FILE, 'utf8');
-    const code = SHADERTOY_HEADER + source + TEST_MAIN;
+  const code = SHADERTOY_HEADER + fs.readFileSync(SHADER_FILE, 'utf8') + TEST_MAIN;
+  /** Runs every case through the shader, each with its range end tMax(case, i) (0: none). */
+  const evaluate = (tMax = () => 0) => {
     const table = new Float32Array(cases.length * 4 * 4);
     const texel = (row, i, values) => table.set(values, (row * cases.length + i) * 4);
     cases.forEach((c, i) => {
       const p = [...c.params, 0, 0, 0, 0, 0, 0, 0, 0].slice(0, 8);
       texel(0, i, [...c.ro, KINDS[c.kind]]);
-      texel(1, i, [...c.rd, 0]);
+      texel(1, i, [...c.rd, tMax(c, i)]);
       texel(2, i, p.slice(0, 4));
       texel(3, i, p.slice(4, 8));
     });
-    results = await evaluateFloatShader(code, { width: cases.length, height: 1, table, tableHeight: 4, tableUniform: 'rayTable' });
+    return evaluateFloatShader(code, { width: cases.length, height: 1, table, tableHeight: 4, tableUniform: 'rayTable' });
+  };
+
+  beforeAll(async () => {
+    results = await evaluate();
   });
   afterAll(() => disconnect());
 
@@ -169,6 +175,24 @@ describe('GLSL intersectors against float64', () => {
       expect(failures).toEqual([]);
     });
   }
+
+  // The range end: a scene walk passes the nearest hit so far as tMax, a shadow ray the light's
+  // distance. Each hit the shader finds must be dropped by a tMax just short of it (nothing
+  // nearer exists) and come back unchanged with one just past it.
+  it('tMax: a hit at or past the range end is a miss; one before it is unchanged', async () => {
+    const hits = cases.map((c, i) => results[i * 4]).map((t) => (t > 0 ? t : 0));
+    const short = await evaluate((c, i) => hits[i] * (1 - 2 ** -20));
+    const past = await evaluate((c, i) => hits[i] * (1 + 2 ** -20));
+    const wrong = [];
+    cases.forEach((c, i) => {
+      if (!hits[i]) return;
+      if (short[i * 4] > 0) wrong.push(`${c.name}: t=${hits[i]} still hit with tMax just short of it (t=${short[i * 4]})`);
+      const same = [0, 1, 2, 3].every((k) => past[i * 4 + k] === results[i * 4 + k]);
+      if (!same) wrong.push(`${c.name}: tMax just past t=${hits[i]} changed the hit to ${past.slice(i * 4, i * 4 + 4)}`);
+    });
+    expect(hits.filter(Boolean).length).toBeGreaterThan(100);
+    expect(wrong).toEqual([]);
+  });
 
   // The family test must be able to fail: with the textbook discriminant b^2 - c spliced in, a
   // unit sphere seen from 1e4 gets many hit/miss decisions wrong (about one in six in a float32

@@ -1,8 +1,10 @@
-// Does this WebGL skip a branch that no pixel takes? The experiment behind the README's
-// "What bounds the targets": the same 200 sin() calls, run straight, behind an `if` no pixel
-// takes, and as a 200-iteration loop behind that `if`; then the project's shader with one extra
-// radiance() call behind `if (iFrame < 0)`, which never runs. On a GPU the guarded versions cost
-// next to nothing; on SwiftShader only the loop is skipped.
+// What does SwiftShader skip? The experiments behind the shader's structure (README, "What
+// bounds the targets"): the same 60 sin() calls run straight, behind an `if` that no pixel
+// takes, and in loops of 0, 1 and 2 trips written two ways (condition at the top, as a `for`
+// reads; exit at the bottom, as the shader's loops are written); then the project's shader with
+// one extra radiance() call behind `if (iFrame < 0)`, which never runs. On a GPU the guarded
+// versions cost next to nothing; on SwiftShader an `if` costs its whole body and a loop one body
+// per trip, plus one more when the condition is tested at the top.
 //
 //   npm run bench:branches        (640x360, median of 9 interleaved frames)
 
@@ -10,19 +12,26 @@ import fs from 'node:fs';
 import { composeImageShader } from '../../src/shadertoy.js';
 import { SHADER_FILE, disconnect, startHarness, timeShaders, useHarness } from '../harness.js';
 
-const CALLS = 200;
-const straight = Array.from({ length: CALLS }, (_, i) => `    x = sin(x * 1.${i % 10} + 0.${i % 7});`).join('\n');
-const image = (body) => composeImageShader(`void mainImage(out vec4 c, in vec2 f) {\n    float x = f.x * 0.001;\n${body}\n    c = vec4(x);\n}\n`).code;
+const CALLS = 60;
+const body = Array.from({ length: CALLS }, (_, i) => `        x = sin(x * 1.${i % 10} + 0.${i % 7});`).join('\n');
+// `never` is false for every pixel, but the compiler cannot know it.
+const image = (code) => composeImageShader(`void mainImage(out vec4 c, in vec2 f) {\n    float x = f.x * 0.001;\n    bool never = f.x < -1.0;\n${code}\n    c = vec4(x);\n}\n`).code;
+const topLoop = (trips) => image(`    int n = never ? 7 : ${trips};\n    for (int k = 0; k < n; k++) {\n${body}\n    }`);
+const bottomLoop = (trips) => image(`    int n = never ? 7 : ${trips};\n    for (int k = 0;; k++) {\n${body}\n        if (k + 1 >= n) break;\n    }`);
 const project = fs.readFileSync(SHADER_FILE, 'utf8');
-const call = '            sum += radiance(s, rd, coneSpread);';
+const call = '    vec3 linear = radiance(s, primaryRay(camera, fragCoord), coneSpread);';
 if (!project.includes(call)) throw new Error(`branches: ${SHADER_FILE} no longer has "${call.trim()}"`);
 
 const CASES = [
-  ['200 sin() calls, straight', image(straight)],
-  ['the same behind if (fragCoord.x < -1.0), never taken', image(`    if (f.x < -1.0) {\n${straight}\n    }`)],
-  ['a 200-iteration sin() loop behind the same if', image(`    if (f.x < -1.0) {\n        for (int i = 0; i < ${CALLS}; i++) x = sin(x * 1.1 + 0.3);\n    }`)],
+  [`${CALLS} sin() calls, straight`, image(body)],
+  ['the same behind if (never)', image(`    if (never) {\n${body}\n    }`)],
+  ['in a for loop with the condition at the top, 0 trips', topLoop(0)],
+  ['the same, 1 trip', topLoop(1)],
+  ['the same, 2 trips', topLoop(2)],
+  ['in a loop with the exit at the bottom, 1 trip', bottomLoop(1)],
+  ['the same, 2 trips', bottomLoop(2)],
   ['the project shader', composeImageShader(project).code],
-  ['the project shader + radiance() behind if (iFrame < 0)', composeImageShader(project.replace(call, `${call}\n            if (iFrame < 0) sum += radiance(s, rd.zyx, coneSpread);`)).code],
+  ['the project shader + radiance() behind if (iFrame < 0)', composeImageShader(project.replace(call, `${call}\n    if (iFrame < 0) linear += radiance(s, primaryRay(camera, fragCoord).zyx, coneSpread);`)).code],
 ];
 
 const { context, close } = await startHarness();

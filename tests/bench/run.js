@@ -1,5 +1,7 @@
-// The benchmark: speed against error, for the project's shader across its quality controls, with
-// its savings switched off, an empty shader (the floor), and two peers (tests/bench/peers/).
+// The benchmark: speed against error, for the project's shader across its quality controls, in
+// the page's uniform form, with its savings switched off (savings-off.glsl), an empty shader
+// (the floor), and three peers (tests/bench/peers/): the assignment's algorithm, sphere tracing,
+// and a plain analytic tracer.
 //
 //   npm run bench              640x360 and 1280x720, 15 timed frames after 3 warm-up frames
 //   npm run bench -- --quick   every variant once at 160x90 (CI runs this so the benchmark
@@ -11,7 +13,8 @@
 //
 // Each variant is compiled inside Shadertoy's header and timed in headless Chromium on
 // SwiftShader (tests/harness.js, timeShaders: all variants in one page, interleaved round by
-// round, a frame being a draw plus a 1-pixel read-back, so the rendering is what is timed). Its last frame is compared with the converged float64 reference
+// round, a frame being a draw plus a 1-pixel read-back, so the rendering is what is timed). Its
+// last frame is compared with the converged float64 reference
 // of the project's scene at its default settings (src/reference/, 64 jittered samples per pixel
 // at 640x360, 16 at 1280x720, texture point-sampled): RMSE and the fraction of pixels off by
 // more than 2/255 (src/error.js). Writes tests/bench/results.json, results.md, chart.svg, and
@@ -27,7 +30,7 @@ import { replaceMarkedSection } from '../readme-section.js';
 import { composePeer } from './peers/compose-peer.js';
 import { renderReferenceParallel } from './reference.js';
 import { paretoFront, chartSvg } from './chart.js';
-import { evaluateTargets } from './targets.js';
+import { PAGE_FORM, PLAIN, SAVINGS_OFF, evaluateTargets, sphereTracing } from './targets.js';
 
 const quick = process.argv.includes('--quick');
 // --gpu: the machine's own GPU (startHarness({ gpu: true })), into files of its own, so that the
@@ -58,16 +61,16 @@ const read = (file) => fs.readFileSync(file, 'utf8');
 const source = read(SHADER_FILE);
 const controls = parseControls(source);
 const uniformValues = controls.filter((c) => c.kind === 'uniform').map((c) => ({ name: c.name, type: c.type, value: c.default }));
+const defaults = Object.fromEntries(controls.map((c) => [c.name, c.default]));
 
-/** The project's shader with some compile-time controls changed (and SAVINGS, the switch). */
-function project(defines = {}, { savings = true } = {}) {
-  const hostBlock = (savings ? '' : '#define SAVINGS 0\n') + hostControlBlock(controls, defines);
-  return composeImageShader(source, { hostBlock }).code;
-}
-function peer(file, extra = '') {
-  const composed = composePeer(source, read(path.join(BENCH_DIR, 'peers', file)), { peerName: file });
-  return composeImageShader(composed, { hostBlock: hostControlBlock(controls, {}) + extra }).code;
-}
+// Every variant is compiled in the paste form (the live controls as constants with their
+// default values: the shader as Shadertoy compiles it, and as the page runs it while its
+// controls rest) but the one marked `uniforms`, the page's form while a control moves.
+const pasteForm = (text, defines = {}, extra = '') => composeImageShader(text, { hostBlock: hostControlBlock(controls, defines, defaults) + extra }).code;
+/** The project's shader with some compile-time controls changed. */
+const project = (defines = {}) => pasteForm(source, defines);
+const composed = (file, dir = path.join(BENCH_DIR, 'peers')) => composePeer(source, read(path.join(dir, file)), { peerName: file });
+const peer = (file, extra = '') => pasteForm(composed(file), {}, extra);
 const EMPTY = composeImageShader('void mainImage(out vec4 fragColor, in vec2 fragCoord) {\n    fragColor = vec4(0.5, 0.5, 0.5, 1.0);\n}\n').code;
 
 // group: which series a variant belongs to on the chart; spp: samples per pixel.
@@ -78,9 +81,17 @@ export const VARIANTS = [
   { name: 'project, no shadows', group: 'project: features', spp: 1, code: () => project({ SHADOWS: 0 }) },
   { name: 'project, primary rays only', group: 'project: features', spp: 1, code: () => project({ SHADOWS: 0, BOUNCES: 0 }) },
   { name: 'project, unfiltered stripes', group: 'project: features', spp: 1, code: () => project({ TEXTURE_FILTER: 0 }) },
-  { name: 'project, savings off', group: 'project: savings off', spp: 1, code: () => project({}, { savings: false }) },
+  {
+    name: PAGE_FORM,
+    group: 'project: page form',
+    spp: 1,
+    uniforms: true,
+    code: () => composeImageShader(source, { hostBlock: hostControlBlock(controls, {}) }).code,
+  },
+  { name: SAVINGS_OFF, group: 'project: savings off', spp: 1, code: () => pasteForm(composed('savings-off.glsl', BENCH_DIR)) },
   { name: 'assignment (peer 1)', group: 'peer: assignment', spp: 1, code: () => peer('assignment.glsl') },
-  ...[32, 64, 128, 256].map((steps) => ({ name: `sphere tracing, ${steps} steps (peer 2)`, group: 'peer: sphere tracing', spp: 1, code: () => peer('sdf.glsl', `#define MAX_STEPS ${steps}\n`) })),
+  ...[32, 64, 128, 256].map((steps) => ({ name: sphereTracing(steps), group: 'peer: sphere tracing', spp: 1, code: () => peer('sdf.glsl', `#define MAX_STEPS ${steps}\n`) })),
+  { name: PLAIN, group: 'peer: plain analytic', spp: 1, code: () => peer('plain.glsl') },
 ];
 
 const median = (xs) => {
@@ -104,7 +115,7 @@ async function main() {
       // All variants in one page, interleaved round by round (see timeShaders).
       process.stdout.write(`  timing ${VARIANTS.length} variants, ${WARMUP} warm-up + ${FRAMES} timed rounds: `);
       const timed = await timeShaders(
-        VARIANTS.map((v) => ({ code: v.code(), uniforms: v.group === 'floor' ? [] : uniformValues })),
+        VARIANTS.map((v) => ({ code: v.code(), uniforms: v.uniforms ? uniformValues : [] })),
         { width, height, frames: FRAMES, warmup: WARMUP, onRound: (round) => process.stdout.write(`${round + 1} `) },
       );
       console.log('done');
