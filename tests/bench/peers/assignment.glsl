@@ -28,11 +28,12 @@
 // - self-intersection: every secondary ray (shadow or reflection) starts EPSILON along the
 //   normal from the hit, and shading is evaluated there, as such templates do; no object is
 //   skipped, no hit point reprojected, no surface treated as seen from inside;
-// - shadow rays are the nearest-hit trace compared with the light distance.
-// Where the report says nothing (shading, reflections, camera) the project's code runs.
+// - shadow rays are the nearest-hit trace (the same traceScene) compared with the light distance.
+// Where the report says nothing (shading, reflections, camera) the project's code runs. The
+// project's intersectPlane, Cone and makeCone stay in the composed shader: makeCone fills the
+// Scene's cone (only its base is read here), intersectPlane is unused.
 //
-// @replaces intersectSphere intersectBox intersectCone sceneRelativeTo
-// @replaces addSphere addBox addCone traceScene occluded radiance
+// @replaces intersectSphere intersectBox intersectCone sceneRelativeTo traceScene radiance
 
 // "No hit": the template's INFINITY (GLSL ES has no portable infinity literal).
 const float INFINITY = 1e30;
@@ -108,9 +109,12 @@ Scene sceneRelativeTo(vec3 eyeLocal) {
     s.ground = vec4(0.0, 1.0, 0.0, -SCENE_ORIGIN.y);  // n.x + d = 0 with n = +y, d = -origin.y
     s.sphereCenter = SCENE_ORIGIN + SPHERE_CENTER;
     s.cubeCenter = SCENE_ORIGIN + CUBE_CENTER;
-    s.coneBase = SCENE_ORIGIN + CONE_BASE;
-    s.coneApex = s.coneBase + vec3(0.0, CONE_HEIGHT, 0.0);
+    s.sphereRadius = SPHERE_RADIUS;
+    s.cubeHalfSize = CUBE_HALF_SIZE;
+    vec3 coneBase = SCENE_ORIGIN + CONE_BASE;
+    s.cone = makeCone(coneBase, coneBase + vec3(0.0, CONE_HEIGHT, 0.0), CONE_RADIUS, 0.0);
     s.light = SCENE_ORIGIN + LIGHT_POSITION;
+    s.reflectivity = vec4(GROUND_REFLECTIVITY, SPHERE_REFLECTIVITY, CUBE_REFLECTIVITY, CONE_REFLECTIVITY);
     s.textureOrigin = vec2(0.0);  // unused: the texture is read at world x
     return s;
 }
@@ -177,29 +181,23 @@ void addCone( vec3 ro, vec3 rd, vec3 center, float radius, float height, int id,
     }
 }
 
-// The template's rayTraceScene: nearest hit over all objects; ID_NONE when nothing is hit.
+// The template's rayTraceScene: nearest hit over all objects; ID_NONE when nothing is hit. (Its
+// own signature, not the project's: nothing else calls it.)
 int traceScene(Scene s, vec3 ro, vec3 rd, out float hitDist, out vec3 hitNormal) {
     hitDist = INFINITY;
     hitNormal = vec3(0.0);
     int hitId = ID_NONE;
     rayPlaneIntersection(ro, rd, s.ground.xyz, s.ground.w, ID_GROUND, hitDist, hitId, hitNormal);
-    addSphere(ro, rd, s.sphereCenter, SPHERE_RADIUS, ID_SPHERE, hitDist, hitId, hitNormal);
-    addBox(ro, rd, s.cubeCenter, CUBE_HALF_SIZE, ID_CUBE, hitDist, hitId, hitNormal);
-    addCone(ro, rd, s.coneBase, CONE_RADIUS, CONE_HEIGHT, ID_CONE, hitDist, hitId, hitNormal);
+    addSphere(ro, rd, s.sphereCenter, s.sphereRadius, ID_SPHERE, hitDist, hitId, hitNormal);
+    addBox(ro, rd, s.cubeCenter, s.cubeHalfSize, ID_CUBE, hitDist, hitId, hitNormal);
+    addCone(ro, rd, s.cone.base, CONE_RADIUS, CONE_HEIGHT, ID_CONE, hitDist, hitId, hitNormal);
     return hitId;
 }
 
-// Shadow ray: anything hit before the light. ro is already EPSILON off the surface; skipId is
-// ignored (the template skips nothing).
-bool occluded(Scene s, vec3 ro, vec3 rd, float lightDist, int skipId) {
-    float t;
-    vec3 n;
-    return traceScene(s, ro, rd, t, n) != ID_NONE && t < lightDist;
-}
-
-// The project's radiance loop (sky, bounce limit, reflectivity weighting) with the template's
-// hit handling: world coordinates from gEye, unfiltered texture at the hit, secondary rays and
-// shading from EPSILON along the normal.
+// The project's radiance loop (sky, bounce limit, reflectivity weighting, local shading by
+// shadeLocal) with the template's hit handling: world coordinates from gEye, unfiltered texture
+// at the hit, secondary rays and shading from EPSILON along the normal, and a shadow ray (the
+// nearest hit towards the light, blocking if nearer than the light) from surfaces facing it.
 vec3 radiance(Scene s, vec3 rd, float coneSpread) {
     vec3 ro = gEye;
     vec3 color = vec3(0.0);
@@ -221,9 +219,21 @@ vec3 radiance(Scene s, vec3 rd, float coneSpread) {
 #endif
         }
         vec3 p = hitPos + EPSILON * n;
-        vec3 local = shadeLocal(s, p, n, rd, id, albedo, false);
+        vec3 toLight = s.light - p;
+        float lightDist = length(toLight);
+        vec3 l = toLight / lightDist;
+        float facing = dot(n, l);
+        bool lit = facing > 0.0;
+#if SHADOWS
+        if (lit) {
+            float shadowDist;
+            vec3 shadowNormal;
+            lit = !(traceScene(s, p, l, shadowDist, shadowNormal) != ID_NONE && shadowDist < lightDist);
+        }
+#endif
+        vec3 local = shadeLocal(l, n, rd, albedo, facing, lit);
 
-        float mirror = reflectivity(id);
+        float mirror = s.reflectivity[id];
         if (bounce == BOUNCES || throughput * mirror < 1.0 / 255.0) return color + throughput * local;
         color += throughput * (1.0 - mirror) * local;
         throughput *= mirror;

@@ -8,7 +8,7 @@
 //
 // The peer says which definitions it replaces, in one or more comment lines:
 //
-//   // @replaces traceScene occluded radiance
+//   // @replaces sceneRelativeTo traceScene radiance
 //
 // and composePeer checks, failing loudly:
 // - each listed name is defined exactly once in the project and exactly once in the peer;
@@ -22,8 +22,8 @@
 // between the previous replacement and this one (comments, #defines, constants, helper
 // functions) goes immediately before it. Text after the peer's last replacement goes right after
 // it. A helper therefore lands inside any preprocessor conditional that surrounds the project
-// definition it precedes (e.g. `#if SHADOWS` around occluded): put helpers that other code
-// needs before an earlier replacement.
+// definition it precedes (e.g. an `#if SHADOWS` around a shadow-ray function): put helpers that
+// other code needs before an earlier replacement.
 
 const DIRECTIVE = /^[ \t]*\/\/[ \t]*@replaces\b(.*)$/gm;
 const IDENT = /^[A-Za-z_]\w*$/;

@@ -1,5 +1,5 @@
 // composePeer: splicing a benchmark peer's replacement functions into shaders/raytrace.glsl.
-// Plain-Node tests of the splice, then the two real peers composed with the real shader,
+// Plain-Node tests of the splice, then the three real peers composed with the real shader,
 // compiled in Shadertoy's header and drawn in the harness's Chromium (SwiftShader).
 import fs from 'node:fs';
 import { afterAll, describe, expect, test } from 'vitest';
@@ -9,7 +9,7 @@ import { assertNotBlank, disconnect, mapShaderLog, renderRawShader } from '../..
 import { ComposePeerError, composePeer, replacedNames, scanTopLevel } from './compose-peer.js';
 
 const PROJECT_FILE = new URL('../../../shaders/raytrace.glsl', import.meta.url);
-const PEERS = ['assignment', 'sdf'];
+const PEERS = ['assignment', 'sdf', 'plain'];
 const peerSource = (name) => fs.readFileSync(new URL(`./${name}.glsl`, import.meta.url), 'utf8');
 
 const PROJECT = `// project
@@ -142,7 +142,9 @@ describe('the real peers with the real shader', () => {
 // ---- in the browser ------------------------------------------------------------------------
 // Each variant the benchmark builds must compile in Shadertoy's header and draw a scene. The SDF
 // peer at 256 steps must also draw the project's scene: below the horizon band (where sphere
-// tracing runs out of steps on the grazing ground) nearly every pixel matches the project's.
+// tracing runs out of steps on the grazing ground) nearly every pixel matches the project's. The
+// plain analytic peer must draw the project's scene with unfiltered stripes: it differs only at
+// edges (its camera's built-in sin/cos, its fixed epsilon).
 describe('composed peers in WebGL2 (SwiftShader)', () => {
   afterAll(disconnect);
   const project = fs.readFileSync(PROJECT_FILE, 'utf8');
@@ -172,7 +174,7 @@ describe('composed peers in WebGL2 (SwiftShader)', () => {
     return n / total;
   }
 
-  test('every variant compiles and draws; sdf at 256 steps draws the project\'s scene', async () => {
+  test('every variant compiles and draws; sdf at 256 steps and plain draw the project\'s scene', async () => {
     const projectImage = await render(project, '', 'project');
     const assignment = composePeer(project, peerSource('assignment'), { peerName: 'assignment' });
     const assignmentImage = await render(assignment, '', 'assignment');
@@ -182,6 +184,12 @@ describe('composed peers in WebGL2 (SwiftShader)', () => {
     for (const steps of [32, 64, 128]) await render(sdf, `#define MAX_STEPS ${steps}\n`, `sdf ${steps}`);
     const sdf256 = await render(sdf, '#define MAX_STEPS 256\n', 'sdf 256');
     expect(differing(sdf256, projectImage, 16, HEIGHT / 3)).toBeLessThan(0.02);
+    const unfiltered = project.replace(/^#define TEXTURE_FILTER 1\b/m, '#define TEXTURE_FILTER 0');
+    expect(unfiltered, 'the project\'s TEXTURE_FILTER default line').not.toBe(project);
+    const unfilteredImage = await render(unfiltered, '', 'project, unfiltered stripes');
+    const plain = composePeer(project, peerSource('plain'), { peerName: 'plain' });
+    const plainImage = await render(plain, '', 'plain');
+    expect(differing(plainImage, unfilteredImage, 16, 0)).toBeLessThan(0.02);
   });
 
   test('the peers honour the project\'s compile-time controls through a host block', async () => {

@@ -12,7 +12,8 @@
 //   the objects at SCENE_ORIGIN + theirs. sceneRelativeTo keeps the project's name and Scene
 //   struct but fills it with world positions, and leaves the eye in gEye for radiance;
 // - primary, reflection and shadow rays are all sphere traced through sceneDistance (the min of
-//   exact SDFs of the ground plane, sphere, box and capped cone), at most MAX_STEPS steps;
+//   exact SDFs of the ground plane, sphere, box and capped cone), at most MAX_STEPS steps; a
+//   shadow ray (occluded) only marches, up to the light, and is cast from surfaces facing it;
 // - a ray hits when the distance falls below HIT_THRESHOLD * t (t from the ray's origin). It
 //   misses when t passes the far limit or the step budget runs out (as in the classic tutorial
 //   loop, which returns "no hit" after MAX_STEPS): grazing rays that have not converged turn to
@@ -41,7 +42,10 @@
 // BOUNCES, SHADOWS, SAMPLES, TEXTURE, TEXTURE_FILTER are the project's controls: set them the
 // project's way (hostControlBlock with #define HOST_CONTROLS, see src/shadertoy.js).
 //
-// @replaces sceneRelativeTo traceScene occluded radiance
+// The project's intersectors, Cone and makeCone stay in the composed shader: makeCone fills the
+// Scene's cone (only its base is read here); the intersectors are unused.
+//
+// @replaces sceneRelativeTo traceScene radiance
 
 #ifndef MAX_STEPS
 #define MAX_STEPS 128
@@ -59,9 +63,12 @@ Scene sceneRelativeTo(vec3 eyeLocal) {
     s.ground = vec4(0.0, 1.0, 0.0, -SCENE_ORIGIN.y);  // n.x + d = 0 with n = +y, d = -origin.y
     s.sphereCenter = SCENE_ORIGIN + SPHERE_CENTER;
     s.cubeCenter = SCENE_ORIGIN + CUBE_CENTER;
-    s.coneBase = SCENE_ORIGIN + CONE_BASE;
-    s.coneApex = s.coneBase + vec3(0.0, CONE_HEIGHT, 0.0);
+    s.sphereRadius = SPHERE_RADIUS;
+    s.cubeHalfSize = CUBE_HALF_SIZE;
+    vec3 coneBase = SCENE_ORIGIN + CONE_BASE;
+    s.cone = makeCone(coneBase, coneBase + vec3(0.0, CONE_HEIGHT, 0.0), CONE_RADIUS, 0.0);
     s.light = SCENE_ORIGIN + LIGHT_POSITION;
+    s.reflectivity = vec4(GROUND_REFLECTIVITY, SPHERE_REFLECTIVITY, CUBE_REFLECTIVITY, CONE_REFLECTIVITY);
     s.textureOrigin = vec2(0.0);  // unused: the texture is read at world xz
     return s;
 }
@@ -113,11 +120,11 @@ float sdCone(vec3 p, vec3 pa, vec3 pb, float radius) {
 float sceneDistance(Scene s, vec3 p, out int id) {
     float d = sdPlane(p, s.ground);
     id = ID_GROUND;
-    float dSphere = sdSphere(p, s.sphereCenter, SPHERE_RADIUS);
+    float dSphere = sdSphere(p, s.sphereCenter, s.sphereRadius);
     if (dSphere < d) { d = dSphere; id = ID_SPHERE; }
-    float dCube = sdBox(p, s.cubeCenter, CUBE_HALF_SIZE);
+    float dCube = sdBox(p, s.cubeCenter, s.cubeHalfSize);
     if (dCube < d) { d = dCube; id = ID_CUBE; }
-    float dCone = sdCone(p, s.coneBase, s.coneApex, CONE_RADIUS);
+    float dCone = sdCone(p, s.cone.base, s.cone.base + vec3(0.0, CONE_HEIGHT, 0.0), CONE_RADIUS);
     if (dCone < d) { d = dCone; id = ID_CONE; }
     return d;
 }
@@ -168,23 +175,25 @@ float surfaceOffset(float t) {
     return 2.0 * HIT_THRESHOLD * max(t, 1.0);
 }
 
-// Nearest hit along the ray, sphere traced; ID_NONE for a miss.
+// Nearest hit along the ray, sphere traced; ID_NONE for a miss. (Its own signature, not the
+// project's: nothing else calls it.)
 int traceScene(Scene s, vec3 ro, vec3 rd, out float hitDist, out vec3 hitNormal) {
     int id = march(s, ro, rd, farLimit(), hitDist);
     hitNormal = id == ID_NONE ? vec3(0.0) : sdfNormal(s, ro + hitDist * rd);
     return id;
 }
 
-// Shadow ray, sphere traced up to the light. ro is already off the surface (radiance offsets
-// it); skipId is ignored: sphere tracing skips nothing.
-bool occluded(Scene s, vec3 ro, vec3 rd, float lightDist, int skipId) {
+// Shadow ray, sphere traced up to the light (no normal needed). ro is already off the surface
+// (radiance offsets it); sphere tracing skips no object.
+bool occluded(Scene s, vec3 ro, vec3 rd, float lightDist) {
     float t;
     return march(s, ro, rd, lightDist, t) != ID_NONE && t < lightDist;
 }
 
-// The project's radiance loop (sky, texture and its ray cone, bounce limit, reflectivity
-// weighting, the ray cone's widening on curved mirrors) with sphere-traced hits: world
-// coordinates from gEye, secondary rays and shading from surfaceOffset along the normal.
+// The project's radiance loop (sky, texture and its ray cone, local shading by shadeLocal, bounce
+// limit, reflectivity weighting, the ray cone's widening on curved mirrors) with sphere-traced
+// hits: world coordinates from gEye, secondary rays and shading from surfaceOffset along the
+// normal.
 vec3 radiance(Scene s, vec3 rd, float coneSpread) {
     vec3 ro = gEye;
     vec3 color = vec3(0.0);
@@ -202,15 +211,28 @@ vec3 radiance(Scene s, vec3 rd, float coneSpread) {
             ? groundColor(mod(hit.xz, 2.0), groundFootprint(rd, coneWidth))
             : objectColor(id);
         vec3 p = hit + surfaceOffset(t) * n;
-        vec3 local = shadeLocal(s, p, n, rd, id, albedo, false);
+        vec3 toLight = s.light - p;
+        float lightDist = length(toLight);
+        vec3 l = toLight / lightDist;
+        float facing = dot(n, l);
+        bool lit = facing > 0.0;
+#if SHADOWS
+        lit = lit && !occluded(s, p, l, lightDist);
+#endif
+        vec3 local = shadeLocal(l, n, rd, albedo, facing, lit);
 
-        float mirror = reflectivity(id);
+        float mirror = s.reflectivity[id];
         if (bounce == BOUNCES || throughput * mirror < 1.0 / 255.0) return color + throughput * local;
         color += throughput * (1.0 - mirror) * local;
         throughput *= mirror;
 
-        if (id == ID_SPHERE) coneSpread += 2.0 * coneWidth / SPHERE_RADIUS;
-        if (id == ID_CONE) coneSpread += 2.0 * coneWidth / max(coneRadiusAt(hit.y - s.coneBase.y), coneWidth);
+        // The project's widening of the ray cone on curved mirrors (see its radiance): the cone's
+        // side has radius CONE_RADIUS (1 - height / CONE_HEIGHT) across its axis.
+        if (id == ID_SPHERE) coneSpread += 2.0 * coneWidth / s.sphereRadius;
+        if (id == ID_CONE) {
+            float radiusHere = CONE_RADIUS * max(1.0 - (hit.y - s.cone.base.y) / CONE_HEIGHT, 0.0);
+            coneSpread += 2.0 * coneWidth / max(radiusHere, coneWidth);
+        }
         rd = reflect(rd, n);
         ro = p;
     }
