@@ -176,8 +176,9 @@ vec4 intersectCone(vec3 ro, vec3 rd, Cone cone, float tMax) {
     float disc = b * b - a * c;
     float q = -(b + (b >= 0.0 ? 1.0 : -1.0) * sqrt(max(disc, 0.0)));
     // q == 0 only when b == 0 and disc == 0: a tangent ray whose root is t = 0 (or none).
-    float t0 = q != 0.0 ? c / q : -1.0;
-    float t1 = a != 0.0 ? q / a : -1.0;
+    float cOverQ = c / q, qOverA = q / a;
+    float t0 = q != 0.0 ? cOverQ : -1.0;
+    float t1 = a != 0.0 ? qOverA : -1.0;
     float y0 = yo + t0 * yd, y1 = yo + t1 * yd;
     float tBest = min(tMax - tShift, T_MAX);
     bool side0 = all(bvec4(disc >= 0.0, t0 > 0.0, t0 < tBest, all(bvec2(y0 >= 0.0, y0 <= cone.height))));
@@ -204,11 +205,11 @@ vec4 intersectCone(vec3 ro, vec3 rd, Cone cone, float tMax) {
     vec3 wPerp = oPerp + tBest * dPerp;
     float radialNoise = 8.0 * EPS32 * (cone.height + max(cone.ra, cone.rb) + tBest);
     vec3 radial = mix(-dPerp, wPerp, bvec3(dot(wPerp, wPerp) > radialNoise * radialNoise));
-    vec3 anyPerpendicular = abs(axis.x) < 0.9 ? vec3(0.0, axis.z, -axis.y) : vec3(-axis.z, 0.0, axis.x);
+    vec3 anyPerpendicular = mix(vec3(-axis.z, 0.0, axis.x), vec3(0.0, axis.z, -axis.y), bvec3(abs(axis.x) < 0.9));
     radial = mix(radial, anyPerpendicular, bvec3(dot(radial, radial) == 0.0));
     vec3 sideNormal = (normalize(radial) - cone.slope * axis) * inversesqrt(1.0 + cone.slope * cone.slope);
     // The last test that moved tBest names the part hit.
-    vec3 n = onTop ? axis : (onBase ? -axis : sideNormal);
+    vec3 n = mix(mix(sideNormal, -axis, bvec3(onBase)), axis, bvec3(onTop));
     return hitOrMiss(all(bvec2(inBound, any(bvec4(side0, side1, onBase, onTop)))), tShift + tBest, n);
 }
 
