@@ -52,8 +52,14 @@ async function startBenchHarness() {
   }
 }
 const SIZES = quick ? [[160, 90]] : [[640, 360], [1280, 720]];
-const FRAMES = quick ? 1 : 15;
-const WARMUP = quick ? 1 : 3;
+// Each variant is compiled COPIES times (the copies differ by a comment) and timed as separate
+// programs, their frames pooled: on SwiftShader one compilation of a shader can run 20-40%
+// slower than another of the same text, for as long as it lives (seen for the project's shader:
+// 34.3, 34.0, 33.9 ms for three copies in one run, 34.8 and 41.7 in another), so one program a
+// variant would rank variants by luck.
+const COPIES = quick ? 1 : 3;
+const FRAMES = quick ? 1 : 5; // timed frames per copy
+const WARMUP = quick ? 1 : 2; // per copy
 const REFERENCE_SAMPLES_PER_AXIS = (width) => (quick ? 2 : width <= 640 ? 8 : 4);
 const BENCH_DIR = path.join(REPO_ROOT, 'tests', 'bench');
 const read = (file) => fs.readFileSync(file, 'utf8');
@@ -113,11 +119,18 @@ async function main() {
       const reference = await renderReferenceParallel(source, { width, height, time: 0, mouse: [0, 0, 0, 0], controls: {} }, { mode: 'converged', samplesPerAxis: perAxis });
       console.log(`${((Date.now() - started) / 1000).toFixed(0)} s`);
       // All variants in one page, interleaved round by round (see timeShaders).
-      process.stdout.write(`  timing ${VARIANTS.length} variants, ${WARMUP} warm-up + ${FRAMES} timed rounds: `);
-      const timed = await timeShaders(
-        VARIANTS.map((v) => ({ code: v.code(), uniforms: v.uniforms ? uniformValues : [] })),
-        { width, height, frames: FRAMES, warmup: WARMUP, onRound: (round) => process.stdout.write(`${round + 1} `) },
-      );
+      process.stdout.write(`  timing ${VARIANTS.length} variants x ${COPIES} copies, ${WARMUP} warm-up + ${FRAMES} timed rounds: `);
+      const programs = VARIANTS.flatMap((v) => {
+        const code = v.code();
+        return Array.from({ length: COPIES }, (_, k) => ({ code: `${code}\n// copy ${k}\n`, uniforms: v.uniforms ? uniformValues : [] }));
+      });
+      const runs = await timeShaders(programs, { width, height, frames: FRAMES, warmup: WARMUP, onRound: (round) => process.stdout.write(`${round + 1} `) });
+      // One result per variant: the frames of all its copies, and the last copy's image.
+      const timed = VARIANTS.map((v, i) => {
+        const copies = runs.slice(i * COPIES, (i + 1) * COPIES);
+        const failed = copies.find((c) => c.error);
+        return failed ?? { ...copies[COPIES - 1], times: copies.flatMap((c) => c.times) };
+      });
       console.log('done');
       for (const [i, variant] of VARIANTS.entries()) {
         const result = timed[i];
@@ -179,7 +192,7 @@ async function main() {
   };
   const targets = evaluateTargets(atSize(w));
   const markdown = [
-    `Measured by \`npm run bench\` on ${results[0].renderer.replace(/\s*\(0x[0-9A-F]+\)/i, '')}, ${results[0].chromium}; median of ${FRAMES} frames after ${WARMUP} warm-up frames, all variants interleaved frame by frame. Error against the converged float64 reference of the default scene.`,
+    `Measured by \`npm run bench\` on ${results[0].renderer.replace(/\s*\(0x[0-9A-F]+\)/i, '')}, ${results[0].chromium}; median of ${COPIES * FRAMES} frames (${COPIES} compilations of each variant, ${FRAMES} frames each after ${WARMUP} warm-up frames), all interleaved frame by frame. Error against the converged float64 reference of the default scene.`,
     '',
     `### ${w}×${h}`,
     '',
