@@ -30,7 +30,7 @@ import { replaceMarkedSection } from '../readme-section.js';
 import { composePeer } from './peers/compose-peer.js';
 import { renderReferenceParallel } from './reference.js';
 import { paretoFront, chartSvg } from './chart.js';
-import { PAGE_FORM, PLAIN, SAVINGS_OFF, evaluateTargets, sphereTracing } from './targets.js';
+import { ONE_TRACE_SITE, PAGE_FORM, PLAIN, SAVINGS_OFF, evaluateTargets, sphereTracing } from './targets.js';
 
 const quick = process.argv.includes('--quick');
 // --gpu: the machine's own GPU (startHarness({ gpu: true })), into files of its own, so that the
@@ -95,6 +95,7 @@ export const VARIANTS = [
     code: () => composeImageShader(source, { hostBlock: hostControlBlock(controls, {}) }).code,
   },
   { name: SAVINGS_OFF, group: 'project: savings off', spp: 1, code: () => pasteForm(composed('savings-off.glsl', BENCH_DIR)) },
+  { name: ONE_TRACE_SITE, group: 'project: one trace site', spp: 1, code: () => pasteForm(composed('one-trace-site.glsl', BENCH_DIR)) },
   { name: 'assignment (peer 1)', group: 'peer: assignment', spp: 1, code: () => peer('assignment.glsl') },
   ...[32, 64, 128, 256].map((steps) => ({ name: sphereTracing(steps), group: 'peer: sphere tracing', spp: 1, code: () => peer('sdf.glsl', `#define MAX_STEPS ${steps}\n`) })),
   { name: PLAIN, group: 'peer: plain analytic', spp: 1, code: () => peer('plain.glsl') },

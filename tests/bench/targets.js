@@ -14,6 +14,7 @@ const ms = (r) => `${r.medianMs.toFixed(1)} ms`;
 export const PROJECT = 'project, 1 spp';
 export const PAGE_FORM = 'project, page form (uniforms), 1 spp';
 export const SAVINGS_OFF = 'project, savings off';
+export const ONE_TRACE_SITE = 'project, one trace site (alternating loop)';
 export const PLAIN = 'plain analytic (peer 3)';
 export const sphereTracing = (steps) => `sphere tracing, ${steps} steps (peer 2)`;
 
@@ -47,9 +48,12 @@ export function evaluateTargets(results) {
     text: `the page's form with uniforms takes ${x(page.medianMs, ours.medianMs)} the paste form's time (${ms(page)} against ${ms(ours)}) (target: at most 1.2×)`,
   });
 
-  // 4. Every project variant at 1 spp on the Pareto front, and "savings off" slower than the default.
+  // 4. Every project variant at 1 spp on the Pareto front (its quality settings; not the other
+  //    forms of the same image: savings off, one trace site, the uniform form), and "savings
+  //    off" slower than the default.
   const front = new Set(paretoFront(results).map((r) => r.name));
-  const off = front.size && results.filter((r) => r.group.startsWith('project') && r.samplesPerPixel === 1 && r.name !== SAVINGS_OFF && r.name !== PAGE_FORM && !front.has(r.name));
+  const otherForms = new Set([SAVINGS_OFF, ONE_TRACE_SITE, PAGE_FORM]);
+  const off = results.filter((r) => r.group.startsWith('project') && r.samplesPerPixel === 1 && !otherForms.has(r.name) && !front.has(r.name));
   targets.push({
     met: off.length === 0,
     text: off.length === 0 ? 'every project variant at 1 spp is on the Pareto front (target: all)' : `project variants at 1 spp not on the Pareto front: ${off.map((r) => `${r.name} (${ms(r)}, RMSE ${r.rmse.toFixed(4)})`).join('; ')} (target: none)`,
