@@ -1,6 +1,7 @@
-// Vite serves the page from src/ (index.html lives there); the shader is imported from ../shaders
-// with `?raw`, static files come from ../public (examples/*.glsl among them), and the build goes
-// to ../dist.
+// Vite serves the page from src/page/ (index.html lives there). The page imports the Shadertoy
+// contract from src/shadertoy/ and never the float64 reference (src/reference/); the shader
+// comes from shaders/ with `?raw`, static files from public/ (examples/*.glsl among them), and
+// the build goes to dist/.
 //
 // The glsl-files plugin makes every shader a URL the page can load with ?shader=: public/**.glsl
 // are static files anyway, and shaders/*.glsl are served (and copied into the build) as
@@ -61,7 +62,7 @@ function glslFiles() {
 }
 
 export default defineConfig({
-  root: `${repo}src`,
+  root: `${repo}src/page`,
   publicDir,
   plugins: [glslFiles()],
   server: {

@@ -11,7 +11,7 @@
 
 // ---- controls --------------------------------------------------------------------------------
 // Shadertoy compiles this block as it stands; a host defines HOST_CONTROLS and declares the same
-// names itself (a #define is compile-time, a const becomes a uniform). Syntax: src/controls.js.
+// names itself (a #define is compile-time, a const becomes a uniform). Syntax: src/shadertoy/controls.js.
 #ifndef HOST_CONTROLS
 #define SAMPLES 1                                      // ui: Samples per pixel | 1, 4, 9, 16
 #define BOUNCES 3                                      // ui: Reflection bounce limit | 0 .. 4

@@ -9,7 +9,7 @@
 import fs from 'node:fs';
 import path from 'node:path';
 import { renderReference } from '../src/reference/render.js';
-import { imageError } from '../src/error.js';
+import { imageError } from '../src/reference/error.js';
 import { REPO_ROOT, SHADER_FILE, disconnect, renderView, startHarness, useHarness } from './harness.js';
 import { HARD_VIEWS, HARD_VIEW_SIZE, referenceView } from './hard-views.js';
 import { replaceMarkedSection } from './readme-section.js';

@@ -1,5 +1,5 @@
 import { describe, expect, test } from 'vitest';
-import { ControlBlockError, coerceControlValue, controlDefaults, parseControls } from '../src/controls.js';
+import { ControlBlockError, coerceControlValue, controlDefaults, parseControls } from '../src/shadertoy/controls.js';
 
 const BLOCK = `// a shader
 #define HELPER 2

@@ -1,6 +1,6 @@
 // Hard views, as data: each is rendered by the real page (float32 on SwiftShader) and by the
 // float64 reference (src/reference/render.js) with the same rays, and compared with the error
-// module (src/error.js). Parameters are the page's URL contract (tests/views.js).
+// module (src/reference/error.js). Parameters are the page's URL contract (tests/views.js).
 //
 // MAX_OVER_2: at most 0.01% of pixels may be off by more than 2/255 against the same-ray
 // reference. With identical rays, what is left is float32 arithmetic: a ray that grazes a

@@ -3,9 +3,9 @@
 // by more than 2/255 (acne or speckle would put whole areas there).
 import fs from 'node:fs';
 import { afterAll, describe, expect, test } from 'vitest';
-import { parseControls } from '../src/controls.js';
+import { parseControls } from '../src/shadertoy/controls.js';
 import { renderReference } from '../src/reference/render.js';
-import { imageError, formatImageError } from '../src/error.js';
+import { imageError, formatImageError } from '../src/reference/error.js';
 import { SHADER_FILE, assertNotBlank, disconnect, renderView } from './harness.js';
 import { viewControlProblems } from './views.js';
 import { HARD_VIEWS, HARD_VIEW_SIZE, MAX_OVER_2, referenceView } from './hard-views.js';

@@ -4,7 +4,7 @@ import fs from 'node:fs';
 import os from 'node:os';
 import path from 'node:path';
 import { describe, expect, test } from 'vitest';
-import { composeImageShader } from '../src/shadertoy.js';
+import { composeImageShader } from '../src/shadertoy/header.js';
 import {
   allowedDiffPixels,
   blankReason,

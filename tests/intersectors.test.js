@@ -7,7 +7,7 @@
 
 import fs from 'node:fs';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
-import { SHADERTOY_HEADER } from '../src/shadertoy.js';
+import { SHADERTOY_HEADER } from '../src/shadertoy/header.js';
 import { intersectPlane, intersectSphere, intersectBox, intersectCone } from '../src/reference/intersectors.js';
 import { INTERSECTOR_CASES } from './intersector-cases.js';
 import { SHADER_FILE, disconnect, evaluateFloatShader } from './harness.js';

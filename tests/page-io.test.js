@@ -7,7 +7,7 @@ import os from 'node:os';
 import path from 'node:path';
 import { PNG } from 'pngjs';
 import { afterAll, describe, expect, test } from 'vitest';
-import { composeImageShader } from '../src/shadertoy.js';
+import { composeImageShader } from '../src/shadertoy/header.js';
 import { REPO_ROOT, SHADER_FILE, disconnect, renderRawShader, startWatchingServer } from './harness.js';
 import { EXAMPLES_DIR, button, exampleSource, info, overlayText, pixel, readPixels, withPage } from './page-helpers.js';
 

@@ -4,7 +4,7 @@
 // Shadertoy's header in a raw WebGL2 context with the same uniforms. The inspector then checks
 // each input's semantics against real pointer, touch and keyboard input.
 import { afterAll, describe, expect, test } from 'vitest';
-import { composeImageShader } from '../src/shadertoy.js';
+import { composeImageShader } from '../src/shadertoy/header.js';
 import { allowedDiffPixels, assertNotBlank, compareImages, disconnect, renderRawShader, writePng, OUTPUT_DIR } from './harness.js';
 import {
   canvasBox,

@@ -2,7 +2,7 @@
 // (SwiftShader), must match tests/golden/<name>.png within the tolerance written in views.js.
 import fs from 'node:fs';
 import { afterAll, describe, expect, test } from 'vitest';
-import { parseControls } from '../src/controls.js';
+import { parseControls } from '../src/shadertoy/controls.js';
 import { SHADER_FILE, assertNotBlank, compareImages, disconnect, expectMatchesGolden, renderView } from './harness.js';
 import { MAX_DIFF_FRACTION, PAIR_MIN_FACTOR, VIEWS, viewControlProblems } from './views.js';
 

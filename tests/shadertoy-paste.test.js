@@ -6,7 +6,7 @@
 import fs from 'node:fs';
 import path from 'node:path';
 import { afterAll, expect, test } from 'vitest';
-import { composeImageShader } from '../src/shadertoy.js';
+import { composeImageShader } from '../src/shadertoy/header.js';
 import {
   OUTPUT_DIR,
   REPO_ROOT,

@@ -1,5 +1,5 @@
 import { describe, expect, test } from 'vitest';
-import { parseControls } from '../src/controls.js';
+import { parseControls } from '../src/shadertoy/controls.js';
 import {
   HOST_CONTROLS_MACRO,
   SHADERTOY_FOOTER,
@@ -7,7 +7,7 @@ import {
   SHADERTOY_UNIFORMS,
   composeImageShader,
   hostControlBlock,
-} from '../src/shadertoy.js';
+} from '../src/shadertoy/header.js';
 
 const SOURCE = 'void mainImage(out vec4 c, in vec2 f) {\n    c = vec4(f / iResolution.xy, 0.0, 1.0);\n}\n';
 

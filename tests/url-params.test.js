@@ -1,8 +1,8 @@
-// The URL contract (src/url-params.js) without a browser: what each parameter reads as, that bad
+// The URL contract (src/page/url-params.js) without a browser: what each parameter reads as, that bad
 // values are clamped or ignored with a warning naming them, and that formatUrlParams writes what
 // parseUrlParams reads back.
 import { describe, expect, test } from 'vitest';
-import { MAX_PIXELS, clampSize, formatUrlParams, parseUrlParams } from '../src/url-params.js';
+import { MAX_PIXELS, clampSize, formatUrlParams, parseUrlParams } from '../src/page/url-params.js';
 
 const BASE = 'http://127.0.0.1:5173/';
 

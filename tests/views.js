@@ -6,7 +6,7 @@
 // a shader control from the control block of shaders/raytrace.glsl (tests/views.test.js checks
 // that every such NAME exists there and that the value is inside its range).
 
-import { coerceControlValue } from '../src/controls.js';
+import { coerceControlValue } from '../src/shadertoy/controls.js';
 
 export const DEFAULT_SIZE = [320, 180];
 

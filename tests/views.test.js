@@ -3,7 +3,7 @@
 // renamed or re-ranged control fails here, loudly, instead of silently rendering the default.
 import fs from 'node:fs';
 import { describe, expect, test } from 'vitest';
-import { parseControls } from '../src/controls.js';
+import { parseControls } from '../src/shadertoy/controls.js';
 import { GOLDEN_DIR, SHADER_FILE } from './harness.js';
 import { MAX_DIFF_FRACTION, PIXEL_THRESHOLD, VIEWS, viewControlProblems, viewQuery, viewSize } from './views.js';
 

@@ -8,7 +8,7 @@
 // - 'converged': many stratified, jittered samples per pixel and the texture point-sampled, so
 //   the difference is the shader's total error, aliasing included.
 
-import { parseControls, parseConstants, controlDefaults, coerceControlValue } from '../controls.js';
+import { parseControls, parseConstants, controlDefaults, coerceControlValue } from '../shadertoy/controls.js';
 import { intersectPlane, intersectSphere, intersectBox, intersectCone } from './intersectors.js';
 import { add, sub, scale, addScaled, dot, length, normalize, reflect, mix } from './vec3.js';
 

@@ -9,7 +9,7 @@
 //   npm run bench:branches        (640x360, median of 9 interleaved frames)
 
 import fs from 'node:fs';
-import { composeImageShader } from '../../src/shadertoy.js';
+import { composeImageShader } from '../../src/shadertoy/header.js';
 import { SHADER_FILE, disconnect, startHarness, timeShaders, useHarness } from '../harness.js';
 
 const CALLS = 60;

@@ -17,14 +17,14 @@
 // last frame is compared with the converged float64 reference
 // of the project's scene at its default settings (src/reference/, 64 jittered samples per pixel
 // at 640x360, 16 at 1280x720, texture point-sampled): RMSE and the fraction of pixels off by
-// more than 2/255 (src/error.js). Writes tests/bench/results.json, results.md, chart.svg, and
+// more than 2/255 (src/reference/error.js). Writes tests/bench/results.json, results.md, chart.svg, and
 // the table in README.md.
 
 import fs from 'node:fs';
 import path from 'node:path';
-import { composeImageShader, hostControlBlock } from '../../src/shadertoy.js';
-import { parseControls } from '../../src/controls.js';
-import { imageError } from '../../src/error.js';
+import { composeImageShader, hostControlBlock } from '../../src/shadertoy/header.js';
+import { parseControls } from '../../src/shadertoy/controls.js';
+import { imageError } from '../../src/reference/error.js';
 import { REPO_ROOT, SHADER_FILE, disconnect, startHarness, timeShaders, useHarness } from '../harness.js';
 import { replaceMarkedSection } from '../readme-section.js';
 import { composePeer } from './peers/compose-peer.js';

@@ -3,8 +3,8 @@
 // compiled in Shadertoy's header and drawn in the harness's Chromium (SwiftShader).
 import fs from 'node:fs';
 import { afterAll, describe, expect, test } from 'vitest';
-import { composeImageShader, hostControlBlock } from '../../../src/shadertoy.js';
-import { parseControls } from '../../../src/controls.js';
+import { composeImageShader, hostControlBlock } from '../../../src/shadertoy/header.js';
+import { parseControls } from '../../../src/shadertoy/controls.js';
 import { assertNotBlank, disconnect, mapShaderLog, renderRawShader } from '../../harness.js';
 import { ComposePeerError, composePeer, replacedNames, scanTopLevel } from './compose-peer.js';
 

@@ -40,7 +40,7 @@
 //     1e-5: 22 / 10 / 4.8% (tighter thresholds spend the steps converging, and more grazing rays
 //     run out). 1e-4 is best or within 1.5 points of the best at every limit.
 // BOUNCES, SHADOWS, SAMPLES, TEXTURE, TEXTURE_FILTER are the project's controls: set them the
-// project's way (hostControlBlock with #define HOST_CONTROLS, see src/shadertoy.js).
+// project's way (hostControlBlock with #define HOST_CONTROLS, see src/shadertoy/header.js).
 //
 // The project's intersectors, Cone and makeCone stay in the composed shader: makeCone fills the
 // Scene's cone (only its base is read here); the intersectors are unused.

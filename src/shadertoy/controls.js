@@ -21,7 +21,7 @@
 // `toggle` (0 or 1), or a comma list of choices (numbers are the values themselves; words are
 // labels whose values are 0, 1, 2, ...).
 
-import { HOST_CONTROLS_MACRO } from './shadertoy.js';
+import { HOST_CONTROLS_MACRO } from './header.js';
 
 const VECTOR_SIZES = { float: 1, int: 1, bool: 1, vec2: 2, vec3: 3, vec4: 4 };
 const NUMBER = String.raw`[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?`;

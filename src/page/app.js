@@ -2,8 +2,8 @@
 // the canvas size, and when to draw. While playing it draws every animation frame; while paused
 // it draws on demand (a control change, a resize, the mouse), once per request.
 
-import { coerceControlValue, controlDefaults, parseControls } from './controls.js';
-import { hostControlBlock } from './shadertoy.js';
+import { coerceControlValue, controlDefaults, parseControls } from '../shadertoy/controls.js';
+import { hostControlBlock } from '../shadertoy/header.js';
 import { ShaderRenderer } from './renderer.js';
 import { ShadertoyInputs, writeUniforms } from './shadertoy-inputs.js';
 import { clampSize } from './url-params.js';

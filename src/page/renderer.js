@@ -3,8 +3,8 @@
 // never replaces the last one that worked.
 
 import * as THREE from 'three';
-import { composeImageShader } from './shadertoy.js';
-import { formatShaderMessages, parseShaderLog, userLineOffset } from './shader-errors.js';
+import { composeImageShader } from '../shadertoy/header.js';
+import { formatShaderMessages, parseShaderLog, userLineOffset } from '../shadertoy/shader-errors.js';
 
 export class WebGL2UnavailableError extends Error {
   constructor() {

@@ -1,8 +1,8 @@
 // Entry point: reads the URL, starts the raytracer on the page's canvas with shaders/raytrace.glsl
 // (or the shader named by ?shader=), builds the page's widgets (toolbar, panel, editor), and
-// installs window.raytracer (src/automation.js).
+// installs window.raytracer (src/page/automation.js).
 
-import builtinSource from '../shaders/raytrace.glsl?raw';
+import builtinSource from '../../shaders/raytrace.glsl?raw';
 import { RaytracerApp } from './app.js';
 import { installAutomation, installFailedAutomation } from './automation.js';
 import { Overlay } from './overlay.js';
@@ -87,7 +87,7 @@ const app = start();
 // built-in one through its `?raw` import, a ?shader= file through the dev server's
 // glsl-file-changed event (vite.config.js). A shader edited in the page's editor is left alone.
 if (import.meta.hot) {
-  import.meta.hot.accept('../shaders/raytrace.glsl?raw', (module) => {
+  import.meta.hot.accept('../../shaders/raytrace.glsl?raw', (module) => {
     if (!app || !module || app.origin !== 'builtin') return;
     app.setSource(module.default).catch(() => {});
   });
