@@ -7,6 +7,7 @@ import { hostControlBlock } from '../shadertoy/header.js';
 import { ShaderRenderer } from './renderer.js';
 import { ShadertoyInputs, writeUniforms } from './shadertoy-inputs.js';
 import { clampSize } from './url-params.js';
+import { flipRows } from './pixels.js';
 
 /**
  * How long the live controls must rest before the shader is recompiled with them as constants.
@@ -18,13 +19,6 @@ import { clampSize } from './url-params.js';
  */
 export const SPECIALIZE_AFTER_MS = 400;
 
-/** GL rows run bottom to top; images run top to bottom. */
-export function flipRows(pixels, width, height) {
-  const row = width * 4;
-  const out = new Uint8Array(pixels.length);
-  for (let y = 0; y < height; y++) out.set(pixels.subarray((height - 1 - y) * row, (height - y) * row), y * row);
-  return out;
-}
 
 export class RaytracerApp {
   /**

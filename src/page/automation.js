@@ -32,19 +32,8 @@
 // setControls() sees the new values.
 
 import { fetchShader, shaderName } from './shader-loader.js';
-import { flipRows } from './app.js';
-
-function toBase64(bytes) {
-  let binary = '';
-  for (let i = 0; i < bytes.length; i += 0x8000) binary += String.fromCharCode.apply(null, bytes.subarray(i, i + 0x8000));
-  return btoa(binary);
-}
-
-function median(values) {
-  const sorted = [...values].sort((a, b) => a - b);
-  const mid = sorted.length >> 1;
-  return sorted.length % 2 ? sorted[mid] : (sorted[mid - 1] + sorted[mid]) / 2;
-}
+import { flipRows, toBase64 } from './pixels.js';
+import { median } from './stats.js';
 
 /**
  * @param {import('./app.js').RaytracerApp | null} app null when the page could not start

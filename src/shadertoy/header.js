@@ -60,6 +60,23 @@ export const SHADERTOY_UNIFORMS = Object.freeze({
   iChannel3: 'sampler2D',
 });
 
+/**
+ * The values of Shadertoy's uniforms on a shader's first frame, before any time has passed or
+ * any input arrived: what the page writes at time 0 and what the raw test pages set. The clock
+ * ticks at a nominal 60 Hz until real frames give a rate; iDate is the clock's own. Empty
+ * channels are 0 × 0 (they sample black).
+ */
+export const FIRST_FRAME_UNIFORMS = Object.freeze({
+  iTime: 0,
+  iTimeDelta: 1 / 60,
+  iFrameRate: 60,
+  iFrame: 0,
+  iMouse: Object.freeze([0, 0, 0, 0]),
+  iSampleRate: 44100,
+  iChannelTime: Object.freeze([0, 0, 0, 0]),
+  iChannelResolution: Object.freeze(new Array(12).fill(0)),
+});
+
 /** The macro a host defines to switch off a shader's own control defaults (see controls.js). */
 export const HOST_CONTROLS_MACRO = 'HOST_CONTROLS';
 
