@@ -3,7 +3,7 @@
 // never replaces the last one that worked.
 
 import * as THREE from 'three';
-import { composeImageShader } from '../shadertoy/header.js';
+import { FIRST_FRAME_UNIFORMS, SHADERTOY_UNIFORMS, composeImageShader } from '../shadertoy/header.js';
 import { formatShaderMessages, parseShaderLog, userLineOffset } from '../shadertoy/shader-errors.js';
 
 export class WebGL2UnavailableError extends Error {
@@ -45,25 +45,30 @@ function blackTexture() {
   return texture;
 }
 
+/**
+ * Three.js uniform objects for every uniform Shadertoy declares (SHADERTOY_UNIFORMS), holding
+ * their first-frame values (FIRST_FRAME_UNIFORMS; zeros for iResolution and iDate, which every
+ * frame writes before it draws). Arrays are flat (vec3[4]: 12 numbers); every channel samples
+ * the 1×1 black texture and reports 0 × 0, as an empty one does on Shadertoy.
+ * @returns {Record<string, {value: any}>}
+ */
 function shadertoyUniforms() {
   const black = blackTexture();
-  return {
-    iResolution: { value: new THREE.Vector3(1, 1, 1) },
-    iTime: { value: 0 },
-    iTimeDelta: { value: 0 },
-    iFrameRate: { value: 0 },
-    iFrame: { value: 0 },
-    iMouse: { value: new THREE.Vector4() },
-    iDate: { value: new THREE.Vector4() },
-    iSampleRate: { value: 44100 },
-    iChannelTime: { value: [0, 0, 0, 0] },
-    // vec3[4], flat. An empty channel reports 0 × 0, as on Shadertoy (it samples black).
-    iChannelResolution: { value: [0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0] },
-    iChannel0: { value: black },
-    iChannel1: { value: black },
-    iChannel2: { value: black },
-    iChannel3: { value: black },
-  };
+  const firstFrame = /** @type {Readonly<Record<string, number | readonly number[]>>} */ (FIRST_FRAME_UNIFORMS);
+  /** @type {Record<string, {value: any}>} */
+  const uniforms = {};
+  for (const [name, type] of Object.entries(SHADERTOY_UNIFORMS)) {
+    const first = firstFrame[name];
+    let value;
+    if (type === 'sampler2D') value = black;
+    else if (type === 'vec3') value = new THREE.Vector3().fromArray(Array.isArray(first) ? first : [0, 0, 0]);
+    else if (type === 'vec4') value = new THREE.Vector4().fromArray(Array.isArray(first) ? first : [0, 0, 0, 0]);
+    else if (type.endsWith(']') && Array.isArray(first)) value = [...first]; // float[4], vec3[4] (flat)
+    else if ((type === 'float' || type === 'int') && typeof first === 'number') value = first;
+    else throw new Error(`no first-frame value for Shadertoy's ${type} ${name}`);
+    uniforms[name] = { value };
+  }
+  return uniforms;
 }
 
 export class ShaderRenderer {

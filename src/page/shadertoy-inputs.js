@@ -11,7 +11,12 @@
 // is the real rate at which frames are drawn. iFrame counts drawn frames from 0 (restart() sets
 // it and iTime back to 0).
 
-const NOMINAL_DELTA = 1 / 60; // iTimeDelta for the first frame and for renders while paused
+import { FIRST_FRAME_UNIFORMS } from '../shadertoy/header.js';
+
+/** iTimeDelta for the first frame and for renders while paused (a nominal 60 Hz tick). */
+const NOMINAL_DELTA = FIRST_FRAME_UNIFORMS.iTimeDelta;
+/** iFrameRate until two frames give a real rate, and while paused. */
+const NOMINAL_RATE = FIRST_FRAME_UNIFORMS.iFrameRate;
 
 export class ShadertoyInputs {
   constructor() {
@@ -20,7 +25,7 @@ export class ShadertoyInputs {
     this.playing = true;
     this.frame = 0;
     this.delta = NOMINAL_DELTA;
-    this.frameRate = 1 / NOMINAL_DELTA;
+    this.frameRate = NOMINAL_RATE;
     /** The values the last drawn frame used (a screenshot draws that frame again). */
     this.last = null;
     this._lastNow = null;
@@ -119,12 +124,12 @@ export class ShadertoyInputs {
         this.time += this.delta;
       } else {
         this.delta = NOMINAL_DELTA * this.speed;
-        this.frameRate = 1 / NOMINAL_DELTA;
+        this.frameRate = NOMINAL_RATE;
       }
       this._lastNow = now;
     } else {
       this.delta = NOMINAL_DELTA;
-      this.frameRate = 1 / NOMINAL_DELTA;
+      this.frameRate = NOMINAL_RATE;
     }
 
     const date = new Date();
