@@ -23,6 +23,9 @@ const GROUND = [0, 1, 0, 0];
 /**
  * The values a render uses: the shader's control defaults with `overrides` applied (coerced as
  * the page coerces URL values; unknown names throw), and its material constants.
+ * @param {string} shaderSource
+ * @param {Record<string, unknown>} [overrides]
+ * @returns {Record<string, any>} values by name
  */
 export function referenceSettings(shaderSource, overrides = {}) {
   const controls = parseControls(shaderSource);
@@ -67,6 +70,7 @@ function makeScene(s) {
     [ID_CUBE]: s.CUBE_REFLECTIVITY,
     [ID_CONE]: s.CONE_REFLECTIVITY,
   };
+  /** @type {Array<[number, (ro: number[], rd: number[]) => readonly number[]]>} */
   const objects = [
     [ID_GROUND, (ro, rd) => intersectPlane(ro, rd, GROUND)],
     [ID_SPHERE, (ro, rd) => intersectSphere(ro, rd, s.SPHERE_CENTER, s.SPHERE_RADIUS)],

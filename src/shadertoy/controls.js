@@ -30,6 +30,22 @@ const CONST_LINE = new RegExp(
   String.raw`^\s*const\s+(float|int|bool|vec2|vec3|vec4)\s+([A-Za-z_]\w*)\s*=\s*([^;]+);\s*//\s*ui:\s*(.*)$`,
 );
 
+/**
+ * One control of a control block, as parseControls returns it.
+ * @typedef {object} Control
+ * @property {string} name the GLSL name
+ * @property {'define' | 'uniform'} kind `#define` (compile-time) or `const` (a uniform in a host)
+ * @property {'float' | 'int' | 'bool' | 'vec2' | 'vec3' | 'vec4'} type
+ * @property {any} default the value in the shader: a number, a boolean, or an array of numbers
+ * @property {string} label
+ * @property {number} [min]
+ * @property {number} [max]
+ * @property {number} [step]
+ * @property {boolean} [toggle] shown as a checkbox (0 or 1)
+ * @property {Array<{label: string, value: number}>} [options] a list of choices
+ * @property {number} [line] the 1-based line of the shader that declares it
+ */
+
 export class ControlBlockError extends Error {
   constructor(message, line) {
     super(line ? `${message} (shader line ${line})` : message);
@@ -88,6 +104,8 @@ function parseAnnotation(text, line) {
  *   { name, kind: 'define'|'uniform', type, default, label, min?, max?, step?, toggle?, options?, line }
  * A shader without a block has no controls. Lines in the block without `// ui:` are left alone
  * (helper macros, comments).
+ * @param {string} source
+ * @returns {Control[]}
  */
 export function parseControls(source) {
   const lines = source.split('\n');
@@ -102,6 +120,7 @@ export function parseControls(source) {
     if (/^\s*#\s*if/.test(text)) depth++;
     if (/^\s*#\s*endif/.test(text) && --depth === 0) return controls;
     if (!/\/\/\s*ui:/.test(text)) continue;
+    /** @type {Control} */
     let control;
     const define = text.match(DEFINE_LINE);
     const constant = text.match(CONST_LINE);
@@ -111,7 +130,7 @@ export function parseControls(source) {
       control = { name: define[1], kind: 'define', type: isInt ? 'int' : 'float', default: value, ...parseAnnotation(define[3], lineNo) };
     } else if (constant) {
       const [, type, name, value, annotation] = constant;
-      control = { name, kind: 'uniform', type, default: parseValue(type, value, lineNo), ...parseAnnotation(annotation, lineNo) };
+      control = { name, kind: 'uniform', type: /** @type {Control['type']} */ (type), default: parseValue(type, value, lineNo), ...parseAnnotation(annotation, lineNo) };
     } else {
       throw new ControlBlockError(`cannot read control line "${text.trim()}"; expected "#define NAME number // ui: ..." or "const TYPE NAME = value; // ui: ..."`, lineNo);
     }
@@ -123,7 +142,11 @@ export function parseControls(source) {
   throw new ControlBlockError(`#ifndef ${HOST_CONTROLS_MACRO} has no matching #endif`, start + 1);
 }
 
-/** The defaults of a control list, as { name: value }. */
+/**
+ * The defaults of a control list, as { name: value }.
+ * @param {Control[]} controls
+ * @returns {Record<string, any>}
+ */
 export function controlDefaults(controls) {
   return Object.fromEntries(controls.map((c) => [c.name, c.default]));
 }
@@ -132,6 +155,9 @@ export function controlDefaults(controls) {
  * Brings a value for a control into its type and range: numbers are clamped, ints rounded,
  * choices snapped to a listed value. Returns undefined for a value that cannot be read
  * (the caller keeps the default and warns).
+ * @param {Control} control
+ * @param {unknown} value
+ * @returns {any} a number, a boolean, an array of numbers, or undefined
  */
 export function coerceControlValue(control, value) {
   const size = VECTOR_SIZES[control.type];
@@ -165,8 +191,11 @@ const PLAIN_CONST_LINE = /^const\s+(float|int|vec2|vec3|vec4)\s+([A-Za-z_]\w*)\s
  * control block (materials, shading constants). Lets a port of the shader (the float64
  * reference) read them instead of keeping copies. Lines whose value is an expression rather
  * than a literal are skipped.
+ * @param {string} source
+ * @returns {Record<string, number | number[]>}
  */
 export function parseConstants(source) {
+  /** @type {Record<string, number | number[]>} */
   const constants = {};
   source.split('\n').forEach((text, i) => {
     const match = text.match(PLAIN_CONST_LINE);

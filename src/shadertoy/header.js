@@ -80,26 +80,44 @@ export const FIRST_FRAME_UNIFORMS = Object.freeze({
 /** The macro a host defines to switch off a shader's own control defaults (see controls.js). */
 export const HOST_CONTROLS_MACRO = 'HOST_CONTROLS';
 
-function countLines(text) {
+/**
+ * The number of line breaks in `text` before `end`: the 0-based line on which `end` falls.
+ * @param {string} text
+ * @param {number} [end]
+ */
+export function countNewlines(text, end = text.length) {
   let n = 0;
-  for (let i = 0; i < text.length; i++) if (text.charCodeAt(i) === 10) n++;
+  for (let i = 0; i < end; i++) if (text.charCodeAt(i) === 10) n++;
   return n;
 }
 
+/**
+ * A GLSL float literal: keeps a decimal point (`2` would be an int in GLSL).
+ * @param {number} x
+ */
+const floatLiteral = (x) => (Number.isInteger(x) ? x.toFixed(1) : String(x));
+
+/**
+ * A compile-time control's value in a `#define`: bools as 1 or 0, floats as float literals.
+ * @param {unknown} value
+ * @param {string} type
+ */
 function formatDefineValue(value, type) {
   if (typeof value === 'boolean') return value ? '1' : '0';
-  // a float control keeps a float literal: `#define SCALE 2` would be an int in GLSL
-  if (type === 'float' && Number.isInteger(value)) return value.toFixed(1);
+  if (type === 'float' && typeof value === 'number') return floatLiteral(value);
   return String(value);
 }
 
-/** A GLSL literal of a control's type: floats keep a decimal point, vectors their constructor. */
+/**
+ * A GLSL literal of a control's type: floats keep a decimal point, vectors their constructor.
+ * @param {any} value a number, a boolean, or an array of numbers
+ * @param {string} type
+ */
 export function glslLiteral(value, type) {
   if (type === 'bool') return value ? 'true' : 'false';
-  const float = (x) => (Number.isInteger(x) ? x.toFixed(1) : String(x));
   if (type === 'int') return String(Math.round(value));
-  if (type === 'float') return float(value);
-  return `${type}(${value.map(float).join(', ')})`;
+  if (type === 'float') return floatLiteral(value);
+  return `${type}(${value.map(floatLiteral).join(', ')})`;
 }
 
 /**
@@ -107,8 +125,8 @@ export function glslLiteral(value, type) {
  * `#define`s with their current values, live controls become uniforms — or, given
  * `liveValues`, constants with those values: the shader exactly as it would be pasted with
  * them, which the compiler can fold (the page compiles this form while the controls are still).
- * @param {Array<{name:string, kind:'define'|'uniform', type:string}>} controls from parseControls
- * @param {Record<string, unknown>} defineValues current values of the compile-time controls
+ * @param {import('./controls.js').Control[]} controls from parseControls
+ * @param {Record<string, unknown>} defineValues current values of the compile-time controls (other names are ignored)
  * @param {Record<string, unknown> | null} [liveValues] values to compile the live controls as constants
  */
 export function hostControlBlock(controls, defineValues = {}, liveValues = null) {
@@ -138,6 +156,6 @@ export function composeImageShader(source, { hostBlock = '' } = {}) {
   const before = SHADERTOY_HEADER + hostBlock;
   return {
     code: before + source + (source.endsWith('\n') ? '' : '\n') + SHADERTOY_FOOTER,
-    firstSourceLine: countLines(before) + 1,
+    firstSourceLine: countNewlines(before) + 1,
   };
 }

@@ -5,11 +5,7 @@
 // A log line such as `ERROR: 0:57: 'x' : undeclared identifier` counts lines of all of that, so
 // we find where the file starts in the source the GPU actually received and subtract.
 
-function countNewlines(text, end = text.length) {
-  let n = 0;
-  for (let i = 0; i < end; i++) if (text.charCodeAt(i) === 10) n++;
-  return n;
-}
+import { countNewlines } from './header.js';
 
 /**
  * How many lines come before the user's first line in `compiledSource` (what
