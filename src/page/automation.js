@@ -26,7 +26,7 @@
 //                         controls: {NAME: value}, fileName, shaderUrl, origin, contextLost,
 //                         compiled (successful compiles so far), liveControls ('constants' while
 //                         the shader on screen has the live controls compiled in, 'uniforms'
-//                         while they move: see SPECIALIZE_AFTER_MS in app.js)}
+//                         while they move: see live-controls.js)}
 //
 // Every method waits for `ready` and for any compile under way, so a call right after
 // setControls() sees the new values.
@@ -34,6 +34,9 @@
 import { fetchShader, shaderName } from './shader-loader.js';
 import { flipRows, toBase64 } from './pixels.js';
 import { median } from './stats.js';
+
+/** The window, with the hook. @type {Window & {raytracer?: object}} */
+const hooked = window;
 
 /**
  * @param {import('./app.js').RaytracerApp | null} app null when the page could not start
@@ -48,7 +51,7 @@ export function installAutomation(app, ready, ui) {
     await app.whenCompiled();
   };
 
-  window.raytracer = {
+  hooked.raytracer = {
     ready,
 
     async readPixels() {
@@ -96,8 +99,11 @@ export function installAutomation(app, ready, ui) {
     setSpeed: (speed) => app.setSpeed(speed),
     setMouse: (mouse) => app.setMouse(mouse),
 
+    // read in the same task as the frame was drawn (no preserveDrawingBuffer)
     async nextFrame() {
-      const { width, height, pixels, iFrame } = await app.nextFrame();
+      const { width, height, pixels, iFrame } = await new Promise((resolve) =>
+        app.once('drawn', () => resolve({ width: app.renderer.width, height: app.renderer.height, pixels: app.renderer.readPixels(), iFrame: app.inputs.last.frame })),
+      );
       return { width, height, iFrame, data: toBase64(flipRows(pixels, width, height)) };
     },
 
@@ -140,7 +146,7 @@ export function installAutomation(app, ready, ui) {
         origin: app.origin,
         contextLost: app.renderer.contextLost,
         compiled: app.compiled,
-        liveControls: app.liveAsConstants ? 'constants' : 'uniforms',
+        liveControls: app.liveForm.asConstants ? 'constants' : 'uniforms',
       };
     },
   };
@@ -151,7 +157,7 @@ export function installFailedAutomation(error) {
   const failed = Promise.reject(error);
   failed.catch(() => {}); // reported on the page
   const fail = async () => failed;
-  window.raytracer = {
+  hooked.raytracer = {
     ready: failed,
     readPixels: fail,
     renderFrames: fail,

@@ -1,6 +1,7 @@
 // Entry point: reads the URL, starts the raytracer on the page's canvas with shaders/raytrace.glsl
-// (or the shader named by ?shader=), builds the page's widgets (toolbar, panel, editor), and
-// installs window.raytracer (src/page/automation.js).
+// (or the shader named by ?shader=), shows what the app reports (the overlay, the data-*
+// attributes), builds the page's widgets (toolbar, panel, editor), and installs window.raytracer
+// (src/page/automation.js).
 
 import builtinSource from '../../shaders/raytrace.glsl?raw';
 import { RaytracerApp } from './app.js';
@@ -12,31 +13,82 @@ import { installUi } from './ui.js';
 
 const BUILTIN_NAME = 'shaders/raytrace.glsl';
 
-/** The page could not start (no WebGL2, most likely): say so on the page, not in a blank one. */
+/** @typedef {{title: string, detail: string}} Notice */
+/** @typedef {{source: string, from: {name: string, origin: 'builtin' | 'url', url?: string}, notice?: Notice}} FirstSource */
+
+/**
+ * The page could not start (no WebGL2, most likely): say so on the page, not in a blank one.
+ * @param {Overlay} overlay
+ * @param {Error} error
+ */
 function showStartupFailure(overlay, error) {
   const noWebGL2 = error.name === 'WebGL2UnavailableError';
   document.documentElement.dataset.error = noWebGL2 ? 'webgl2' : 'startup';
   overlay.show(noWebGL2 ? 'WebGL2 is not available' : 'The raytracer could not start', error.message);
 }
 
-/** The first source: the ?shader= file, or the built-in raytracer (also when that file cannot be had). */
-async function initialSource(app, params) {
+/**
+ * Shows what the app reports: compile errors, an unreadable control block and a lost context in
+ * the overlay; and, for the tests and the automation, data-error="shader-compile" on <html>
+ * while no shader could run, data-context="lost" while the GPU context is gone, and on the
+ * canvas data-frame, the number of frames drawn.
+ * @param {RaytracerApp} app
+ * @param {Overlay} overlay
+ * @returns {(notice: Notice) => void} shows a notice once the next compile succeeds (instead of
+ *   hiding the overlay)
+ */
+function showAppOnPage(app, overlay) {
+  const root = document.documentElement.dataset;
+  /** @type {Notice | null} */
+  let pending = null;
+  app.on('compile', (_, error, fileName) => {
+    if (error) {
+      const fallback = app.renderer.hasProgram ? ' (still showing the last version that compiled)' : '';
+      overlay.show(`${fileName} did not compile${fallback}`, error.report ?? error.message);
+      if (!app.renderer.hasProgram) root.error = 'shader-compile';
+      return;
+    }
+    if (app.notice) overlay.show(`Control block of ${fileName} not read`, app.notice);
+    else if (pending) overlay.show(pending.title, pending.detail);
+    else overlay.hide();
+    pending = null;
+    delete root.error;
+  });
+  app.on('context', (_, lost) => {
+    if (lost) {
+      root.context = 'lost';
+      overlay.show('The GPU context was lost', 'The browser took the graphics context away (a driver reset, or too many pages using the GPU). The picture comes back when the browser restores it.');
+    } else {
+      delete root.context;
+    }
+  });
+  app.on('drawn', () => (app.canvas.dataset.frame = String(app.framesRendered)));
+  return (notice) => (pending = notice);
+}
+
+/**
+ * The first source: the ?shader= file, or the built-in raytracer (also when that file cannot be
+ * had: then with a notice that says so).
+ * @param {{shader?: string}} params
+ * @returns {Promise<FirstSource>}
+ */
+async function initialSource(params) {
   if (!params.shader) return { source: builtinSource, from: { name: BUILTIN_NAME, origin: 'builtin' } };
   try {
     const source = await fetchShader(params.shader);
     return { source, from: { name: shaderName(params.shader), origin: 'url', url: params.shader } };
   } catch (error) {
     console.warn(`URL parameter shader=${params.shader}: ${error.message}`);
-    app.pendingNotice = {
+    const notice = {
       title: `Could not load ${params.shader}`,
       detail: `${error.message}\nShowing the built-in raytracer (${BUILTIN_NAME}) instead.`,
     };
-    return { source: builtinSource, from: { name: BUILTIN_NAME, origin: 'builtin' } };
+    return { source: builtinSource, from: { name: BUILTIN_NAME, origin: 'builtin' }, notice };
   }
 }
 
 function start() {
-  const canvas = document.getElementById('view');
+  const canvas = /** @type {HTMLCanvasElement} */ (document.getElementById('view'));
   const overlay = new Overlay(document.getElementById('overlay'));
   const params = parseUrlParams(location.search, location.href);
   for (const warning of params.warnings) console.warn(warning);
@@ -45,7 +97,6 @@ function start() {
   try {
     app = new RaytracerApp({
       canvas,
-      overlay,
       fileName: params.shader ? shaderName(params.shader) : BUILTIN_NAME,
       size: params.size ?? null,
       scale: params.scale ?? 1,
@@ -58,6 +109,7 @@ function start() {
     return null;
   }
 
+  const noticeAfterCompile = showAppOnPage(app, overlay);
   if (params.time !== undefined) app.inputs.setTime(params.time);
   if (params.speed !== undefined) app.inputs.setSpeed(params.speed);
   if (params.mouse) app.inputs.setMouse(params.mouse);
@@ -72,7 +124,8 @@ function start() {
     });
   });
 
-  app.loading = initialSource(app, params).then(({ source, from }) => {
+  app.loading = initialSource(params).then(({ source, from, notice }) => {
+    if (notice) noticeAfterCompile(notice);
     app.loadSource(source, from);
     app.applyControls(params.controls, 'URL');
     app.compile().catch(() => {}); // shown on the page; `ready` rejects

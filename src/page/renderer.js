@@ -5,6 +5,8 @@
 import * as THREE from 'three';
 import { FIRST_FRAME_UNIFORMS, SHADERTOY_UNIFORMS, composeImageShader } from '../shadertoy/header.js';
 import { formatShaderMessages, parseShaderLog, userLineOffset } from '../shadertoy/shader-errors.js';
+import { flipRows } from './pixels.js';
+import { writeUniforms } from './shadertoy-inputs.js';
 
 export class WebGL2UnavailableError extends Error {
   constructor() {
@@ -74,6 +76,7 @@ function shadertoyUniforms() {
 export class ShaderRenderer {
   /** @param {HTMLCanvasElement} canvas */
   constructor(canvas) {
+    /** @type {WebGLContextAttributes} */
     const attributes = { alpha: false, antialias: false, depth: false, stencil: false, preserveDrawingBuffer: false, powerPreference: 'high-performance' };
     const gl = canvas.getContext('webgl2', attributes);
     if (!gl) throw new WebGL2UnavailableError();
@@ -176,7 +179,7 @@ export class ShaderRenderer {
     await compiled;
 
     // Asking for the uniforms makes three.js check the program, calling onShaderError on failure.
-    const program = this.three.properties.get(material).currentProgram;
+    const program = /** @type {{currentProgram: {getUniforms: () => unknown}}} */ (this.three.properties.get(material)).currentProgram;
     const check = { source, body, firstBodyLine: firstSourceLine - 1, fileName, error: null };
     this._compiling = check;
     try {
@@ -267,8 +270,8 @@ export class ShaderRenderer {
     this._channels[index] = texture;
     this.uniforms[`iChannel${index}`].value = texture ?? this._black;
     const resolution = this.uniforms.iChannelResolution.value;
-    const width = image ? (image.naturalWidth ?? image.width) : 0;
-    const height = image ? (image.naturalHeight ?? image.height) : 0;
+    const width = image ? ('naturalWidth' in image ? image.naturalWidth : image.width) : 0;
+    const height = image ? ('naturalHeight' in image ? image.naturalHeight : image.height) : 0;
     resolution.splice(index * 3, 3, width, height, image ? 1 : 0);
   }
 
@@ -293,6 +296,23 @@ export class ShaderRenderer {
     } finally {
       this.three.setRenderTarget(null);
       target.dispose();
+    }
+  }
+
+  /**
+   * A drawn frame drawn again off screen at width × height: its uniforms written for that size
+   * (iMouse scaled with it), and put back after.
+   * @param {import('./shadertoy-inputs.js').FrameInputs} frame
+   * @param {number} width
+   * @param {number} height
+   * @returns {Uint8Array} RGBA8, rows top to bottom
+   */
+  redraw(frame, width, height) {
+    writeUniforms(this.uniforms, frame, { width, height });
+    try {
+      return flipRows(this.renderOffscreen(width, height), width, height);
+    } finally {
+      writeUniforms(this.uniforms, frame);
     }
   }
 

@@ -1,5 +1,6 @@
 // Getting a shader's text: from a URL the page's own server serves (?shader=, and a reload when
-// the dev server says the file changed), or from a file dropped on the page.
+// the dev server says the file changed), or from a file dropped on the page. And an image for a
+// channel, from a URL or a file.
 
 /** The name a shader goes by in messages and downloads: its URL's last path segment. */
 export function shaderName(url) {
@@ -30,6 +31,26 @@ export async function fetchShader(url) {
   const type = response.headers.get('content-type') ?? '';
   if (/text\/html/i.test(type) || /^\s*<!doctype html/i.test(text)) throw new Error('no such file (the server answered with a web page)');
   return text;
+}
+
+/**
+ * Loads and decodes an image for a channel.
+ * @param {string | Blob} source a URL, or a File or Blob (a dropped or chosen file)
+ * @returns {Promise<HTMLImageElement>} rejects with a readable reason when it is not an image
+ */
+export async function loadImage(source) {
+  const isUrl = typeof source === 'string';
+  const url = isUrl ? source : URL.createObjectURL(source);
+  try {
+    const image = new Image();
+    image.src = url;
+    await image.decode().catch(() => {
+      throw new Error(`cannot load ${isUrl ? source : 'name' in source ? source.name : 'the image'} as an image`);
+    });
+    return image;
+  } finally {
+    if (!isUrl) setTimeout(() => URL.revokeObjectURL(url), 0);
+  }
 }
 
 const SHADER_EXTENSIONS = /\.(glsl|frag|fs|fsh|txt|shader)$/i;

@@ -13,10 +13,23 @@
 
 import { FIRST_FRAME_UNIFORMS } from '../shadertoy/header.js';
 
-/** iTimeDelta for the first frame and for renders while paused (a nominal 60 Hz tick). */
+/** iTimeDelta for the first frame and for renders while paused (a nominal 60 Hz tick). @type {number} */
 const NOMINAL_DELTA = FIRST_FRAME_UNIFORMS.iTimeDelta;
-/** iFrameRate until two frames give a real rate, and while paused. */
+/** iFrameRate until two frames give a real rate, and while paused. @type {number} */
 const NOMINAL_RATE = FIRST_FRAME_UNIFORMS.iFrameRate;
+
+/**
+ * The inputs of one drawn frame, for a drawing buffer of width × height.
+ * @typedef {object} FrameInputs
+ * @property {number} width
+ * @property {number} height
+ * @property {number} time iTime
+ * @property {number} delta iTimeDelta
+ * @property {number} frameRate iFrameRate
+ * @property {number} frame iFrame
+ * @property {number[]} mouse iMouse: [x, y, z, w]
+ * @property {number[]} date iDate: [year, month (0-based), day, seconds since midnight]
+ */
 
 export class ShadertoyInputs {
   constructor() {
@@ -26,7 +39,7 @@ export class ShadertoyInputs {
     this.frame = 0;
     this.delta = NOMINAL_DELTA;
     this.frameRate = NOMINAL_RATE;
-    /** The values the last drawn frame used (a screenshot draws that frame again). */
+    /** The values the last drawn frame used (a screenshot draws that frame again). @type {FrameInputs | null} */
     this.last = null;
     this._lastNow = null;
     this._mouse = { x: 0, y: 0, clickX: 0, clickY: 0, down: false, clicked: false, pointerId: null };
@@ -59,7 +72,10 @@ export class ShadertoyInputs {
     this.speed = speed;
   }
 
-  /** Fixes iMouse to these four numbers (device pixels) until the next click. */
+  /**
+   * Fixes iMouse to these four numbers (device pixels) until the next click.
+   * @param {number[]} mouse [x, y, z, w]
+   */
   setMouse([x, y, z, w]) {
     this._fixedMouse = [x, y, z, w];
   }
@@ -104,7 +120,10 @@ export class ShadertoyInputs {
     canvas.addEventListener('pointercancel', release);
   }
 
-  /** The current iMouse as [x, y, z, w]. */
+  /**
+   * The current iMouse.
+   * @returns {number[]} [x, y, z, w]
+   */
   mouse() {
     if (this._fixedMouse) return this._fixedMouse.slice();
     const m = this._mouse;
@@ -114,6 +133,10 @@ export class ShadertoyInputs {
   /**
    * Advances the clock to `now` (ms, performance.now()) and writes every Shadertoy uniform for a
    * drawing buffer of width × height. Call endFrame() after drawing.
+   * @param {Record<string, {value: any}>} uniforms
+   * @param {number} width
+   * @param {number} height
+   * @param {number} now
    */
   beginFrame(uniforms, width, height, now) {
     if (this.playing) {
@@ -142,7 +165,7 @@ export class ShadertoyInputs {
       frameRate: this.frameRate,
       frame: this.frame,
       mouse: this.mouse(),
-      date: [date.getFullYear(), date.getMonth(), date.getDate(), (date - midnight) / 1000],
+      date: [date.getFullYear(), date.getMonth(), date.getDate(), (date.getTime() - midnight.getTime()) / 1000],
     };
     writeUniforms(uniforms, this.last);
   }
@@ -156,6 +179,9 @@ export class ShadertoyInputs {
 /**
  * Writes one frame's values into the uniforms. Used again by a screenshot, at another size:
  * then iMouse is scaled with the size, so that it points at the same place in the picture.
+ * @param {Record<string, {value: any}>} uniforms
+ * @param {FrameInputs} frame
+ * @param {{width: number, height: number} | null} [size] another size to draw the frame at
  */
 export function writeUniforms(uniforms, frame, size = null) {
   const width = size?.width ?? frame.width;

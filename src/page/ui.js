@@ -71,7 +71,8 @@ function isTextEntry(target) {
  */
 export function installUi(app) {
   const statusLine = document.getElementById('toast');
-  let toastTimer = 0;
+  /** @type {ReturnType<typeof setTimeout> | undefined} */
+  let toastTimer;
   const toast = (text) => {
     statusLine.textContent = text;
     statusLine.hidden = false;
@@ -148,9 +149,9 @@ export function installUi(app) {
 
   const toolbar = new Toolbar(document.getElementById('toolbar'), actions);
   const panel = new Panel({
-    scale: app.scale,
-    cap: app.cap,
-    sizeFixed: Boolean(app.fixedSize),
+    scale: app.canvasSize.scale,
+    cap: app.canvasSize.cap,
+    sizeFixed: Boolean(app.canvasSize.fixed),
     onScale: (s) => app.setScale(s),
     onCap: (c) => app.setCap(c),
     onControl: (name, value) => app.setControls({ [name]: value }, 'panel'),

@@ -1,0 +1,60 @@
+// The app's events (app.js), and the small typed emitter that sends them: the app's way of
+// telling the page what happened without touching the page. main.js, ui.js and automation.js
+// listen.
+
+/**
+ * The app's events, and what each passes its listeners after the app itself.
+ * @typedef {object} AppEvents
+ * @property {[]} state the play state, time, speed, size settings, controls or channels changed
+ * @property {[ms: number]} frame a frame was drawn while playing, `ms` after the one before
+ * @property {[]} drawn a frame was drawn, just now (its pixels can still be read)
+ * @property {[error: (Error & {report?: string}) | null, fileName: string]} compile the latest compile ended: null on
+ *   success, else its error (app.renderer.hasProgram tells whether an older shader still runs)
+ * @property {[]} source a new source was loaded (its controls read)
+ * @property {[lost: boolean]} context the GPU context was lost (true) or restored (false)
+ */
+
+/**
+ * @template {Record<string, unknown[]>} E each event's name and the arguments its listeners get
+ */
+export class Emitter {
+  constructor() {
+    /** @type {{[K in keyof E]?: Array<(emitter: this, ...args: E[K]) => void>}} */
+    this._listeners = {};
+  }
+
+  /**
+   * @template {keyof E} K
+   * @param {K} event
+   * @param {(emitter: this, ...args: E[K]) => void} listener
+   */
+  on(event, listener) {
+    (this._listeners[event] ??= []).push(listener);
+  }
+
+  /**
+   * Calls `listener` on the event's next emission only.
+   * @template {keyof E} K
+   * @param {K} event
+   * @param {(emitter: this, ...args: E[K]) => void} listener
+   */
+  once(event, listener) {
+    /** @type {(emitter: this, ...args: E[K]) => void} */
+    const once = (...args) => {
+      const list = this._listeners[event] ?? [];
+      list.splice(list.indexOf(once), 1);
+      listener(...args);
+    };
+    this.on(event, once);
+  }
+
+  /**
+   * Calls the event's listeners now, in the order they were added.
+   * @template {keyof E} K
+   * @param {K} event
+   * @param {E[K]} args
+   */
+  emit(event, ...args) {
+    for (const listener of [...(this._listeners[event] ?? [])]) listener(this, ...args);
+  }
+}
