@@ -24,7 +24,7 @@ export async function fetchShader(url) {
   try {
     response = await fetch(resolved, { cache: 'no-cache', headers: { Accept: 'text/plain, */*;q=0.1' } });
   } catch (error) {
-    throw new Error(`the request failed (${error.message})`);
+    throw new Error(`the request failed (${error.message})`, { cause: error });
   }
   if (!response.ok) throw new Error(`the server answered HTTP ${response.status}${response.statusText ? ` ${response.statusText}` : ''}`);
   const text = await response.text();
