@@ -11,7 +11,8 @@ import path from 'node:path';
 import { renderReference } from '../src/reference/render.js';
 import { imageError } from '../src/reference/error.js';
 import { REPO_ROOT, SHADER_FILE, disconnect, renderView, startHarness, useHarness } from './harness.js';
-import { HARD_VIEWS, HARD_VIEW_SIZE, referenceView } from './hard-views.js';
+import { HARD_VIEWS, referenceView } from './hard-views.js';
+import { DEFAULT_SIZE, viewSize } from './views.js';
 import { replaceMarkedSection } from './readme-section.js';
 
 const CONVERGED_SAMPLES_PER_AXIS = 8;
@@ -29,7 +30,7 @@ async function main() {
   const results = [];
   try {
     for (const [i, view] of VIEWS.entries()) {
-      const [width, height] = view.size ?? HARD_VIEW_SIZE;
+      const [width, height] = viewSize(view);
       process.stdout.write(`[${i + 1}/${VIEWS.length}] ${view.name}: page`);
       const image = await renderView({ ...view, size: [width, height] });
       process.stdout.write(', same-ray reference');
@@ -51,7 +52,7 @@ async function main() {
   fs.mkdirSync(outDir, { recursive: true });
   fs.writeFileSync(path.join(outDir, 'results.json'), JSON.stringify({ environment: context.environment, convergedSamples: CONVERGED_SAMPLES_PER_AXIS ** 2, results }, null, 2) + '\n');
   const table = [
-    `Measured by \`npm run accuracy\` at ${HARD_VIEW_SIZE.join('×')}, 1 sample per pixel, on ${context.environment.renderer.replace(/\s*\(0x[0-9A-F]+\)/i, '')} (${context.environment.chromium}).`,
+    `Measured by \`npm run accuracy\` at ${DEFAULT_SIZE.join('×')}, 1 sample per pixel, on ${context.environment.renderer.replace(/\s*\(0x[0-9A-F]+\)/i, '')} (${context.environment.chromium}).`,
     '',
     '| view | same-ray RMSE | same-ray max | same-ray >2/255 | NaN/Inf | converged RMSE | converged PSNR (dB) | converged >1/255 | converged >2/255 |',
     '|---|---|---|---|---|---|---|---|---|',

@@ -7,9 +7,12 @@
 // silhouette, a shadow edge or a stripe edge within rounding can land on the other side, and a
 // 320x180 view has only a few hundred such pixels, of which a handful may flip. A view may raise
 // its bound only with the reason written beside it.
+//
+// A hard view's size, like a render view's, is `size` or else DEFAULT_SIZE (views.js: viewSize).
+
+import { viewSize } from './views.js';
 
 export const MAX_OVER_2 = 1e-4;
-export const HARD_VIEW_SIZE = [320, 180];
 
 export const HARD_VIEWS = [
   {
@@ -60,6 +63,6 @@ export const HARD_VIEWS = [
 /** The reference renderer's view description for a hard view (controls split from page params). */
 export function referenceView(view) {
   const { time = 0, mouse = [0, 0, 0, 0], ...controls } = view.params;
-  const [width, height] = view.size ?? HARD_VIEW_SIZE;
+  const [width, height] = viewSize(view);
   return { width, height, time, mouse, controls };
 }

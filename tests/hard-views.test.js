@@ -8,7 +8,7 @@ import { renderReference } from '../src/reference/render.js';
 import { imageError, formatImageError } from '../src/reference/error.js';
 import { SHADER_FILE, assertNotBlank, disconnect, renderView } from './harness.js';
 import { viewControlProblems } from './views.js';
-import { HARD_VIEWS, HARD_VIEW_SIZE, MAX_OVER_2, referenceView } from './hard-views.js';
+import { HARD_VIEWS, MAX_OVER_2, referenceView } from './hard-views.js';
 
 afterAll(disconnect);
 
@@ -17,9 +17,8 @@ const controls = parseControls(source);
 
 describe('hard views against the same-ray float64 reference', () => {
   test.each(HARD_VIEWS.map((v) => [v.name, v]))('%s', async (_, view) => {
-    const page = { ...view, size: view.size ?? HARD_VIEW_SIZE };
-    expect(viewControlProblems(page, controls)).toEqual([]);
-    const image = await renderView(page);
+    expect(viewControlProblems(view, controls)).toEqual([]);
+    const image = await renderView(view);
     if (!view.uniform) assertNotBlank(image, view.name);
     const error = imageError(image, renderReference(source, referenceView(view)));
     console.log(`${view.name}: ${formatImageError(error)}`);

@@ -8,6 +8,7 @@
 
 import { coerceControlValue } from '../src/shadertoy/controls.js';
 
+/** The canvas size of a view that gives none: the render views' and the hard views' (hard-views.js). */
 export const DEFAULT_SIZE = [320, 180];
 
 /** Parameters that belong to the page, not to the shader's control block. */
@@ -80,7 +81,7 @@ export const PAIR_MIN_FACTOR = 10;
 
 /** The page URL (path + query) of a view. */
 export function viewQuery(view) {
-  const [width, height] = view.size ?? DEFAULT_SIZE;
+  const [width, height] = viewSize(view);
   const query = new URLSearchParams();
   query.set('size', `${width}x${height}`);
   for (const [name, value] of Object.entries(view.params)) {
