@@ -10,7 +10,9 @@ import fs from 'node:fs';
 import path from 'node:path';
 import { renderReference } from '../src/reference/render.js';
 import { imageError } from '../src/reference/error.js';
-import { REPO_ROOT, SHADER_FILE, disconnect, renderView, startHarness, useHarness } from './harness.js';
+import { REPO_ROOT, SHADER_FILE } from './harness/config.js';
+import { renderView } from './harness/page.js';
+import { rendererLabel, withHarness } from './harness/setup.js';
 import { HARD_VIEWS, referenceView } from './hard-views.js';
 import { DEFAULT_SIZE, viewSize } from './views.js';
 import { replaceMarkedSection } from './readme-section.js';
@@ -25,34 +27,27 @@ const row = (name, same, converged) =>
 
 async function main() {
   const source = fs.readFileSync(SHADER_FILE, 'utf8');
-  const { context, close } = await startHarness();
-  useHarness(context);
   const results = [];
-  try {
+  const context = await withHarness(async (harness) => {
     for (const [i, view] of VIEWS.entries()) {
       const [width, height] = viewSize(view);
       process.stdout.write(`[${i + 1}/${VIEWS.length}] ${view.name}: page`);
-      const image = await renderView({ ...view, size: [width, height] });
+      const image = await renderView(view);
       process.stdout.write(', same-ray reference');
-      const same = imageError(image, renderReference(source, referenceView({ ...view, size: [width, height] })));
+      const same = imageError(image, renderReference(source, referenceView(view)));
       process.stdout.write(`, converged reference (${CONVERGED_SAMPLES_PER_AXIS ** 2} spp)`);
-      const converged = imageError(
-        image,
-        renderReference(source, referenceView({ ...view, size: [width, height] }), { mode: 'converged', samplesPerAxis: CONVERGED_SAMPLES_PER_AXIS }),
-      );
+      const converged = imageError(image, renderReference(source, referenceView(view), { mode: 'converged', samplesPerAxis: CONVERGED_SAMPLES_PER_AXIS }));
       console.log(' done');
       results.push({ name: view.name, what: view.what, width, height, sameRays: same, converged });
     }
-  } finally {
-    await disconnect();
-    await close();
-  }
+    return harness;
+  });
 
   const outDir = path.join(REPO_ROOT, 'tests', 'accuracy');
   fs.mkdirSync(outDir, { recursive: true });
   fs.writeFileSync(path.join(outDir, 'results.json'), JSON.stringify({ environment: context.environment, convergedSamples: CONVERGED_SAMPLES_PER_AXIS ** 2, results }, null, 2) + '\n');
   const table = [
-    `Measured by \`npm run accuracy\` at ${DEFAULT_SIZE.join('×')}, 1 sample per pixel, on ${context.environment.renderer.replace(/\s*\(0x[0-9A-F]+\)/i, '')} (${context.environment.chromium}).`,
+    `Measured by \`npm run accuracy\` at ${DEFAULT_SIZE.join('×')}, 1 sample per pixel, on ${rendererLabel(context.environment.renderer)} (${context.environment.chromium}).`,
     '',
     '| view | same-ray RMSE | same-ray max | same-ray >2/255 | NaN/Inf | converged RMSE | converged PSNR (dB) | converged >1/255 | converged >2/255 |',
     '|---|---|---|---|---|---|---|---|---|',
@@ -62,7 +57,4 @@ async function main() {
   console.log(`\n${table}\n\nwrote tests/accuracy/results.json and the accuracy table in README.md`);
 }
 
-main().catch((error) => {
-  console.error(error);
-  process.exit(1);
-});
+await main();

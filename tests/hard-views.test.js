@@ -6,7 +6,9 @@ import { afterAll, describe, expect, test } from 'vitest';
 import { parseControls } from '../src/shadertoy/controls.js';
 import { renderReference } from '../src/reference/render.js';
 import { imageError, formatImageError } from '../src/reference/error.js';
-import { SHADER_FILE, assertNotBlank, disconnect, renderView } from './harness.js';
+import { SHADER_FILE } from './harness/config.js';
+import { assertNotBlank } from './harness/images.js';
+import { disconnect, renderView } from './harness/page.js';
 import { viewControlProblems } from './views.js';
 import { HARD_VIEWS, MAX_OVER_2, referenceView } from './hard-views.js';
 

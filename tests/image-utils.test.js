@@ -1,29 +1,15 @@
-// The harness's pure parts (no browser): blank detection, the tolerance, log mapping, PNG I/O,
-// finding Chromium.
+// The harness's pure parts (no browser): blank detection, the tolerance, failure images, log
+// mapping, PNG I/O, finding Chromium.
 import fs from 'node:fs';
 import os from 'node:os';
 import path from 'node:path';
 import { describe, expect, test } from 'vitest';
 import { composeImageShader } from '../src/shadertoy/header.js';
-import {
-  allowedDiffPixels,
-  blankReason,
-  compareImages,
-  findChrome,
-  mapShaderLog,
-  readPng,
-  writePng,
-} from './harness.js';
+import { findChrome } from './harness/chrome-path.js';
+import { OUTPUT_DIR } from './harness/config.js';
+import { allowedDiffPixels, blankReason, compareImages, expectImagesMatch, makeImage as image, readPng, writePng } from './harness/images.js';
+import { mapShaderLog } from './harness/raw-webgl.js';
 import { MAX_DIFF_FRACTION, PIXEL_THRESHOLD } from './views.js';
-
-function image(width, height, colour) {
-  const data = Buffer.alloc(width * height * 4);
-  for (let i = 0; i < width * height; i++) {
-    const [r, g, b] = colour(i % width, Math.floor(i / width));
-    data.set([r, g, b, 255], i * 4);
-  }
-  return { width, height, data };
-}
 const gradient = (x, y) => [(x * 2) % 200, (y * 2) % 200, 128];
 
 describe('blankReason', () => {
@@ -80,6 +66,41 @@ describe('compareImages and the tolerance', () => {
   });
 });
 
+describe('expectImagesMatch', () => {
+  const base = image(100, 100, gradient);
+  const name = `image-utils-${process.pid}`;
+  const files = ['actual', 'expected', 'diff'].map((kind) => path.join(OUTPUT_DIR, `${name}-${kind}.png`));
+  const removeFiles = () => files.forEach((file) => fs.rmSync(file, { force: true }));
+
+  test('passes within the tolerance and writes nothing', () => {
+    const shifted = image(100, 100, (x, y) => gradient(x, y).map((c) => c + 2));
+    expect(expectImagesMatch(name, shifted, base).diffPixels).toBe(0);
+    expect(files.filter((file) => fs.existsSync(file))).toEqual([]);
+  });
+
+  test('a failure writes actual, expected and diff PNGs and names them', () => {
+    const patched = image(100, 100, (x, y) => (x < 20 && y < 20 ? [255, 0, 0] : gradient(x, y)));
+    try {
+      expect(() => expectImagesMatch(name, patched, base, { hint: 'what to do' })).toThrow(
+        new RegExp(`400 pixels[\\s\\S]*${name}-actual\\.png[\\s\\S]*${name}-expected\\.png[\\s\\S]*${name}-diff\\.png\\nwhat to do$`),
+      );
+      expect(files.filter((file) => fs.existsSync(file))).toEqual(files);
+      expect(readPng(files[0]).data.equals(patched.data)).toBe(true);
+    } finally {
+      removeFiles();
+    }
+  });
+
+  test('images of different sizes fail with both written', () => {
+    try {
+      expect(() => expectImagesMatch(name, image(10, 10, gradient), base)).toThrow(/is 10x10 but the expected image is 100x100/);
+      expect(files.filter((file) => fs.existsSync(file))).toEqual(files.slice(0, 2));
+    } finally {
+      removeFiles();
+    }
+  });
+});
+
 describe('PNG round trip', () => {
   test('writePng then readPng gives the same pixels', () => {
     const dir = fs.mkdtempSync(path.join(os.tmpdir(), 'png-'));
@@ -96,16 +117,17 @@ describe('PNG round trip', () => {
   });
 });
 
+// The harness reports a raw page's compiler log as the page does (src/shadertoy/shader-errors.js).
 describe('mapShaderLog', () => {
   const source = 'void mainImage(out vec4 c, in vec2 f) {\n    c = vec4(undefinedThing);\n}\n';
-  const { firstSourceLine } = composeImageShader(source);
+  const { code, firstSourceLine } = composeImageShader(source);
   test.each([
-    [`ERROR: 0:${firstSourceLine + 1}: 'undefinedThing' : undeclared identifier`, /shaders\/raytrace\.glsl:2: 'undefinedThing'.*\n\s+2 \| c = vec4\(undefinedThing\);/],
-    [`ERROR: 0:3: 'x' : bad`, /Shadertoy header, line 3/],
-    [`ERROR: 0:${firstSourceLine + 10}: 'y' : bad`, /Shadertoy main wrapper/],
-    ['ERROR: 1 compilation errors.  No code generated.', /^ERROR: 1 compilation errors/],
+    [`ERROR: 0:${firstSourceLine + 1}: 'undefinedThing' : undeclared identifier`, /^shaders\/raytrace\.glsl:2: error: 'undefinedThing'.*\n\s+c = vec4\(undefinedThing\);$/],
+    [`ERROR: 0:3: 'x' : bad`, /^error: 'x' : bad$/], // a line of Shadertoy's header: no line of the file
+    [`ERROR: 0:${firstSourceLine + 10}: 'y' : bad`, /^error: 'y' : bad$/], // Shadertoy's main, after the file
+    ['ERROR: 1 compilation errors.  No code generated.', /^$/], // the summary line is dropped
   ])('%s', (log, expected) => {
-    expect(mapShaderLog(log, { firstSourceLine, source })).toMatch(expected);
+    expect(mapShaderLog(log, { code, firstSourceLine, source, fileName: 'shaders/raytrace.glsl' })).toMatch(expected);
   });
 });
 

@@ -11,7 +11,9 @@ import { SHADERTOY_HEADER } from '../src/shadertoy/header.js';
 import { intersectPlane, intersectSphere, intersectBox, intersectCone } from '../src/reference/intersectors.js';
 import { dot } from '../src/reference/vec3.js';
 import { FAR_SPHERE_FAMILY, INTERSECTOR_CASES } from './intersector-cases.js';
-import { SHADER_FILE, disconnect, evaluateFloatShader } from './harness.js';
+import { SHADER_FILE } from './harness/config.js';
+import { disconnect } from './harness/page.js';
+import { evaluateFloatShader } from './harness/raw-webgl.js';
 
 // ---- tolerances ---------------------------------------------------------------------------------
 // u = 2^-24 is float32's unit roundoff: one correctly rounded operation on numbers of size S is

@@ -3,7 +3,8 @@
 // size cap, window resizes and devicePixelRatio changes; and URLs full of bad values, which must
 // be clamped or ignored with a console warning, never break the page.
 import { afterAll, describe, expect, test } from 'vitest';
-import { assertNotBlank, disconnect } from './harness.js';
+import { assertNotBlank, differingPixels, sameImage } from './harness/images.js';
+import { disconnect } from './harness/page.js';
 import { button, info, overlayText, readPixels, withPage } from './page-helpers.js';
 
 afterAll(disconnect);
@@ -69,7 +70,7 @@ describe('time', () => {
       await page.waitForFunction(() => window.raytracer.info().time === 60, { polling: 20 });
       expect(await page.$eval('#toolbar output.time', (o) => o.textContent)).toBe('60.00 s');
       const after = await readPixels(page);
-      expect(Buffer.compare(before.data, after.data)).not.toBe(0); // the picture moved with time
+      expect(sameImage(before, after)).toBe(false); // the picture moved with time
       await page.keyboard.press('Home');
       await page.waitForFunction(() => window.raytracer.info().time === 0, { polling: 20 });
 
@@ -111,64 +112,59 @@ describe('size', () => {
     });
   const settle = (page) => page.evaluate(() => window.raytracer.readPixels().then(() => null));
 
-  test('the canvas follows window resizes and devicePixelRatio changes', async () => {
-    await withPage(
+  /** The pattern at `query` in a window of `viewport`: body(page, size) with the canvas's first size. */
+  const inWindow = (query, viewport, body) =>
+    withPage(
       async ({ page, goto }) => {
-        await goto(`?${PATTERN}&time=1`);
-        let size = await bufferSize(page);
-        expect([size.width, size.height]).toEqual([size.cssWidth, size.cssHeight]);
-        expect(size.width).toBe(320);
-
-        await page.setViewport({ width: 240, height: 200, deviceScaleFactor: 1 });
-        await page.waitForFunction(() => document.getElementById('view').width === 240);
-        await settle(page);
-        size = await bufferSize(page);
-        expect([size.width, size.height]).toEqual([240, size.cssHeight]);
-
-        await page.setViewport({ width: 240, height: 200, deviceScaleFactor: 2 });
-        await page.waitForFunction(() => document.getElementById('view').width === 480);
-        await settle(page);
-        size = await bufferSize(page);
-        expect(size.dpr).toBe(2);
-        expect([size.width, size.height]).toEqual([2 * size.cssWidth, 2 * size.cssHeight]);
-        expect((await info(page)).width).toBe(480);
+        await goto(`?${PATTERN}&time=1${query}`);
+        await body(page, await bufferSize(page));
       },
-      { viewport: { width: 320, height: 240, deviceScaleFactor: 1 } },
+      { viewport },
     );
+
+  test('the canvas follows window resizes and devicePixelRatio changes', async () => {
+    await inWindow('', { width: 320, height: 240, deviceScaleFactor: 1 }, async (page, size) => {
+      expect([size.width, size.height]).toEqual([size.cssWidth, size.cssHeight]);
+      expect(size.width).toBe(320);
+
+      await page.setViewport({ width: 240, height: 200, deviceScaleFactor: 1 });
+      await page.waitForFunction(() => document.getElementById('view').width === 240);
+      await settle(page);
+      size = await bufferSize(page);
+      expect([size.width, size.height]).toEqual([240, size.cssHeight]);
+
+      await page.setViewport({ width: 240, height: 200, deviceScaleFactor: 2 });
+      await page.waitForFunction(() => document.getElementById('view').width === 480);
+      await settle(page);
+      size = await bufferSize(page);
+      expect(size.dpr).toBe(2);
+      expect([size.width, size.height]).toEqual([2 * size.cssWidth, 2 * size.cssHeight]);
+      expect((await info(page)).width).toBe(480);
+    });
   });
 
   test('resolution scale and size cap', async () => {
-    await withPage(
-      async ({ page, goto }) => {
-        await goto(`?${PATTERN}&time=1&scale=0.5`);
-        let size = await bufferSize(page);
-        expect(size.width).toBe(Math.round(size.cssWidth * 2 * 0.5));
-        expect(size.height).toBe(Math.round(size.cssHeight * 2 * 0.5));
+    await inWindow('&scale=0.5', { width: 640, height: 480, deviceScaleFactor: 2 }, async (page, size) => {
+      expect(size.width).toBe(Math.round(size.cssWidth * 2 * 0.5));
+      expect(size.height).toBe(Math.round(size.cssHeight * 2 * 0.5));
 
-        const cap = await page.$('::-p-aria([name="Max canvas size"][role="combobox"])');
-        await cap.select('320 px');
-        await page.waitForFunction(() => Math.max(document.getElementById('view').width, document.getElementById('view').height) === 320);
-        await settle(page);
-        size = await bufferSize(page);
-        const aspect = size.cssWidth / size.cssHeight;
-        expect(Math.abs(size.width / size.height - aspect)).toBeLessThan(0.02);
-        expect(new URL(await page.evaluate(() => window.raytracer.shareUrl())).searchParams.get('size')).toBe(`${size.width}x${size.height}`);
-      },
-      { viewport: { width: 640, height: 480, deviceScaleFactor: 2 } },
-    );
+      const cap = await page.$('::-p-aria([name="Max canvas size"][role="combobox"])');
+      await cap.select('320 px');
+      await page.waitForFunction(() => Math.max(document.getElementById('view').width, document.getElementById('view').height) === 320);
+      await settle(page);
+      size = await bufferSize(page);
+      const aspect = size.cssWidth / size.cssHeight;
+      expect(Math.abs(size.width / size.height - aspect)).toBeLessThan(0.02);
+      expect(new URL(await page.evaluate(() => window.raytracer.shareUrl())).searchParams.get('size')).toBe(`${size.width}x${size.height}`);
+    });
   });
 
   test('a fixed size larger than the window is shown whole, drawn at full size', async () => {
-    await withPage(
-      async ({ page, goto }) => {
-        await goto(`?${PATTERN}&time=1&size=640x360`);
-        const size = await bufferSize(page);
-        expect([size.width, size.height]).toEqual([640, 360]);
-        expect(size.cssWidth).toBeLessThanOrEqual(300);
-        expect(Math.abs(size.cssWidth / size.cssHeight - 640 / 360)).toBeLessThan(0.05);
-      },
-      { viewport: { width: 300, height: 400, deviceScaleFactor: 1 } },
-    );
+    await inWindow('&size=640x360', { width: 300, height: 400, deviceScaleFactor: 1 }, async (page, size) => {
+      expect([size.width, size.height]).toEqual([640, 360]);
+      expect(size.cssWidth).toBeLessThanOrEqual(300);
+      expect(Math.abs(size.cssWidth / size.cssHeight - 640 / 360)).toBeLessThan(0.05);
+    });
   });
 });
 
@@ -200,11 +196,10 @@ describe('the URL', () => {
       const moving = await readPixels(page);
       await page.waitForFunction(() => window.raytracer.info().liveControls === 'constants', { polling: 50, timeout: 10000 });
       const still = await readPixels(page);
-      expect(still.data.equals(before.data)).toBe(false); // the change is drawn ...
-      const differing = (a, b) => a.data.reduce((n, v, i) => n + (Math.abs(v - b.data[i]) > 2 ? 1 : 0), 0);
-      expect(differing(moving, still)).toBe(0); // ... the same by both forms
+      expect(sameImage(still, before)).toBe(false); // the change is drawn ...
+      expect(differingPixels(moving, still, 2).count).toBe(0); // ... the same by both forms
       await page.evaluate(() => window.raytracer.setControls({ CONE_HEIGHT: 1.7 }));
-      expect(differing(await readPixels(page), before)).toBe(0);
+      expect(differingPixels(await readPixels(page), before, 2).count).toBe(0);
     });
   });
 

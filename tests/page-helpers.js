@@ -5,10 +5,28 @@
 import fs from 'node:fs';
 import path from 'node:path';
 import { expect } from 'vitest';
-import { REPO_ROOT, openPage } from './harness.js';
+import { REPO_ROOT } from './harness/config.js';
+import { decodeRgba, openPage } from './harness/page.js';
 
 export const EXAMPLES_DIR = path.join(REPO_ROOT, 'public', 'examples');
 export const exampleSource = (name) => fs.readFileSync(path.join(EXAMPLES_DIR, `${name}.glsl`), 'utf8');
+
+/** A Shadertoy shader that paints every pixel rgb(r, g, b) (0..255). */
+export const solid = (r, g, b) => `void mainImage(out vec4 fragColor, in vec2 fragCoord) {\n    fragColor = vec4(${r / 255}, ${g / 255}, ${b / 255}, 1.0);\n}\n`;
+
+/**
+ * Runs `body(dir, base)` with a fresh folder public/<prefix>-<pid>/ that the page serves as
+ * `base`, and removes the folder after.
+ */
+export async function withServedDir(prefix, body) {
+  const dir = path.join(REPO_ROOT, 'public', `${prefix}-${process.pid}`);
+  fs.mkdirSync(dir, { recursive: true });
+  try {
+    await body(dir, path.basename(dir));
+  } finally {
+    fs.rmSync(dir, { recursive: true, force: true });
+  }
+}
 
 /**
  * Runs `body({page, errors, warnings, context, goto})` on a fresh page and closes it. The test
@@ -41,14 +59,10 @@ export async function withPage(body, { viewport, beforeLoad } = {}) {
   expect(errors, 'the page logged errors').toEqual([]);
 }
 
-function decode64(data) {
-  return Buffer.from(data, 'base64');
-}
-
 /** window.raytracer.readPixels(): a new frame, rows top to bottom. */
 export async function readPixels(page) {
   const r = await page.evaluate(() => window.raytracer.readPixels());
-  return { width: r.width, height: r.height, data: decode64(r.data) };
+  return { width: r.width, height: r.height, data: decodeRgba(r.data, r.width, r.height, 'readPixels') };
 }
 
 /**
@@ -60,7 +74,7 @@ export async function nextFrame(page) {
   await page.evaluate(() => {
     window.__nextFrame = window.raytracer.nextFrame();
   });
-  return () => page.evaluate(() => window.__nextFrame).then((r) => ({ width: r.width, height: r.height, iFrame: r.iFrame, data: decode64(r.data) }));
+  return () => page.evaluate(() => window.__nextFrame).then((r) => ({ width: r.width, height: r.height, iFrame: r.iFrame, data: decodeRgba(r.data, r.width, r.height, 'nextFrame') }));
 }
 
 export async function info(page) {

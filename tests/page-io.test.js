@@ -1,25 +1,21 @@
 // Getting shaders in and pictures out, through the page's own widgets in the real browser: the
 // editor (a pasted shader, a broken one), a dropped .glsl file or image, channel images, the
-// clipboard ("Copy for Shadertoy", "Copy link"), downloads (".glsl", "Screenshot"), compile
-// errors, a lost GPU context, no WebGL2 at all, and the dev server's shader reload.
+// clipboard ("Copy for Shadertoy", "Copy link") and downloads (".glsl", "Screenshot").
+// (Failures and the dev server's reload: page-lifecycle.test.js.)
 import fs from 'node:fs';
 import os from 'node:os';
 import path from 'node:path';
-import { PNG } from 'pngjs';
 import { afterAll, describe, expect, test } from 'vitest';
 import { composeImageShader } from '../src/shadertoy/header.js';
-import { REPO_ROOT, SHADER_FILE, disconnect, renderRawShader, startWatchingServer } from './harness.js';
-import { EXAMPLES_DIR, button, exampleSource, info, overlayText, pixel, readPixels, withPage } from './page-helpers.js';
+import { makeImage, readPng, sameImage, writePng } from './harness/images.js';
+import { disconnect } from './harness/page.js';
+import { renderRawShader } from './harness/raw-webgl.js';
+import { EXAMPLES_DIR, button, exampleSource, info, overlayText, pixel, readPixels, solid, withPage, withServedDir } from './page-helpers.js';
 
 afterAll(disconnect);
 
 const SIZE = 'size=160x90';
 const PATTERN = `?shader=examples/pattern.glsl&${SIZE}&time=2`;
-const solid = (r, g, b) => `void mainImage(out vec4 fragColor, in vec2 fragCoord) {\n    fragColor = vec4(${r / 255}, ${g / 255}, ${b / 255}, 1.0);\n}\n`;
-
-function sameImage(a, b) {
-  return a.width === b.width && a.height === b.height && Buffer.compare(Buffer.from(a.data), Buffer.from(b.data)) === 0;
-}
 
 function allPixels(image, rgb) {
   for (let i = 0; i < image.width * image.height; i++) {
@@ -33,6 +29,16 @@ function allPixels(image, rgb) {
 async function allowClipboard(page, baseUrl) {
   await page.browserContext().overridePermissions(baseUrl, ['clipboard-read', 'clipboard-write', 'clipboard-sanitized-write']);
   await page.bringToFront();
+}
+
+/** Puts `text` on the clipboard and pastes it over everything in the editor, as a person does. */
+async function pasteIntoEditor(page, text) {
+  await page.evaluate((t) => navigator.clipboard.writeText(t), text);
+  await page.focus('textarea');
+  await page.keyboard.down('Control');
+  await page.keyboard.press('KeyA');
+  await page.keyboard.up('Control');
+  await page.keyboard.press('KeyV', { commands: ['Paste'] });
 }
 
 /** Saves the page's downloads in a fresh folder; `next()` waits for the next finished file. */
@@ -70,10 +76,9 @@ async function dropFiles(page, files) {
   await session.detach();
 }
 
-function writeTempPng(file, width, height, rgb) {
-  const png = new PNG({ width, height });
-  for (let i = 0; i < width * height; i++) png.data.set([...rgb, 255], i * 4);
-  fs.writeFileSync(file, PNG.sync.write(png));
+/** A PNG file of one colour. */
+function writeSolidPng(file, width, height, rgb) {
+  writePng(file, makeImage(width, height, () => rgb));
 }
 
 // ------------------------------------------------------------------------------------------------
@@ -98,12 +103,7 @@ describe('the editor', () => {
       await (await button(page, 'Edit shader')).click();
       await page.waitForSelector('textarea[aria-label="Shader source"]', { visible: true });
       expect(await page.$eval('textarea', (t) => t.value)).toBe(exampleSource(name));
-      await page.evaluate((text) => navigator.clipboard.writeText(text), lines.join('\n'));
-      await page.focus('textarea');
-      await page.keyboard.down('Control');
-      await page.keyboard.press('KeyA');
-      await page.keyboard.up('Control');
-      await page.keyboard.press('KeyV', { commands: ['Paste'] });
+      await pasteIntoEditor(page, lines.join('\n'));
 
       await page.waitForFunction(() => !document.querySelector('[role="alert"]').hidden, { polling: 50 });
       const alert = await overlayText(page);
@@ -115,12 +115,7 @@ describe('the editor', () => {
       expect(sameImage(await readPixels(page), before), 'the previous image stays').toBe(true);
 
       // pasting a good shader runs it, and the alert goes
-      await page.evaluate((text) => navigator.clipboard.writeText(text), solid(10, 200, 30));
-      await page.focus('textarea');
-      await page.keyboard.down('Control');
-      await page.keyboard.press('KeyA');
-      await page.keyboard.up('Control');
-      await page.keyboard.press('KeyV', { commands: ['Paste'] });
+      await pasteIntoEditor(page, solid(10, 200, 30));
       await page.waitForFunction(() => document.querySelector('[role="alert"]').hidden, { polling: 50 });
       expect(allPixels(await readPixels(page), [10, 200, 30])).toBe(true);
       expect(await page.$$('.editor-gutter .error')).toHaveLength(0);
@@ -164,7 +159,7 @@ describe('dropping files on the page', () => {
           '}\n',
       );
       const image = path.join(dir, 'orange.png');
-      writeTempPng(image, 6, 4, [250, 140, 20]);
+      writeSolidPng(image, 6, 4, [250, 140, 20]);
       await withPage(async ({ page, goto }) => {
         await goto(PATTERN);
         await dropFiles(page, [shader]);
@@ -187,18 +182,15 @@ describe('dropping files on the page', () => {
   });
 
   test('the panel loads an image into a channel, and ?iChannel1= loads one from the URL', async () => {
-    const tempDir = path.join(REPO_ROOT, 'public', `test-channel-${process.pid}`);
-    fs.mkdirSync(tempDir, { recursive: true });
-    try {
-      writeTempPng(path.join(tempDir, 'blue.png'), 3, 5, [20, 60, 240]);
+    await withServedDir('test-channel', async (dir, base) => {
+      writeSolidPng(path.join(dir, 'blue.png'), 3, 5, [20, 60, 240]);
       fs.writeFileSync(
-        path.join(tempDir, 'channels.glsl'),
+        path.join(dir, 'channels.glsl'),
         'void mainImage(out vec4 c, in vec2 f) {\n    c = f.x < 80.0 ? texture(iChannel1, vec2(0.5)) : texture(iChannel2, vec2(0.5));\n}\n',
       );
-      const local = path.join(tempDir, 'green.png');
-      writeTempPng(local, 2, 2, [30, 220, 90]);
+      const local = path.join(dir, 'green.png');
+      writeSolidPng(local, 2, 2, [30, 220, 90]);
       await withPage(async ({ page, goto }) => {
-        const base = path.basename(tempDir);
         await goto(`?shader=${base}/channels.glsl&${SIZE}&time=0&iChannel1=${base}/blue.png`);
         await page.waitForFunction(() => document.querySelector('.lil-gui').textContent.includes('iChannel1… (3×5)'));
         expect(pixel(await readPixels(page), 20, 45)).toEqual([20, 60, 240]);
@@ -215,9 +207,7 @@ describe('dropping files on the page', () => {
         await page.waitForFunction(() => !document.querySelector('.lil-gui').textContent.includes('(3×5)'));
         expect(pixel(await readPixels(page), 20, 45)).toEqual([0, 0, 0]);
       });
-    } finally {
-      fs.rmSync(tempDir, { recursive: true, force: true });
-    }
+    });
   });
 });
 
@@ -251,7 +241,7 @@ describe('output', () => {
       await (await button(page, 'Screenshot')).click();
       const shot = await downloads.next();
       expect(shot.name).toBe('pattern-t2.00-160x90.png');
-      const png = PNG.sync.read(fs.readFileSync(shot.file));
+      const png = readPng(shot.file);
       expect(sameImage(png, frame), 'the screenshot is the frame on the canvas').toBe(true);
 
       const choice = await page.$('::-p-aria([name="Screenshot size"][role="combobox"])');
@@ -259,7 +249,7 @@ describe('output', () => {
       await (await button(page, 'Screenshot')).click();
       const big = await downloads.next();
       expect(big.name).toBe('pattern-t2.00-320x180.png');
-      const bigPng = PNG.sync.read(fs.readFileSync(big.file));
+      const bigPng = readPng(big.file);
       // the same view drawn at 320x180 (iMouse scaled with it)
       await goto('?shader=examples/pattern.glsl&size=320x180&time=2&mouse=60,80,-60,-80');
       expect(sameImage(bigPng, await readPixels(page)), 'the 2x screenshot is the view drawn at 2x').toBe(true);
@@ -301,126 +291,6 @@ describe('output', () => {
       await goto(url.search);
       expect(sameImage(await readPixels(page), original), 'the link shows the same pixels').toBe(true);
     });
-  });
-});
-
-describe('errors', () => {
-  test('a shader that fails on load: the alert names the line, nothing else runs, nothing throws', async () => {
-    const tempDir = path.join(REPO_ROOT, 'public', `test-broken-${process.pid}`);
-    fs.mkdirSync(tempDir, { recursive: true });
-    try {
-      fs.writeFileSync(path.join(tempDir, 'broken.glsl'), '// line 1\n// line 2\nvoid mainImage(out vec4 c, in vec2 f) {\n    c = vec3(1.0);\n}\n');
-      await withPage(async ({ page, goto }) => {
-        await goto(`?shader=${path.basename(tempDir)}/broken.glsl&${SIZE}&time=0`, { expectReady: false });
-        await page.waitForFunction(() => document.documentElement.dataset.error === 'shader-compile');
-        const alert = await overlayText(page);
-        expect(alert).toContain('broken.glsl did not compile');
-        expect(alert).toContain('broken.glsl:4:');
-      });
-    } finally {
-      fs.rmSync(tempDir, { recursive: true, force: true });
-    }
-  });
-
-  test('a lost WebGL context shows an alert and comes back with the same picture', async () => {
-    await withPage(async ({ page, goto }) => {
-      await goto(PATTERN);
-      const before = await readPixels(page);
-      await page.evaluate(() => {
-        window.__loseContext = document.getElementById('view').getContext('webgl2').getExtension('WEBGL_lose_context');
-        window.__loseContext.loseContext();
-      });
-      await page.waitForFunction(() => window.raytracer.info().contextLost && !document.querySelector('[role="alert"]').hidden);
-      expect(await overlayText(page)).toContain('GPU context was lost');
-      await page.evaluate(() => window.__loseContext.restoreContext());
-      await page.waitForFunction(() => !window.raytracer.info().contextLost && document.querySelector('[role="alert"]').hidden);
-      const after = await readPixels(page);
-      expect(sameImage(after, before), 'the restored context draws the same picture').toBe(true);
-    });
-  });
-
-  test('no WebGL2: a clear message, not a blank page', async () => {
-    await withPage(
-      async ({ page, goto }) => {
-        await goto(PATTERN, { expectReady: false });
-        expect(await page.evaluate(() => document.documentElement.dataset.error)).toBe('webgl2');
-        const alert = await overlayText(page);
-        expect(alert).toContain('WebGL2 is not available');
-        expect(alert).toMatch(/browser or GPU provides no WebGL2/);
-        const rejected = await page.evaluate(() => window.raytracer.ready.then(() => null, (e) => e.message));
-        expect(rejected).toMatch(/WebGL2/);
-      },
-      {
-        beforeLoad: (page) =>
-          page.evaluateOnNewDocument(() => {
-            const getContext = HTMLCanvasElement.prototype.getContext;
-            HTMLCanvasElement.prototype.getContext = function (type, ...rest) {
-              return type === 'webgl2' ? null : getContext.call(this, type, ...rest);
-            };
-          }),
-      },
-    );
-  });
-});
-
-describe('development: editing a shader file reloads it without reloading the page', () => {
-  // A temporary file in each served folder: public/ (as ?shader=NAME.glsl) and shaders/ (served
-  // by vite.config.js as /shaders/NAME.glsl). The page runs it from a server that watches files.
-  test.each([
-    ['public/', path.join(REPO_ROOT, 'public'), ''],
-    ['shaders/', path.join(REPO_ROOT, 'shaders'), 'shaders/'],
-  ])('a file under %s', async (_, dir, prefix) => {
-    const name = `hmr-test-${process.pid}.glsl`;
-    const file = path.join(dir, name);
-    fs.writeFileSync(file, solid(200, 0, 0));
-    const server = await startWatchingServer();
-    try {
-      await withPage(async ({ page, goto }) => {
-        await goto(`?shader=${prefix}${name}&size=32x18&time=0`, { base: server.baseUrl });
-        expect(pixel(await readPixels(page), 5, 5)).toEqual([200, 0, 0]);
-        await page.evaluate(() => (window.__sameDocument = true));
-        // the watcher may still be starting: rewrite until the page has the new colour
-        const deadline = Date.now() + 30_000;
-        let colour;
-        do {
-          fs.writeFileSync(file, solid(0, 0, 200));
-          await new Promise((r) => setTimeout(r, 300));
-          colour = pixel(await readPixels(page), 5, 5);
-        } while (colour[2] !== 200 && Date.now() < deadline);
-        expect(colour).toEqual([0, 0, 200]);
-        expect(await page.evaluate(() => window.__sameDocument)).toBe(true);
-        expect(await info(page)).toMatchObject({ origin: 'url', fileName: name });
-      });
-    } finally {
-      fs.rmSync(file, { force: true });
-      await server.close();
-    }
-  });
-
-  // The built-in shader comes in through a `?raw` import: Vite's own hot update. Only the file's
-  // modification time is touched (the content is never rewritten, so no edit can be lost).
-  test('shaders/raytrace.glsl, the built-in shader', async () => {
-    const server = await startWatchingServer();
-    try {
-      await withPage(async ({ page, goto }) => {
-        await goto('?size=32x18&time=0', { base: server.baseUrl });
-        const before = (await info(page)).compiled;
-        await page.evaluate(() => (window.__sameDocument = true));
-        const deadline = Date.now() + 30_000;
-        let compiled;
-        do {
-          const now = new Date();
-          fs.utimesSync(SHADER_FILE, now, now);
-          await new Promise((r) => setTimeout(r, 400));
-          compiled = (await info(page)).compiled;
-        } while (compiled === before && Date.now() < deadline);
-        expect(compiled).toBeGreaterThan(before);
-        expect(await page.evaluate(() => window.__sameDocument)).toBe(true);
-        expect(await info(page)).toMatchObject({ origin: 'builtin', fileName: 'shaders/raytrace.glsl' });
-      });
-    } finally {
-      await server.close();
-    }
   });
 });
 

@@ -5,7 +5,9 @@
 // each input's semantics against real pointer, touch and keyboard input.
 import { afterAll, describe, expect, test } from 'vitest';
 import { composeImageShader } from '../src/shadertoy/header.js';
-import { allowedDiffPixels, assertNotBlank, compareImages, disconnect, renderRawShader, writePng, OUTPUT_DIR } from './harness.js';
+import { assertNotBlank, expectImagesMatch } from './harness/images.js';
+import { disconnect } from './harness/page.js';
+import { renderRawShader } from './harness/raw-webgl.js';
 import {
   canvasBox,
   checkResults,
@@ -18,7 +20,6 @@ import {
   readPixels,
   withPage,
 } from './page-helpers.js';
-import path from 'node:path';
 
 afterAll(disconnect);
 
@@ -54,13 +55,10 @@ describe('example shaders run unchanged and match Shadertoy\'s header', () => {
     });
     expect(raw.stage, raw.log).toBeUndefined();
     expect(raw.glError).toBe(0);
-    const { diffPixels, diff } = compareImages(page, raw);
-    if (diffPixels > allowedDiffPixels(W, H)) {
-      writePng(path.join(OUTPUT_DIR, `example-${example.name}-page.png`), page);
-      writePng(path.join(OUTPUT_DIR, `example-${example.name}-shadertoy.png`), raw);
-      writePng(path.join(OUTPUT_DIR, `example-${example.name}-diff.png`), diff);
-    }
-    expect(diffPixels, `${example.name}: pixels that differ from the Shadertoy-header render`).toBeLessThanOrEqual(allowedDiffPixels(W, H));
+    expectImagesMatch(`example-${example.name}`, page, raw, {
+      actualLabel: `${example.name} in the page`,
+      expectedLabel: 'the Shadertoy-header render',
+    });
   });
 });
 

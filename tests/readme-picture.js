@@ -4,19 +4,17 @@
 //   npm run picture        writes public/scene.png
 
 import path from 'node:path';
-import { REPO_ROOT, assertNotBlank, disconnect, renderView, startHarness, useHarness, writePng } from './harness.js';
+import { REPO_ROOT, rel } from './harness/config.js';
+import { assertNotBlank, writePng } from './harness/images.js';
+import { renderView } from './harness/page.js';
+import { withHarness } from './harness/setup.js';
 
 const VIEW = { name: 'readme', params: { time: 0, SAMPLES: 4 }, size: [960, 540] };
 
-const { context, close } = await startHarness();
-useHarness(context);
-try {
+await withHarness(async (context) => {
   const image = await renderView(VIEW);
   assertNotBlank(image, 'README picture');
   const file = path.join(REPO_ROOT, 'public', 'scene.png');
   writePng(file, image);
-  console.log(`wrote ${path.relative(REPO_ROOT, file)} (${image.width}x${image.height}, ${context.environment.renderer})`);
-} finally {
-  await disconnect();
-  await close();
-}
+  console.log(`wrote ${rel(file)} (${image.width}x${image.height}, ${context.environment.renderer})`);
+});

@@ -3,7 +3,9 @@
 import fs from 'node:fs';
 import { afterAll, describe, expect, test } from 'vitest';
 import { parseControls } from '../src/shadertoy/controls.js';
-import { SHADER_FILE, assertNotBlank, compareImages, disconnect, expectMatchesGolden, renderView } from './harness.js';
+import { SHADER_FILE } from './harness/config.js';
+import { assertNotBlank, compareImages, expectMatchesGolden } from './harness/images.js';
+import { disconnect, renderView } from './harness/page.js';
 import { MAX_DIFF_FRACTION, PAIR_MIN_FACTOR, VIEWS, viewControlProblems } from './views.js';
 
 afterAll(disconnect);

@@ -4,7 +4,7 @@
 import fs from 'node:fs';
 import { describe, expect, test } from 'vitest';
 import { parseControls } from '../src/shadertoy/controls.js';
-import { GOLDEN_DIR, SHADER_FILE } from './harness.js';
+import { GOLDEN_DIR, SHADER_FILE } from './harness/config.js';
 import { MAX_DIFF_FRACTION, PIXEL_THRESHOLD, VIEWS, viewControlProblems, viewQuery, viewSize } from './views.js';
 
 describe('view table', () => {

@@ -1,6 +1,6 @@
 // The test runner's config (npm test passes it with --config). It is separate from vite.config.js
-// (which serves the page from src/) so that the tests run from the repository root;
-// tests/harness.js starts that page server itself.
+// (which serves the page from src/page/) so that the tests run from the repository root;
+// tests/harness/setup.js starts that page server itself.
 import { fileURLToPath } from 'node:url';
 import { defineConfig } from 'vitest/config';
 
@@ -10,7 +10,7 @@ export default defineConfig({
     environment: 'node',
     include: ['tests/**/*.test.js'],
     // Starts one headless Chromium (SwiftShader) and one Vite server for the whole run.
-    globalSetup: ['tests/harness.js'],
+    globalSetup: ['tests/harness/setup.js'],
     // The browser is shared and SwiftShader uses every core: one test file at a time.
     fileParallelism: false,
     maxWorkers: 1,

@@ -10,7 +10,10 @@
 
 import fs from 'node:fs';
 import { composeImageShader } from '../../src/shadertoy/header.js';
-import { SHADER_FILE, disconnect, startHarness, timeShaders, useHarness } from '../harness.js';
+import { median } from '../../src/page/stats.js';
+import { SHADER_FILE } from '../harness/config.js';
+import { withHarness } from '../harness/setup.js';
+import { timeShaders } from './timer.js';
 
 const CALLS = 60;
 const body = Array.from({ length: CALLS }, (_, i) => `        x = sin(x * 1.${i % 10} + 0.${i % 7});`).join('\n');
@@ -34,17 +37,11 @@ const CASES = [
   ['the project shader + radiance() behind if (iFrame < 0)', composeImageShader(project.replace(call, `${call}\n    if (iFrame < 0) linear += radiance(s, primaryRay(camera, fragCoord).zyx, coneSpread);`)).code],
 ];
 
-const { context, close } = await startHarness();
-useHarness(context);
-try {
+await withHarness(async (context) => {
   const results = await timeShaders(CASES.map(([, code]) => ({ code })), { width: 640, height: 360, frames: 9, warmup: 2 });
   console.log(`640x360 on ${context.environment.renderer}, median of 9 interleaved frames:`);
   results.forEach((r, i) => {
     if (r.error) throw new Error(`${CASES[i][0]}: ${r.error}`);
-    const sorted = [...r.times].sort((a, b) => a - b);
-    console.log(`  ${sorted[4].toFixed(1).padStart(7)} ms  ${CASES[i][0]}`);
+    console.log(`  ${median(r.times).toFixed(1).padStart(7)} ms  ${CASES[i][0]}`);
   });
-} finally {
-  await disconnect();
-  await close();
-}
+});

@@ -12,7 +12,7 @@
 //                              tests/bench/results-gpu.json and results-gpu.md only
 //
 // Each variant is compiled inside Shadertoy's header and timed in headless Chromium on
-// SwiftShader (tests/harness.js, timeShaders: all variants in one page, interleaved round by
+// SwiftShader (tests/harness/, and timer.js: all variants in one page, interleaved round by
 // round, a frame being a draw plus a 1-pixel read-back, so the rendering is what is timed). Its
 // last frame is compared with the converged float64 reference
 // of the project's scene at its default settings (src/reference/, 64 jittered samples per pixel
@@ -25,8 +25,11 @@ import path from 'node:path';
 import { composeImageShader, hostControlBlock } from '../../src/shadertoy/header.js';
 import { parseControls } from '../../src/shadertoy/controls.js';
 import { imageError } from '../../src/reference/error.js';
-import { REPO_ROOT, SHADER_FILE, disconnect, startHarness, timeShaders, useHarness } from '../harness.js';
+import { median } from '../../src/page/stats.js';
+import { REPO_ROOT, SHADER_FILE } from '../harness/config.js';
+import { rendererLabel, withHarness } from '../harness/setup.js';
 import { replaceMarkedSection } from '../readme-section.js';
+import { timeShaders } from './timer.js';
 import { composePeer } from './peers/compose-peer.js';
 import { renderReferenceParallel } from './reference.js';
 import { paretoFront, chartSvg } from './chart.js';
@@ -39,12 +42,13 @@ const gpu = process.argv.includes('--gpu');
 const OUTPUT = gpu
   ? { json: 'results-gpu.json', markdown: 'results-gpu.md', chart: null, readme: false, written: 'tests/bench/results-gpu.json and results-gpu.md' }
   : { json: 'results.json', markdown: 'results.md', chart: 'chart.svg', readme: true, written: 'tests/bench/results.json, results.md, chart.svg and the table in README.md' };
-/** startHarness, on the GPU with --gpu (its renderer printed); with no hardware GPU, a clear stop. */
-async function startBenchHarness() {
+/** withHarness, on the GPU with --gpu (its renderer printed); with no hardware GPU, a clear stop. */
+async function withBenchHarness(body) {
   try {
-    const harness = await startHarness({ gpu });
-    if (gpu) console.log(`GPU renderer: ${harness.context.environment.renderer} (${harness.context.environment.chromium})`);
-    return harness;
+    return await withHarness(async (context) => {
+      if (gpu) console.log(`GPU renderer: ${context.environment.renderer} (${context.environment.chromium})`);
+      return body(context);
+    }, { gpu });
   } catch (error) {
     if (error.code !== 'NO_HARDWARE_GPU') throw error;
     console.error(`\nnpm run bench -- --gpu: ${error.message}\nNothing was measured. The default benchmark, on SwiftShader, is \`npm run bench\`.`);
@@ -101,18 +105,11 @@ export const VARIANTS = [
   { name: PLAIN, group: 'peer: plain analytic', spp: 1, code: () => peer('plain.glsl') },
 ];
 
-const median = (xs) => {
-  const s = [...xs].sort((a, b) => a - b);
-  return s.length % 2 ? s[(s.length - 1) / 2] : (s[s.length / 2 - 1] + s[s.length / 2]) / 2;
-};
-
 async function main() {
   console.log(`benchmark${quick ? ' (quick)' : ''}: ${VARIANTS.length} variants at ${SIZES.map((s) => s.join('x')).join(' and ')}`);
-  const { context, close } = await startBenchHarness();
-  useHarness(context);
   const results = [];
   const failures = [];
-  try {
+  await withBenchHarness(async (context) => {
     for (const [width, height] of SIZES) {
       const perAxis = REFERENCE_SAMPLES_PER_AXIS(width);
       process.stdout.write(`${width}x${height}: converged float64 reference (${perAxis * perAxis} spp) ... `);
@@ -159,10 +156,7 @@ async function main() {
         console.log(`  ${variant.name}: ${entry.medianMs.toFixed(1)} ms (min ${entry.minMs.toFixed(1)}), RMSE ${entry.rmse.toFixed(4)}, >2/255 ${(100 * entry.over2).toFixed(2)}%`);
       }
     }
-  } finally {
-    await disconnect();
-    await close();
-  }
+  });
   if (failures.length) {
     console.error(`\n${failures.length} variant(s) failed:\n  ${failures.join('\n  ')}`);
     process.exit(1);
@@ -193,7 +187,7 @@ async function main() {
   };
   const targets = evaluateTargets(atSize(w));
   const markdown = [
-    `Measured by \`npm run bench\` on ${results[0].renderer.replace(/\s*\(0x[0-9A-F]+\)/i, '')}, ${results[0].chromium}; median of ${COPIES * FRAMES} frames (${COPIES} compilations of each variant, ${FRAMES} frames each after ${WARMUP} warm-up frames), all interleaved frame by frame. Error against the converged float64 reference of the default scene.`,
+    `Measured by \`npm run bench\` on ${rendererLabel(results[0].renderer)}, ${results[0].chromium}; median of ${COPIES * FRAMES} frames (${COPIES} compilations of each variant, ${FRAMES} frames each after ${WARMUP} warm-up frames), all interleaved frame by frame. Error against the converged float64 reference of the default scene.`,
     '',
     `### ${w}×${h}`,
     '',
@@ -212,7 +206,4 @@ async function main() {
   console.log(`\n${markdown}\n\nwrote ${OUTPUT.written}`);
 }
 
-main().catch((error) => {
-  console.error(error);
-  process.exit(1);
-});
+await main();

@@ -25,6 +25,8 @@
 // definition it precedes (e.g. an `#if SHADOWS` around a shadow-ray function): put helpers that
 // other code needs before an earlier replacement.
 
+import { countNewlines } from '../../../src/shadertoy/header.js';
+
 const DIRECTIVE = /^[ \t]*\/\/[ \t]*@replaces\b(.*)$/gm;
 const IDENT = /^[A-Za-z_]\w*$/;
 
@@ -48,7 +50,7 @@ export function scanTopLevel(source, label = 'source') {
   let start = -1;
   let header = ''; // code text of the current declaration up to its first `{` (comments dropped)
   let lineStart = true;
-  const lineOf = (index) => source.slice(0, index).split('\n').length;
+  const lineOf = (index) => countNewlines(source, index) + 1;
   for (let i = 0; i < source.length; ) {
     const c = source[i];
     if (c === '/' && source[i + 1] === '/') {

@@ -5,10 +5,12 @@ import fs from 'node:fs';
 import { afterAll, describe, expect, test } from 'vitest';
 import { composeImageShader, hostControlBlock } from '../../../src/shadertoy/header.js';
 import { parseControls } from '../../../src/shadertoy/controls.js';
-import { assertNotBlank, disconnect, mapShaderLog, renderRawShader } from '../../harness.js';
+import { SHADER_FILE } from '../../harness/config.js';
+import { assertNotBlank, differingPixels } from '../../harness/images.js';
+import { disconnect } from '../../harness/page.js';
+import { mapShaderLog, renderRawShader } from '../../harness/raw-webgl.js';
 import { ComposePeerError, composePeer, replacedNames, scanTopLevel } from './compose-peer.js';
 
-const PROJECT_FILE = new URL('../../../shaders/raytrace.glsl', import.meta.url);
 const PEERS = ['assignment', 'sdf', 'plain'];
 const peerSource = (name) => fs.readFileSync(new URL(`./${name}.glsl`, import.meta.url), 'utf8');
 
@@ -120,7 +122,7 @@ describe('composePeer', () => {
 });
 
 describe('the real peers with the real shader', () => {
-  const project = fs.readFileSync(PROJECT_FILE, 'utf8');
+  const project = fs.readFileSync(SHADER_FILE, 'utf8');
 
   test.each(PEERS)('%s composes: each replaced definition once, the control block untouched', (name) => {
     const peer = peerSource(name);
@@ -147,32 +149,22 @@ describe('the real peers with the real shader', () => {
 // edges (its camera's built-in sin/cos, its fixed epsilon).
 describe('composed peers in WebGL2 (SwiftShader)', () => {
   afterAll(disconnect);
-  const project = fs.readFileSync(PROJECT_FILE, 'utf8');
+  const project = fs.readFileSync(SHADER_FILE, 'utf8');
   const WIDTH = 160;
   const HEIGHT = 90;
 
   async function render(source, hostBlock, label) {
     const { code, firstSourceLine } = composeImageShader(source, { hostBlock });
     const raw = await renderRawShader(code, { width: WIDTH, height: HEIGHT });
-    if (raw.stage) throw new Error(`${label} fails to ${raw.stage}:\n${mapShaderLog(raw.log, { firstSourceLine, source, fileName: label })}`);
+    if (raw.stage) throw new Error(`${label} fails to ${raw.stage}:\n${mapShaderLog(raw.log, { code, firstSourceLine, source, fileName: label })}`);
     expect(raw.glError, `${label}: WebGL error`).toBe(0);
     assertNotBlank(raw, label);
     return raw;
   }
 
-  // Fraction of pixels below row `fromRow` whose largest channel difference exceeds `levels`.
-  function differing(a, b, levels, fromRow) {
-    let n = 0;
-    let total = 0;
-    for (let y = fromRow; y < a.height; y++) {
-      for (let x = 0; x < a.width; x++) {
-        const i = (y * a.width + x) * 4;
-        total++;
-        if (Math.max(...[0, 1, 2].map((c) => Math.abs(a.data[i + c] - b.data[i + c]))) > levels) n++;
-      }
-    }
-    return n / total;
-  }
+  // Fraction of pixels from row `fromRow` down whose largest channel difference exceeds `levels`
+  // (alpha is 1 in both: Shadertoy's main forces it).
+  const differing = (a, b, levels, fromRow) => differingPixels(a, b, levels, { fromRow }).fraction;
 
   test('every variant compiles and draws; sdf at 256 steps and plain draw the project\'s scene', async () => {
     const projectImage = await render(project, '', 'project');
@@ -201,7 +193,7 @@ describe('composed peers in WebGL2 (SwiftShader)', () => {
       // checks compilation and a draw, not the picture.
       const { code, firstSourceLine } = composeImageShader(source, { hostBlock: hostControlBlock(controls, values) });
       const raw = await renderRawShader(code, { width: 32, height: 18 });
-      if (raw.stage) throw new Error(`${name} with a host block fails to ${raw.stage}:\n${mapShaderLog(raw.log, { firstSourceLine, source, fileName: name })}`);
+      if (raw.stage) throw new Error(`${name} with a host block fails to ${raw.stage}:\n${mapShaderLog(raw.log, { code, firstSourceLine, source, fileName: name })}`);
       expect(raw.glError).toBe(0);
     }
   });

@@ -1,5 +1,5 @@
 // Injected into every test page before any of its own scripts run (page.evaluateOnNewDocument in
-// tests/harness.js). It removes every source of nondeterminism a frame could pick up, while the
+// tests/harness/page.js). It removes every source of nondeterminism a frame could pick up, while the
 // page's requestAnimationFrame loop keeps running:
 //
 //   Math.random, crypto.getRandomValues, crypto.randomUUID   seeded generator, same per document

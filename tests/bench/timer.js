@@ -1,0 +1,79 @@
+// The benchmark's timer: complete fragment shaders timed in one raw WebGL2 page
+// (tests/harness/raw-webgl.js), interleaved. Used by run.js and branches.js.
+
+import { decodeRgba } from '../harness/page.js';
+import { openRawPage } from '../harness/raw-webgl.js';
+
+/**
+ * Times complete fragment shaders in one plain WebGL2 canvas (no page code), interleaved: each
+ * round draws every shader once, so that a machine that speeds up or slows down during the run
+ * moves all of them alike. `warmup` untimed rounds (the first compiles SwiftShader's code), then
+ * `frames` timed rounds; a frame is a draw plus a 1-pixel readPixels, so that what is timed is
+ * the rendering. Then each shader's last frame is read back. Each frame is its own call into the
+ * page (no protocol timeout however slow), and `onRound(i)` can show progress.
+ * `shaders` is a list of { code, uniforms } where uniforms are { name, type, value } (float,
+ * int, bool, vecN), set after Shadertoy's own at their first-frame values (iTime 0, iMouse 0).
+ * @returns {Promise<Array<{times: number[], width, height, data: Buffer} | {error: string}>>}
+ */
+export async function timeShaders(shaders, { width, height, frames = 15, warmup = 3, onRound = () => {} }) {
+  // The benchmark needs the real clock: no deterministic injection here.
+  const { page, errors } = await openRawPage('benchmark', { deterministic: false });
+  try {
+    const setups = await page.evaluate(
+      (list, w, h) => {
+        const raw = window.__rawWebGL;
+        const gl = raw.context(w, h);
+        if (!gl) return list.map(() => ({ error: 'no WebGL2 context' }));
+        gl.viewport(0, 0, w, h);
+        const one = new Uint8Array(4);
+        const programs = list.map(({ code, uniforms }) => {
+          const built = raw.program(gl, code);
+          if (built.stage) return { error: `${built.stage}: ${built.log}` };
+          raw.setShadertoyUniforms(gl, built.program, { width: w, height: h });
+          for (const { name, type, value } of uniforms) raw.setUniform(gl, gl.getUniformLocation(built.program, name), type, value);
+          return { program: built.program };
+        });
+        window.__benchmark = {
+          frame(i) {
+            gl.useProgram(programs[i].program);
+            const start = performance.now();
+            gl.drawArrays(gl.TRIANGLES, 0, 3);
+            gl.readPixels(0, 0, 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, one);
+            return performance.now() - start;
+          },
+          pixels(i) {
+            gl.useProgram(programs[i].program);
+            gl.drawArrays(gl.TRIANGLES, 0, 3);
+            return raw.readBase64(gl, w, h);
+          },
+        };
+        return programs.map((p) => (p.error ? { error: p.error } : {}));
+      },
+      shaders.map(({ code, uniforms = [] }) => ({ code, uniforms })),
+      width,
+      height,
+    );
+    const live = setups.map((s, i) => (s.error ? null : i)).filter((i) => i !== null);
+    const times = shaders.map(() => []);
+    for (let round = 0; round < warmup + frames; round++) {
+      for (const i of live) {
+        const ms = await page.evaluate((k) => window.__benchmark.frame(k), i);
+        if (round >= warmup) times[i].push(ms);
+      }
+      onRound(round);
+    }
+    const results = [];
+    for (const [i, setup] of setups.entries()) {
+      if (setup.error) {
+        results.push(setup);
+        continue;
+      }
+      const data = await page.evaluate((k) => window.__benchmark.pixels(k), i);
+      results.push({ times: times[i], width, height, data: decodeRgba(data, width, height, 'benchmark frame') });
+    }
+    if (errors.length) throw new Error(`benchmark page logged errors:\n  ${errors.join('\n  ')}`);
+    return results;
+  } finally {
+    await page.close().catch(() => {});
+  }
+}

@@ -1,0 +1,18 @@
+// Where the harness finds and writes things, and the switches every part of it shares.
+import path from 'node:path';
+import { fileURLToPath } from 'node:url';
+
+export const REPO_ROOT = fileURLToPath(new URL('../..', import.meta.url));
+export const GOLDEN_DIR = path.join(REPO_ROOT, 'tests', 'golden');
+/** Failure images (actual, expected, diff): ignored by git. */
+export const OUTPUT_DIR = path.join(REPO_ROOT, 'tests', 'output');
+export const ENVIRONMENT_FILE = path.join(GOLDEN_DIR, 'ENVIRONMENT.json');
+export const SHADER_FILE = path.join(REPO_ROOT, 'shaders', 'raytrace.glsl');
+export const UPDATE_COMMAND = 'npm run test:update';
+/** Goldens are written only when this is set (by `npm run test:update`). */
+export const UPDATING = process.env.UPDATE_GOLDENS === '1';
+/** How long a page may take to load or answer (SwiftShader compiles on the CPU). */
+export const PAGE_TIMEOUT_MS = 90_000;
+
+/** A path as the messages show it: relative to the repository. */
+export const rel = (file) => path.relative(REPO_ROOT, file);

@@ -1,0 +1,165 @@
+// Opening the page and rendering views, in the test workers (one at a time: fileParallelism is
+// off). Every test file that renders connects to the browser setup.js started, opens pages with
+// the deterministic injection, and calls `disconnect` from its afterAll.
+
+import fs from 'node:fs';
+import puppeteer from 'puppeteer-core';
+import { fromBase64 } from '../../src/page/pixels.js';
+import { PAGE_TIMEOUT_MS } from './config.js';
+import { PAGE_PARAMS, viewQuery, viewSize } from '../views.js';
+
+const INJECTION_SOURCE = fs.readFileSync(new URL('./deterministic-injection.js', import.meta.url), 'utf8');
+
+let connection;
+let scriptContext;
+
+/** For scripts outside vitest: use the context that startHarness() returned (see withHarness). */
+export function useHarness(context) {
+  scriptContext = context;
+}
+
+/** What globalSetup provided (or a script set with useHarness): { wsEndpoint, baseUrl, environment }. */
+export async function harnessContext() {
+  if (scriptContext) return scriptContext;
+  const { inject } = await import('vitest');
+  const context = inject('harness');
+  if (!context) {
+    throw new Error('The harness did not start: tests/harness/setup.js must be the globalSetup of tests/vitest.config.js (run the tests with npm test).');
+  }
+  return context;
+}
+
+async function connect() {
+  if (!connection) {
+    connection = (async () => {
+      const context = await harnessContext();
+      const browser = await puppeteer.connect({ browserWSEndpoint: context.wsEndpoint, defaultViewport: null });
+      return { browser, context };
+    })();
+  }
+  return connection;
+}
+
+/** Call from afterAll in every test file that renders. */
+export async function disconnect() {
+  if (!connection) return;
+  const pending = connection;
+  connection = undefined;
+  const { browser } = await pending.catch(() => ({}));
+  if (browser?.connected) await browser.disconnect();
+}
+
+/**
+ * A fresh page with the deterministic injection (unless `deterministic: false`), collecting
+ * console errors and page errors.
+ * @returns {Promise<{page: import('puppeteer-core').Page, errors: string[], context: object}>}
+ */
+export async function openPage({ deterministic = true } = {}) {
+  const { browser, context } = await connect();
+  const page = await browser.newPage();
+  const errors = [];
+  page.on('console', (message) => {
+    if (message.type() !== 'error') return;
+    const { url, lineNumber } = message.location() ?? {};
+    errors.push(`console.error: ${message.text()}${url ? ` (${url}${lineNumber !== undefined ? `:${lineNumber + 1}` : ''})` : ''}`);
+  });
+  page.on('pageerror', (error) => errors.push(`page error: ${error?.message ?? error}`));
+  page.on('error', (error) => errors.push(`page crashed: ${error?.message ?? error}`));
+  page.setDefaultTimeout(PAGE_TIMEOUT_MS);
+  await page.setViewport({ width: 800, height: 600, deviceScaleFactor: 1 });
+  // Every page loads fresh from the server: no 304s, nothing left over from an earlier test.
+  await page.setCacheEnabled(false);
+  if (deterministic) await page.evaluateOnNewDocument(INJECTION_SOURCE);
+  return { page, errors, context };
+}
+
+/** The RGBA bytes of a base64 string from a page, checked to be width x height pixels. */
+export function decodeRgba(base64, width, height, what) {
+  const bytes = fromBase64(base64);
+  if (bytes.length !== width * height * 4) {
+    throw new Error(`${what}: ${bytes.length} bytes of pixels for ${width}x${height} (expected ${width * height * 4})`);
+  }
+  return Buffer.from(bytes.buffer, bytes.byteOffset, bytes.byteLength);
+}
+
+/**
+ * Opens the page at a view (tests/views.js), waits until `window.raytracer.ready`, and reads one
+ * rendered frame. Throws if the page reports a WebGL/compile error, logs a console error or
+ * throws, renders a frame of the wrong size, or does not report the view's controls and time as
+ * its current values (window.raytracer.info()).
+ * @returns {Promise<{width:number, height:number, data:Buffer, url:string, frame:number, info:object}>}
+ */
+export async function renderView(view) {
+  try {
+    return await renderViewOnce(view);
+  } catch (error) {
+    // Vite reloads a page when it discovers a dependency to pre-bundle during the load. That is
+    // the dev server, not the page: try once more, and say so.
+    if (!error.selfNavigated) throw error;
+    console.warn(`${view.name}: the page reloaded itself during the test (${error.message.split('\n')[0]}); retrying once`);
+    return await renderViewOnce(view);
+  }
+}
+
+async function renderViewOnce(view) {
+  const { page, errors, context } = await openPage();
+  const url = context.baseUrl + viewQuery(view);
+  const [width, height] = viewSize(view);
+  let navigations = 0;
+  page.on('framenavigated', (frame) => {
+    if (frame === page.mainFrame()) navigations++;
+  });
+  const fail = (message) => {
+    const logged = errors.length ? `\nThe page logged:\n  ${errors.join('\n  ')}` : '';
+    const error = new Error(`${view.name} (${url}): ${message}${logged}`);
+    error.selfNavigated = navigations > 1;
+    return error;
+  };
+  try {
+    const response = await page.goto(url, { waitUntil: 'load' });
+    if (!response || (!response.ok() && response.status() !== 304)) throw fail(`the page answered HTTP ${response?.status()}`);
+    await page
+      .waitForFunction(() => window.raytracer || document.documentElement.dataset.error, { polling: 100 })
+      .catch(() => {
+        throw fail('window.raytracer never appeared');
+      });
+    const result = await page
+      .evaluate(async () => {
+        const datasetError = () => document.documentElement.dataset.error;
+        if (!window.raytracer) return { error: `page error: ${datasetError()}` };
+        try {
+          await window.raytracer.ready;
+        } catch (error) {
+          return { error: `raytracer.ready rejected: ${error?.message ?? error}; data-error: ${datasetError() ?? '(none)'}` };
+        }
+        const pixels = await window.raytracer.readPixels();
+        const canvas = document.querySelector('canvas[data-frame]');
+        const frame = canvas ? Number(canvas.dataset.frame) : NaN;
+        const info = window.raytracer.info();
+        return { pixels, frame, info: JSON.parse(JSON.stringify(info)), datasetError: datasetError() };
+      })
+      .catch((error) => {
+        throw fail(`${error.message}${navigations > 1 ? ` (the page navigated ${navigations} times)` : ''}`);
+      });
+    if (result.error) throw fail(result.error);
+    if (result.datasetError) throw fail(`the page reports an error: ${result.datasetError}`);
+    if (!(result.frame >= 1)) throw fail(`no rendered frame: canvas data-frame is ${result.frame}`);
+    const { pixels, info } = result;
+    if (pixels.width !== width || pixels.height !== height) {
+      throw fail(`readPixels returned ${pixels.width}x${pixels.height}, the view asks for ${width}x${height}`);
+    }
+    const ignored = Object.entries(view.params)
+      .filter(([name]) => !PAGE_PARAMS.has(name))
+      .filter(([name, value]) => JSON.stringify(info?.controls?.[name]) !== JSON.stringify(value))
+      .map(([name, value]) => `${name}: asked ${JSON.stringify(value)}, page uses ${JSON.stringify(info?.controls?.[name])}`);
+    if (ignored.length) throw fail(`the page did not apply the view's controls:\n  ${ignored.join('\n  ')}`);
+    if ('time' in view.params && (info?.time !== view.params.time || info?.playing !== false)) {
+      throw fail(`asked for time=${view.params.time} paused, page reports time=${info?.time} playing=${info?.playing}`);
+    }
+    const data = decodeRgba(pixels.data, width, height, view.name);
+    if (errors.length) throw fail('console errors or page errors while rendering');
+    return { width, height, data, url, frame: result.frame, info };
+  } finally {
+    await page.close().catch(() => {});
+  }
+}

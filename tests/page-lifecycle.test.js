@@ -1,0 +1,138 @@
+// What happens to a running page when things go wrong or change under it, in the real browser:
+// a shader that fails on load, a lost GPU context, no WebGL2 at all, and the dev server's shader
+// reload (a shader file edited while the page runs).
+import fs from 'node:fs';
+import path from 'node:path';
+import { afterAll, describe, expect, test } from 'vitest';
+import { REPO_ROOT, SHADER_FILE } from './harness/config.js';
+import { sameImage } from './harness/images.js';
+import { disconnect } from './harness/page.js';
+import { startWatchingServer } from './harness/setup.js';
+import { info, overlayText, pixel, readPixels, solid, withPage, withServedDir } from './page-helpers.js';
+
+afterAll(disconnect);
+
+const SIZE = 'size=160x90';
+const PATTERN = `?shader=examples/pattern.glsl&${SIZE}&time=2`;
+
+describe('errors', () => {
+  test('a shader that fails on load: the alert names the line, nothing else runs, nothing throws', async () => {
+    await withServedDir('test-broken', async (dir, base) => {
+      fs.writeFileSync(path.join(dir, 'broken.glsl'), '// line 1\n// line 2\nvoid mainImage(out vec4 c, in vec2 f) {\n    c = vec3(1.0);\n}\n');
+      await withPage(async ({ page, goto }) => {
+        await goto(`?shader=${base}/broken.glsl&${SIZE}&time=0`, { expectReady: false });
+        await page.waitForFunction(() => document.documentElement.dataset.error === 'shader-compile');
+        const alert = await overlayText(page);
+        expect(alert).toContain('broken.glsl did not compile');
+        expect(alert).toContain('broken.glsl:4:');
+      });
+    });
+  });
+
+  test('a lost WebGL context shows an alert and comes back with the same picture', async () => {
+    await withPage(async ({ page, goto }) => {
+      await goto(PATTERN);
+      const before = await readPixels(page);
+      await page.evaluate(() => {
+        window.__loseContext = document.getElementById('view').getContext('webgl2').getExtension('WEBGL_lose_context');
+        window.__loseContext.loseContext();
+      });
+      await page.waitForFunction(() => window.raytracer.info().contextLost && !document.querySelector('[role="alert"]').hidden);
+      expect(await overlayText(page)).toContain('GPU context was lost');
+      await page.evaluate(() => window.__loseContext.restoreContext());
+      await page.waitForFunction(() => !window.raytracer.info().contextLost && document.querySelector('[role="alert"]').hidden);
+      const after = await readPixels(page);
+      expect(sameImage(after, before), 'the restored context draws the same picture').toBe(true);
+    });
+  });
+
+  test('no WebGL2: a clear message, not a blank page', async () => {
+    await withPage(
+      async ({ page, goto }) => {
+        await goto(PATTERN, { expectReady: false });
+        expect(await page.evaluate(() => document.documentElement.dataset.error)).toBe('webgl2');
+        const alert = await overlayText(page);
+        expect(alert).toContain('WebGL2 is not available');
+        expect(alert).toMatch(/browser or GPU provides no WebGL2/);
+        const rejected = await page.evaluate(() => window.raytracer.ready.then(() => null, (e) => e.message));
+        expect(rejected).toMatch(/WebGL2/);
+      },
+      {
+        beforeLoad: (page) =>
+          page.evaluateOnNewDocument(() => {
+            const getContext = HTMLCanvasElement.prototype.getContext;
+            HTMLCanvasElement.prototype.getContext = function (type, ...rest) {
+              return type === 'webgl2' ? null : getContext.call(this, type, ...rest);
+            };
+          }),
+      },
+    );
+  });
+});
+
+describe('development: editing a shader file reloads it without reloading the page', () => {
+  /**
+   * Opens `query` on a page server that watches files, runs `body(page)`, and checks that the
+   * page is still the same document after it (nothing reloaded the page).
+   */
+  async function onWatchingServer(query, body) {
+    const server = await startWatchingServer();
+    try {
+      await withPage(async ({ page, goto }) => {
+        await goto(query, { base: server.baseUrl });
+        await page.evaluate(() => (window.__sameDocument = true));
+        await body(page);
+        expect(await page.evaluate(() => window.__sameDocument)).toBe(true);
+      });
+    } finally {
+      await server.close();
+    }
+  }
+
+  /** Does `touch()` and waits `ms`, again until `changed()` or 30 s: the watcher may still be starting. */
+  async function touchUntil(touch, ms, changed) {
+    const deadline = Date.now() + 30_000;
+    do {
+      touch();
+      await new Promise((r) => setTimeout(r, ms));
+    } while (!(await changed()) && Date.now() < deadline);
+  }
+
+  // A temporary file in each served folder: public/ (as ?shader=NAME.glsl) and shaders/ (served
+  // by vite.config.js as /shaders/NAME.glsl). The page runs it from a server that watches files.
+  test.each([
+    ['public/', path.join(REPO_ROOT, 'public'), ''],
+    ['shaders/', path.join(REPO_ROOT, 'shaders'), 'shaders/'],
+  ])('a file under %s', async (_, dir, prefix) => {
+    const name = `hmr-test-${process.pid}.glsl`;
+    const file = path.join(dir, name);
+    fs.writeFileSync(file, solid(200, 0, 0));
+    try {
+      await onWatchingServer(`?shader=${prefix}${name}&size=32x18&time=0`, async (page) => {
+        expect(pixel(await readPixels(page), 5, 5)).toEqual([200, 0, 0]);
+        let colour;
+        await touchUntil(() => fs.writeFileSync(file, solid(0, 0, 200)), 300, async () => (colour = pixel(await readPixels(page), 5, 5))[2] === 200);
+        expect(colour).toEqual([0, 0, 200]);
+        expect(await info(page)).toMatchObject({ origin: 'url', fileName: name });
+      });
+    } finally {
+      fs.rmSync(file, { force: true });
+    }
+  });
+
+  // The built-in shader comes in through a `?raw` import: Vite's own hot update. Only the file's
+  // modification time is touched (the content is never rewritten, so no edit can be lost).
+  test('shaders/raytrace.glsl, the built-in shader', async () => {
+    await onWatchingServer('?size=32x18&time=0', async (page) => {
+      const before = (await info(page)).compiled;
+      let compiled;
+      const touch = () => {
+        const now = new Date();
+        fs.utimesSync(SHADER_FILE, now, now);
+      };
+      await touchUntil(touch, 400, async () => (compiled = (await info(page)).compiled) !== before);
+      expect(compiled).toBeGreaterThan(before);
+      expect(await info(page)).toMatchObject({ origin: 'builtin', fileName: 'shaders/raytrace.glsl' });
+    });
+  });
+});
