@@ -28,7 +28,7 @@ import { imageError } from '../../src/reference/error.js';
 import { median } from '../../src/page/stats.js';
 import { REPO_ROOT, SHADER_FILE } from '../harness/config.js';
 import { rendererLabel, withHarness } from '../harness/setup.js';
-import { replaceMarkedSection } from '../readme-section.js';
+import { replaceMarkedSection } from '../scripts/readme-section.js';
 import { timeShaders } from './timer.js';
 import { composePeer } from './peers/compose-peer.js';
 import { renderReferenceParallel } from './reference.js';

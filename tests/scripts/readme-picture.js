@@ -4,10 +4,10 @@
 //   npm run picture        writes public/scene.png
 
 import path from 'node:path';
-import { REPO_ROOT, rel } from './harness/config.js';
-import { assertNotBlank, writePng } from './harness/images.js';
-import { renderView } from './harness/page.js';
-import { withHarness } from './harness/setup.js';
+import { REPO_ROOT, rel } from '../harness/config.js';
+import { assertNotBlank, writePng } from '../harness/images.js';
+import { renderView } from '../harness/page.js';
+import { withHarness } from '../harness/setup.js';
 
 const VIEW = { name: 'readme', params: { time: 0, SAMPLES: 4 }, size: [960, 540] };
 

@@ -8,13 +8,13 @@
 
 import fs from 'node:fs';
 import path from 'node:path';
-import { renderReference } from '../src/reference/render.js';
-import { imageError } from '../src/reference/error.js';
-import { REPO_ROOT, SHADER_FILE } from './harness/config.js';
-import { renderView } from './harness/page.js';
-import { rendererLabel, withHarness } from './harness/setup.js';
-import { HARD_VIEWS, referenceView } from './hard-views.js';
-import { DEFAULT_SIZE, viewSize } from './views.js';
+import { renderReference } from '../../src/reference/render.js';
+import { imageError } from '../../src/reference/error.js';
+import { REPO_ROOT, SHADER_FILE } from '../harness/config.js';
+import { renderView } from '../harness/page.js';
+import { rendererLabel, withHarness } from '../harness/setup.js';
+import { HARD_VIEWS, referenceView } from '../hard-views.js';
+import { DEFAULT_SIZE, viewSize } from '../views.js';
 import { replaceMarkedSection } from './readme-section.js';
 
 const CONVERGED_SAMPLES_PER_AXIS = 8;
