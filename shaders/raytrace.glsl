@@ -7,13 +7,18 @@
 // - the sphere and cone quadratics use cancellation-free discriminants and stable roots;
 // - no global epsilon: secondary rays skip the convex solid they leave, and a ray that starts
 //   inside a solid is pushed off its surface by a few ulps;
-// - the ground texture is box-filtered over each sample's footprint (a ray cone).
+// - the ground texture is filtered over each sample's footprint: exactly for the eye ray (the
+//   parallelogram its ray differentials span), over a ray cone's width for reflected rays;
+// - pixels on an edge (a silhouette, crease, shadow boundary or reflected silhouette) take more
+//   samples when ADAPTIVE_AA is on, found from derivatives over each 2x2 pixel quad.
 
 // ---- controls --------------------------------------------------------------------------------
 // Shadertoy compiles this block as it stands; a host defines HOST_CONTROLS and declares the same
 // names itself (a #define is compile-time, a const becomes a uniform). Syntax: src/shadertoy/controls.js.
 #ifndef HOST_CONTROLS
-#define SAMPLES 1                                      // ui: Samples per pixel | 1, 4, 9, 16
+#define SAMPLES 1                                      // ui: Samples per pixel (per edge pixel when adaptive) | 1, 4, 9, 16
+#define ADAPTIVE_AA 1                                  // ui: Adaptive anti-aliasing | toggle
+#define SHOW_AA_PIXELS 0                               // ui: Show pixels with extra samples | toggle
 #define BOUNCES 3                                      // ui: Reflection bounce limit | 0 .. 4
 #define SHADOWS 1                                      // ui: Shadows | toggle
 #define TEXTURE 0                                      // ui: Ground texture | Stripes, Checkerboard
@@ -295,50 +300,69 @@ vec3 objectColor(int id) {
     return id == ID_SPHERE ? SPHERE_COLOR : (id == ID_CUBE ? CUBE_COLOR : CONE_COLOR);
 }
 
-// Box filters of width w centred on x, for the two ground patterns. Each uses the closed-form
-// integral of its pattern, so a footprint of any width costs the same.
-//   fract:        integral F(x) = floor(x) / 2 + fract(x)^2 / 2
-//   square wave:  s(x) = floor(x) mod 2, integral S(x) = floor(x / 2) + max(2 fract(x / 2) - 1, 0)
-// Both are evaluated on x already reduced to [0, 2), where the differences lose no digits.
-// Inside one period the average is the pattern at the centre, exactly; the integrals' difference
-// would lose digits there (and is 0/0 for w = 0). Both are computed and one is selected: a
-// select costs SwiftShader less than a branch, which it would run both sides of anyway.
-float filteredFract(float x, float w) {
-    float lo = x - 0.5 * w, hi = x + 0.5 * w;
-    float fLo = 0.5 * floor(lo) + 0.5 * fract(lo) * fract(lo);
-    float fHi = 0.5 * floor(hi) + 0.5 * fract(hi) * fract(hi);
-    float average = (fHi - fLo) / w;
-    return floor(lo) == floor(hi) ? fract(x) : average;
+// The two ground patterns, each with its first and second integrals (P1' = P, P2' = P1), both
+// continuous, so that a filtered pattern costs the same for a footprint of any width:
+//   stripes, fract:  P1(x) = floor(x)/2 + r^2/2,  P2(x) = x^2/4 - floor(x)/12 - r^2/4 + r^3/6,  r = fract(x)
+//   checkers, the square wave s(x) = floor(x) mod 2, with k = floor(x/2), y = x - 2k:
+//                    P1(x) = k + max(y - 1, 0),  P2(x) = k(k - 1) + k/2 + k y + max(y - 1, 0)^2 / 2
+#if TEXTURE == 0
+float pattern(float x) { return fract(x); }
+float patternIntegral(float x) {
+    float r = fract(x);
+    return 0.5 * floor(x) + 0.5 * r * r;
 }
-
-float integralSquareWave(float x) {
+float patternIntegral2(float x) {
+    float r = fract(x);
+    return 0.25 * x * x - floor(x) / 12.0 - 0.25 * r * r + r * r * r / 6.0;
+}
+#else
+float pattern(float x) { return mod(floor(x), 2.0); }
+float patternIntegral(float x) {
     return floor(0.5 * x) + max(2.0 * fract(0.5 * x) - 1.0, 0.0);
 }
+float patternIntegral2(float x) {
+    float k = floor(0.5 * x), over = max(x - 2.0 * k - 1.0, 0.0);
+    return k * (k - 1.0) + 0.5 * k + k * (x - 2.0 * k) + 0.5 * over * over;
+}
+#endif
 
-float filteredSquareWave(float x, float w) {
-    float lo = x - 0.5 * w, hi = x + 0.5 * w;
-    float average = (integralSquareWave(hi) - integralSquareWave(lo)) / w;
-    return floor(lo) == floor(hi) ? mod(floor(x), 2.0) : average;
+// The pattern averaged over x + U, U the sum of two independent uniform offsets of widths wa and
+// wb: a footprint spanned by two vectors (a pixel's parallelogram on the ground), projected on
+// one world axis, is exactly that; a ray cone's width is wb = 0. Its density is a trapezoid, so
+// the average is the second difference of P2 over 4ab (a, b the half-widths, a >= b); for
+// b < a/64 it is within 1e-4 of the box of width 2a, (P1(x + a) - P1(x - a)) / 2a, which is used
+// instead there: the second difference would lose about a/b of float32's digits to cancellation.
+// Inside one linear piece of the pattern the average is the pattern at the centre, exactly.
+// Both patterns repeat every 2, so x moves by a multiple of 2 next to 0 first: P2 then takes
+// small arguments (its second differences do not change: P2 gains a linear term per period).
+float filteredPattern(float x, float wa, float wb) {
+    float a = 0.5 * max(wa, wb), b = 0.5 * min(wa, wb);
+    float x0 = x - 2.0 * floor(0.5 * x + 0.5);
+    float box = (patternIntegral(x0 + a) - patternIntegral(x0 - a)) / (2.0 * a);
+    float trapezoid = (patternIntegral2(x0 + a + b) - patternIntegral2(x0 + a - b)
+                     - patternIntegral2(x0 - a + b) + patternIntegral2(x0 - a - b)) / (4.0 * a * b);
+    float filtered = 64.0 * b < a ? box : trapezoid;
+    return floor(x0 - a - b) == floor(x0 + a + b) ? pattern(x) : filtered;
 }
 
-// Ground albedo at texture coordinate uv (world xz reduced modulo 2) for a footprint of
-// footprint.x along x and footprint.y along z.
-vec3 groundColor(vec2 uv, vec2 footprint) {
+// Ground albedo at texture coordinate uv (world xz reduced modulo 2) for a footprint whose two
+// spanning vectors have the extents footprint.xy along x and footprint.zw along z.
+vec3 groundColor(vec2 uv, vec4 footprint) {
 #if TEXTURE == 0
     // The assignment's stripes: (fract(x) + 0.3) * vec3(0.8, 0.5, 0.2).
 #if TEXTURE_FILTER
-    float stripe = filteredFract(uv.x, footprint.x);
+    float stripe = filteredPattern(uv.x, footprint.x, footprint.y);
 #else
-    float stripe = fract(uv.x);
+    float stripe = pattern(uv.x);
 #endif
     return (stripe + STRIPE_OFFSET) * STRIPE_COLOR;
 #else
-    // The lecture's checkerboard; the filtered XOR of two independent box-filtered square
-    // waves is sx + sz - 2 sx sz (the box filter is separable).
+    // The lecture's checkerboard; the filtered XOR of two square waves filtered one by one is
+    // sx + sz - 2 sx sz (exact for footprints along the axes, close for the others).
 #if TEXTURE_FILTER
-    float sx = filteredSquareWave(uv.x, footprint.x), sz = filteredSquareWave(uv.y, footprint.y);
+    float sx = filteredPattern(uv.x, footprint.x, footprint.y), sz = filteredPattern(uv.y, footprint.z, footprint.w);
 #else
-    float sx = mod(floor(uv.x), 2.0), sz = mod(floor(uv.y), 2.0);
+    float sx = pattern(uv.x), sz = pattern(uv.y);
 #endif
     return mix(CHECKER_LIGHT, CHECKER_DARK, sx + sz - 2.0 * sx * sz);
 #endif
@@ -391,8 +415,20 @@ float coneRadiusAt(float heightAboveBase) {
     return CONE_RADIUS * max(1.0 - heightAboveBase / CONE_HEIGHT, 0.0);
 }
 
+// An eye ray, and how its direction changes across the footprint of its sample along image x and
+// y: ray differentials (Igehy, "Tracing ray differentials", 1999). They give the exact
+// footprint of the sample where the eye ray meets the ground.
+struct EyeRay {
+    vec3 dir;
+    vec3 dirDx, dirDy;
+};
+
 // Radiance along one eye ray. coneSpread is the angle one sample subtends: the ray cone that
-// sizes the texture filter (Akenine-Moeller et al., Ray Tracing Gems ch. 20).
+// sizes the texture filter of reflected rays (Akenine-Moeller et al., Ray Tracing Gems ch. 20);
+// the eye ray's own ground hit is filtered over its exact footprint, from its differentials.
+// key returns what the eye ray saw, for the adaptive anti-aliasing's edge test (mainImage):
+// the object it hit, whether that point is lit, and the object its reflection hit; and the
+// normal there.
 //
 // Cost: SwiftShader (the CPU WebGL of the tests and the benchmark) runs a 2x2 pixel quad as SIMD
 // lanes and executes both sides of every `if`; only loop iterations that no lane needs are
@@ -400,12 +436,15 @@ float coneRadiusAt(float heightAboveBase) {
 // the exit at the bottom. A loop whose condition is tested at the top runs its body once more
 // with every lane masked off (tests/bench/branches.js measures it: a 60-sin() body costs 1, 2,
 // 3, 4 bodies for 0, 1, 2, 3 trips, and 1, 2 bodies for 1, 2 trips written this way).
-vec3 radiance(Scene s, vec3 rd, float coneSpread) {
+vec3 radiance(Scene s, EyeRay eye, float coneSpread, out vec3 key, out vec3 keyNormal) {
+    vec3 rd = eye.dir;
     vec3 ro = vec3(0.0);
     vec3 color = vec3(0.0);
     float throughput = 1.0;
     float coneWidth = 0.0;
     Hit hit = traceScene(s, ro, rd, ID_NONE, T_MAX);
+    key = vec3(float(hit.id), 0.0, float(ID_NONE));
+    keyNormal = hit.n;
     if (hit.id == ID_NONE) return skyColor(rd);
     for (int bounce = 0;; bounce++) {
         vec3 n = hit.n;
@@ -413,7 +452,13 @@ vec3 radiance(Scene s, vec3 rd, float coneSpread) {
         bool inside = dot(rd, n) > 0.0;
         vec3 p = reprojectOnSurface(s, ro + hit.t * rd, n, id);
         coneWidth += coneSpread * hit.t;
-        vec3 ground = groundColor(mod(s.textureOrigin + p.xz, 2.0), groundFootprint(rd, coneWidth));
+        // The ground's footprint: for the eye ray the parallelogram its differentials span on the
+        // plane, dp = t (dd - d (n.dd) / (n.d)) with n = +y; for a reflected ray its cone's.
+        vec3 dpdx = hit.t * (eye.dirDx - rd * (eye.dirDx.y / rd.y));
+        vec3 dpdy = hit.t * (eye.dirDy - rd * (eye.dirDy.y / rd.y));
+        vec2 cone = groundFootprint(rd, coneWidth);
+        vec4 footprint = bounce == 0 ? abs(vec4(dpdx.x, dpdy.x, dpdx.z, dpdy.z)) : vec4(cone.x, 0.0, cone.y, 0.0);
+        vec3 ground = groundColor(mod(s.textureOrigin + p.xz, 2.0), footprint);
         vec3 albedo = mix(objectColor(id), ground, bvec3(id == ID_GROUND));
 
         // A surface seen from inside its closed solid gets no direct light: the solid itself
@@ -428,6 +473,7 @@ vec3 radiance(Scene s, vec3 rd, float coneSpread) {
         lit = all(bvec2(lit, !blocked));
 #endif
         vec3 local = shadeLocal(l, n, rd, albedo, facing, lit);
+        key.y = bounce == 0 ? float(lit) : key.y;
 
         float mirror = s.reflectivity[id];
         // At the bounce limit the surface keeps all its weight as local colour, so lowering the
@@ -451,6 +497,7 @@ vec3 radiance(Scene s, vec3 rd, float coneSpread) {
         // eligible, and start a few ulps inside the surface.
         ro = mix(p, offsetAlong(p, -n), bvec3(inside));
         hit = traceScene(s, ro, rd, inside ? ID_NONE : id, T_MAX);
+        key.z = bounce == 0 ? float(hit.id) : key.z;
         if (hit.id == ID_NONE) {
             color += throughput * skyColor(rd);
             break;
@@ -515,29 +562,73 @@ Camera orbitCamera() {
     return c;
 }
 
-// The eye ray through a point of the image, in pixels.
-vec3 primaryRay(Camera c, vec2 pixel) {
+// The eye ray through a point of the image, in pixels, for a sample that stands for a square of
+// footprint pixels on a side. The derivative of normalize(v) along dv is (dv - d (d.dv)) / |v|.
+EyeRay eyeRay(Camera c, vec2 pixel, float footprint) {
     vec2 uv = (2.0 * pixel - iResolution.xy) / iResolution.y;
-    return normalize(-c.back + c.tanHalfFov * (uv.x * c.right + uv.y * c.up));
+    vec3 v = -c.back + c.tanHalfFov * (uv.x * c.right + uv.y * c.up);
+    EyeRay ray;
+    ray.dir = normalize(v);
+    float step = 2.0 * c.tanHalfFov * footprint / iResolution.y;  // |dv| across the footprint
+    float invLength = inversesqrt(dot(v, v));
+    ray.dirDx = step * (c.right - ray.dir * dot(ray.dir, c.right)) * invLength;
+    ray.dirDy = step * (c.up - ray.dir * dot(ray.dir, c.up)) * invLength;
+    return ray;
 }
 
 void mainImage(out vec4 fragColor, in vec2 fragCoord) {
     Camera camera = orbitCamera();
     Scene s = sceneRelativeTo(camera.eyeLocal);
-    float coneSpread = 2.0 * camera.tanHalfFov / (iResolution.y * float(SAMPLES_PER_AXIS));
+    const int N = SAMPLES_PER_AXIS;
+    float pixelSpread = 2.0 * camera.tanHalfFov / iResolution.y;
+    vec3 key, keyNormal;
+    bool edge = false;
 #if SAMPLES_PER_AXIS == 1
-    // One sample at the pixel centre, with no loop around it: a loop costs SwiftShader one more
-    // pass over its body than it has iterations (see radiance), and this body is the whole trace.
-    vec3 linear = radiance(s, primaryRay(camera, fragCoord), coneSpread);
-#else
-    vec3 sum = vec3(0.0);
+    // One sample at the pixel centre, the whole pixel its footprint, and no loop around it (a
+    // loop costs SwiftShader one more pass over its body than it has trips; see radiance).
+    vec3 linear = radiance(s, eyeRay(camera, fragCoord, 1.0), pixelSpread, key, keyNormal);
+#elif ADAPTIVE_AA
+    vec3 linear = vec3(0.0);
     for (int i = 0;; i++) {
-        // Stratified: the centres of an n x n grid of sub-pixels, row by row.
-        vec2 offset = (vec2(i % SAMPLES_PER_AXIS, i / SAMPLES_PER_AXIS) + 0.5) / float(SAMPLES_PER_AXIS) - 0.5;
-        sum += radiance(s, primaryRay(camera, fragCoord + offset), coneSpread);
-        if (i == SAMPLES_PER_AXIS * SAMPLES_PER_AXIS - 1) break;
+        // Trip 0: the pixel centre, the whole pixel its footprint. Then, for a pixel near an edge,
+        // the n x n grid of sub-pixel centres, each a 1/n-pixel footprint (the centre sample is
+        // dropped: an edge pixel gets exactly what uniform supersampling gives it).
+        int cell = max(i - 1, 0);  // (GLSL leaves % of a negative number undefined)
+        vec2 offset = (vec2(cell % N, cell / N) + 0.5) / float(N) - 0.5;
+        float footprint = i == 0 ? 1.0 : 1.0 / float(N);
+        vec3 c = radiance(s, eyeRay(camera, fragCoord + (i == 0 ? vec2(0.0) : offset), footprint), pixelSpread * footprint, key, keyNormal);
+        if (i == 0) {
+            // Near an edge the first sample cannot resolve (a silhouette, a crease, a shadow
+            // boundary, the silhouette of a reflection)? The 2x2 pixel quad knows it for free: the
+            // derivatives of what each pixel's first sample saw. Derivatives are defined only in
+            // uniform control flow: trip 0 is, since no pixel can leave the loop before its first
+            // exit test, at the bottom. The ground's stripes are already filtered over each
+            // pixel's footprint: they are not in the key.
+            // Any change of object, of lit or shadowed, or of the object seen in the first
+            // reflection; or a normal that turns by more than a crease would (the sum of the
+            // absolute changes of its components over the quad: at most ~0.1 across a pixel of the
+            // sphere at 640x360, at least 1 across an edge of the cube).
+            vec3 keyStep = abs(dFdx(key)) + abs(dFdy(key));
+            float normalStep = dot(abs(dFdx(keyNormal)) + abs(dFdy(keyNormal)), vec3(1.0));
+            edge = any(bvec2(any(greaterThan(keyStep, vec3(0.0))), normalStep > 0.5));
+        }
+        linear = i <= 1 ? c : linear + c;
+        if (any(bvec2(!edge, i == N * N))) break;
     }
-    vec3 linear = sum / float(SAMPLES_PER_AXIS * SAMPLES_PER_AXIS);
+    linear = edge ? linear / float(N * N) : linear;
+#else
+    // Uniform supersampling: the n x n grid of sub-pixel centres, row by row.
+    vec3 linear = vec3(0.0);
+    for (int i = 0;; i++) {
+        vec2 offset = (vec2(i % N, i / N) + 0.5) / float(N) - 0.5;
+        linear += radiance(s, eyeRay(camera, fragCoord + offset, 1.0 / float(N)), pixelSpread / float(N), key, keyNormal);
+        if (i == N * N - 1) break;
+    }
+    linear /= float(N * N);
+#endif
+#if SHOW_AA_PIXELS
+    // The pixels that took extra samples in magenta, over the picture in grey.
+    linear = edge ? vec3(1.0, 0.0, 1.0) : vec3(0.25 + 0.5 * dot(linear, vec3(0.299, 0.587, 0.114)));
 #endif
     fragColor = vec4(clamp(linear, 0.0, 1.0), 1.0);
 }

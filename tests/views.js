@@ -45,7 +45,12 @@ export const VIEWS = [
   { name: 'bounces-max', params: { time: 0, BOUNCES: 4, ...MIRROR_GAP }, contrast: { BOUNCES: 3 } },
   { name: 'no-shadows', params: { time: 0, SHADOWS: 0 } },
   { name: 'changed-control', params: { time: 0, CONE_HEIGHT: 2.6, LIGHT_POSITION: [-4, 5, 2] } },
-  { name: 'aa', params: { time: 0, SAMPLES: 4 } },
+  // Uniform supersampling: every pixel takes the 2x2 grid.
+  { name: 'aa', params: { time: 0, SAMPLES: 4, ADAPTIVE_AA: 0 } },
+  // Adaptive anti-aliasing: pixels on an edge take the 4x4 grid, the others one sample ...
+  { name: 'adaptive-aa', params: { time: 0, SAMPLES: 16 } },
+  // ... and which pixels those are (magenta), over the picture in grey.
+  { name: 'aa-pixels', params: { time: 0, SAMPLES: 16, SHOW_AA_PIXELS: 1 } },
 ];
 
 // ------------------------------------------------------------------------------------------------

@@ -4,13 +4,15 @@
 //
 // Two modes:
 // - 'same-rays': the shader's own sample positions and texture filter, so the difference to the
-//   shader's image is arithmetic error alone;
+//   shader's image is arithmetic error alone (with adaptive anti-aliasing, which pixels took extra
+//   samples is the shader's decision, read from its "Show pixels with extra samples" view);
 // - 'converged': many stratified, jittered samples per pixel and the texture point-sampled, so
 //   the difference is the shader's total error, aliasing included.
 
 import { parseControls, parseConstants, controlDefaults, coerceControlValue } from '../shadertoy/controls.js';
 import { intersectPlane, intersectSphere, intersectBox, intersectCone } from './intersectors.js';
 import { add, sub, scale, addScaled, dot, length, normalize, reflect, mix } from './vec3.js';
+import { PATTERNS, filteredPattern, groundFootprint } from './texture.js';
 
 const DEG = Math.PI / 180;
 const ID_NONE = -1;
@@ -38,26 +40,6 @@ export function referenceSettings(shaderSource, overrides = {}) {
     values[name] = coerced;
   }
   return { ...parseConstants(shaderSource), ...values };
-}
-
-// Integrals of the two ground patterns (see groundColor in the shader), for the box filter.
-const integralFract = (x) => 0.5 * Math.floor(x) + 0.5 * (x - Math.floor(x)) ** 2;
-const integralSquareWave = (x) => Math.floor(0.5 * x) + Math.max(2 * (0.5 * x - Math.floor(0.5 * x)) - 1, 0);
-const fract = (x) => x - Math.floor(x);
-const squareWave = (x) => Math.floor(x) - 2 * Math.floor(0.5 * x);
-function boxFiltered(pattern, integral, x, w) {
-  if (!(w > 0) || Math.floor(x - 0.5 * w) === Math.floor(x + 0.5 * w)) return pattern(x);
-  return (integral(x + 0.5 * w) - integral(x - 0.5 * w)) / w;
-}
-
-function groundFootprint(rd, coneWidth) {
-  const h2 = rd[0] * rd[0] + rd[2] * rd[2];
-  if (h2 === 0) return [coneWidth, coneWidth];
-  const dy2 = rd[1] * rd[1];
-  return [
-    coneWidth * Math.sqrt((rd[0] * rd[0] + rd[2] * rd[2] * dy2) / (dy2 * h2)),
-    coneWidth * Math.sqrt((rd[2] * rd[2] + rd[0] * rd[0] * dy2) / (dy2 * h2)),
-  ];
 }
 
 /** A scene tracer bound to one set of settings. */
@@ -97,15 +79,14 @@ function makeScene(s) {
     return false;
   }
 
-  function groundColor(p, footprint, filter) {
+  /** Ground albedo at p for a footprint with extents [x, x, z, z] of its two spanning vectors (null: unfiltered). */
+  function groundColor(p, footprint) {
     const u = s.SCENE_ORIGIN[0] + p[0];
     const v = s.SCENE_ORIGIN[2] + p[2];
-    if (s.TEXTURE === 0) {
-      const stripe = filter ? boxFiltered(fract, integralFract, u, footprint[0]) : fract(u);
-      return scale(s.STRIPE_COLOR, stripe + s.STRIPE_OFFSET);
-    }
-    const sx = filter ? boxFiltered(squareWave, integralSquareWave, u, footprint[0]) : squareWave(u);
-    const sz = filter ? boxFiltered(squareWave, integralSquareWave, v, footprint[1]) : squareWave(v);
+    const pattern = s.TEXTURE === 0 ? PATTERNS.stripes : PATTERNS.checkers;
+    const sx = footprint ? filteredPattern(pattern, u, footprint[0], footprint[1]) : pattern.at(u);
+    if (s.TEXTURE === 0) return scale(s.STRIPE_COLOR, sx + s.STRIPE_OFFSET);
+    const sz = footprint ? filteredPattern(pattern, v, footprint[2], footprint[3]) : pattern.at(v);
     return mix(s.CHECKER_LIGHT, s.CHECKER_DARK, sx + sz - 2 * sx * sz);
   }
 
@@ -123,8 +104,13 @@ function makeScene(s) {
     return [color[0] + facing * albedo[0] + specular, color[1] + facing * albedo[1] + specular, color[2] + facing * albedo[2] + specular];
   }
 
-  /** Radiance along an eye ray from `eye`; coneSpread sizes the texture filter (0: no filter). */
-  function radiance(eye, rd, coneSpread, filter) {
+  /**
+   * Radiance along an eye ray from `eye`. With `differentials` ({dirDx, dirDy}: how the ray's
+   * direction changes across its sample's footprint) the ground is filtered as the shader filters
+   * it: over the eye ray's exact footprint, and over a ray cone of coneSpread for reflected rays.
+   * Without, it is point-sampled.
+   */
+  function radiance(eye, rd, coneSpread, differentials) {
     let ro = eye;
     let color = [0, 0, 0];
     let throughput = 1;
@@ -138,7 +124,18 @@ function makeScene(s) {
       const p = addScaled(ro, rd, t);
       if (id === ID_GROUND) p[1] = 0;
       coneWidth += coneSpread * t;
-      const albedo = id === ID_GROUND ? groundColor(p, groundFootprint(rd, coneWidth), filter) : colors[id];
+      let footprint = null;
+      if (differentials && bounce === 0) {
+        // dp = t (dd - d (n.dd) / (n.d)) on the plane y = 0
+        const along = (dd) => scale(sub(dd, scale(rd, dd[1] / rd[1])), t);
+        const dpdx = along(differentials.dirDx);
+        const dpdy = along(differentials.dirDy);
+        footprint = [Math.abs(dpdx[0]), Math.abs(dpdy[0]), Math.abs(dpdx[2]), Math.abs(dpdy[2])];
+      } else if (differentials) {
+        const cone = groundFootprint(rd, coneWidth);
+        footprint = [cone[0], 0, cone[1], 0];
+      }
+      const albedo = id === ID_GROUND ? groundColor(p, footprint) : colors[id];
       const local = shadeLocal(p, n, rd, id, albedo, inside);
       const mirror = reflectivity[id];
       if (bounce === s.BOUNCES || throughput * mirror < 1 / 255) return addScaled(color, local, throughput);
@@ -189,41 +186,56 @@ function jitter(x, y, i, axis) {
  * Renders the scene in float64.
  * @param {string} shaderSource the text of shaders/raytrace.glsl (controls and constants)
  * @param {object} view { width, height, time, mouse, controls: {NAME: value} }
- * @param {{mode?: 'same-rays'|'converged', samplesPerAxis?: number, rows?: [number, number]}} [options]
+ * @param {{mode?: 'same-rays'|'converged', samplesPerAxis?: number, rows?: [number, number], extraSamples?: Uint8Array}} [options]
  *   converged mode takes samplesPerAxis^2 jittered stratified samples per pixel (default 8: 64
- *   samples); rows = [first, end) renders only those rows (to split an image over threads)
+ *   samples); rows = [first, end) renders only those rows (to split an image over threads);
+ *   extraSamples (same-rays mode, adaptive anti-aliasing on): one byte a pixel, rows top to
+ *   bottom, non-zero where the shader took the extra samples (its "Show pixels with extra
+ *   samples" view)
  * @returns {{width, height, rgb: Float64Array}} display values in [0, 1], 3 per pixel, rows
  *   top to bottom (as the page's readPixels returns them)
  */
-export function renderReference(shaderSource, view, { mode = 'same-rays', samplesPerAxis = 8, rows } = {}) {
+export function renderReference(shaderSource, view, { mode = 'same-rays', samplesPerAxis = 8, rows, extraSamples } = {}) {
   const { width, height } = view;
   const s = referenceSettings(shaderSource, view.controls);
   const camera = referenceCamera(s, view);
   const { radiance } = makeScene(s);
   const converged = mode === 'converged';
   if (!converged && mode !== 'same-rays') throw new Error(`reference: unknown mode ${mode}`);
-  const perAxis = converged ? samplesPerAxis : Math.round(Math.sqrt(s.SAMPLES));
-  const coneSpread = (2 * camera.tanHalfFov) / (height * perAxis);
+  const gridPerAxis = converged ? samplesPerAxis : Math.round(Math.sqrt(s.SAMPLES));
+  const adaptive = !converged && s.ADAPTIVE_AA === 1 && gridPerAxis > 1;
+  if (adaptive && !extraSamples) {
+    throw new Error('reference: adaptive anti-aliasing needs extraSamples, the pixels the shader gave extra samples (its SHOW_AA_PIXELS view)');
+  }
   const filter = !converged && s.TEXTURE_FILTER === 1;
   const [firstRow, endRow] = rows ?? [0, height];
   const rgb = new Float64Array(width * (endRow - firstRow) * 3);
+  /** The sample through image point (px, py) whose footprint is `footprint` pixels on a side (eyeRay in the shader). */
+  const sample = (px, py, footprint) => {
+    const u = (2 * px - width) / height;
+    const v = (2 * py - height) / height;
+    const toPoint = add(scale(camera.back, -1), scale(add(scale(camera.right, u), scale(camera.up, v)), camera.tanHalfFov));
+    const dir = normalize(toPoint);
+    if (!filter) return radiance(camera.eye, dir, 0, null);
+    const step = (2 * camera.tanHalfFov * footprint) / height / length(toPoint);
+    const across = (axis) => scale(sub(axis, scale(dir, dot(dir, axis))), step);
+    const differentials = { dirDx: across(camera.right), dirDy: across(camera.up) };
+    return radiance(camera.eye, dir, ((2 * camera.tanHalfFov) / height) * footprint, differentials);
+  };
   for (let row = firstRow; row < endRow; row++) {
     const fy = height - 1 - row + 0.5; // fragCoord.y counts from the bottom
     for (let x = 0; x < width; x++) {
+      const fx = x + 0.5;
+      const grid = !adaptive || extraSamples[row * width + x] !== 0;
+      const perAxis = grid ? gridPerAxis : 1;
       const sum = [0, 0, 0];
-      for (let sy = 0; sy < perAxis; sy++) {
-        for (let sx = 0; sx < perAxis; sx++) {
-          const i = sy * perAxis + sx;
-          const jx = converged ? jitter(x, row, i, 0) : 0.5;
-          const jy = converged ? jitter(x, row, i, 1) : 0.5;
-          const u = (2 * (x + 0.5 + (sx + jx) / perAxis - 0.5) - width) / height;
-          const v = (2 * (fy + (sy + jy) / perAxis - 0.5) - height) / height;
-          const dir = normalize(
-            add(scale(camera.back, -1), scale(add(scale(camera.right, u), scale(camera.up, v)), camera.tanHalfFov)),
-          );
-          const c = radiance(camera.eye, dir, filter ? coneSpread : 0, filter);
-          sum[0] += c[0]; sum[1] += c[1]; sum[2] += c[2];
-        }
+      for (let i = 0; i < perAxis * perAxis; i++) {
+        const jx = converged ? jitter(x, row, i, 0) : 0.5;
+        const jy = converged ? jitter(x, row, i, 1) : 0.5;
+        const c = sample(fx + ((i % perAxis) + jx) / perAxis - 0.5, fy + (Math.floor(i / perAxis) + jy) / perAxis - 0.5, 1 / perAxis);
+        sum[0] += c[0];
+        sum[1] += c[1];
+        sum[2] += c[2];
       }
       const k = ((row - firstRow) * width + x) * 3;
       for (let ch = 0; ch < 3; ch++) rgb[k + ch] = Math.min(Math.max(sum[ch] / (perAxis * perAxis), 0), 1);

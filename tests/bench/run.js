@@ -30,10 +30,12 @@ import { REPO_ROOT, SHADER_FILE } from '../harness/config.js';
 import { rendererLabel, withHarness } from '../harness/setup.js';
 import { replaceMarkedSection } from '../scripts/readme-section.js';
 import { timeShaders } from './timer.js';
+import { renderRawShader } from '../harness/raw-webgl.js';
+import { countExtraSamplePixels } from '../harness/aa-mask.js';
 import { composePeer } from './peers/compose-peer.js';
 import { renderReferenceParallel } from './reference.js';
 import { paretoFront, chartSvg } from './chart.js';
-import { ONE_TRACE_SITE, PAGE_FORM, PLAIN, SAVINGS_OFF, evaluateTargets, sphereTracing } from './targets.js';
+import { ONE_TRACE_SITE, PAGE_FORM, PLAIN, SAVINGS_OFF, adaptiveSamples, evaluateAdaptiveTargets, evaluateTargets, sphereTracing, uniformSamples } from './targets.js';
 
 const quick = process.argv.includes('--quick');
 // --gpu: the machine's own GPU (startHarness({ gpu: true })), into files of its own, so that the
@@ -77,16 +79,19 @@ const defaults = Object.fromEntries(controls.map((c) => [c.name, c.default]));
 // default values: the shader as Shadertoy compiles it, and as the page runs it while its
 // controls rest) but the one marked `uniforms`, the page's form while a control moves.
 const pasteForm = (text, defines = {}, extra = '') => composeImageShader(text, { hostBlock: hostControlBlock(controls, defines, defaults) + extra }).code;
-/** The project's shader with some compile-time controls changed. */
-const project = (defines = {}) => pasteForm(source, defines);
+/** The project's shader with some compile-time controls changed; one sample per pixel unless they say otherwise. */
+const ONE_SAMPLE = { SAMPLES: 1, ADAPTIVE_AA: 0 };
+const project = (defines = {}) => pasteForm(source, { ...ONE_SAMPLE, ...defines });
 const composed = (file, dir = path.join(BENCH_DIR, 'peers')) => composePeer(source, read(path.join(dir, file)), { peerName: file });
-const peer = (file, extra = '') => pasteForm(composed(file), {}, extra);
+const peer = (file, extra = '') => pasteForm(composed(file), ONE_SAMPLE, extra);
 const EMPTY = composeImageShader('void mainImage(out vec4 fragColor, in vec2 fragCoord) {\n    fragColor = vec4(0.5, 0.5, 0.5, 1.0);\n}\n').code;
 
 // group: which series a variant belongs to on the chart; spp: samples per pixel.
 export const VARIANTS = [
   { name: 'empty shader (floor)', group: 'floor', spp: 1, code: () => EMPTY },
-  ...[1, 4, 9, 16].map((spp) => ({ name: `project, ${spp} spp`, group: 'project: samples', spp, code: () => project({ SAMPLES: spp }) })),
+  ...[1, 4, 9, 16].map((spp) => ({ name: uniformSamples(spp), group: 'project: samples', spp, code: () => project({ SAMPLES: spp, ADAPTIVE_AA: 0 }) })),
+  // Adaptive anti-aliasing: spp is what an edge pixel gets; the others take one sample.
+  ...[4, 9, 16].map((spp) => ({ name: adaptiveSamples(spp), group: 'project: adaptive', spp, adaptive: true, code: () => project({ SAMPLES: spp, ADAPTIVE_AA: 1 }) })),
   ...[0, 1, 2, 4].map((bounces) => ({ name: `project, bounces ${bounces}`, group: 'project: bounces', spp: 1, code: () => project({ BOUNCES: bounces }) })),
   { name: 'project, no shadows', group: 'project: features', spp: 1, code: () => project({ SHADOWS: 0 }) },
   { name: 'project, primary rays only', group: 'project: features', spp: 1, code: () => project({ SHADOWS: 0, BOUNCES: 0 }) },
@@ -96,14 +101,24 @@ export const VARIANTS = [
     group: 'project: page form',
     spp: 1,
     uniforms: true,
-    code: () => composeImageShader(source, { hostBlock: hostControlBlock(controls, {}) }).code,
+    code: () => composeImageShader(source, { hostBlock: hostControlBlock(controls, ONE_SAMPLE) }).code,
   },
-  { name: SAVINGS_OFF, group: 'project: savings off', spp: 1, code: () => pasteForm(composed('savings-off.glsl', BENCH_DIR)) },
-  { name: ONE_TRACE_SITE, group: 'project: one trace site', spp: 1, code: () => pasteForm(composed('one-trace-site.glsl', BENCH_DIR)) },
+  { name: SAVINGS_OFF, group: 'project: savings off', spp: 1, code: () => pasteForm(composed('savings-off.glsl', BENCH_DIR), ONE_SAMPLE) },
+  { name: ONE_TRACE_SITE, group: 'project: one trace site', spp: 1, code: () => pasteForm(composed('one-trace-site.glsl', BENCH_DIR), ONE_SAMPLE) },
   { name: 'assignment (peer 1)', group: 'peer: assignment', spp: 1, code: () => peer('assignment.glsl') },
   ...[32, 64, 128, 256].map((steps) => ({ name: sphereTracing(steps), group: 'peer: sphere tracing', spp: 1, code: () => peer('sdf.glsl', `#define MAX_STEPS ${steps}\n`) })),
   { name: PLAIN, group: 'peer: plain analytic', spp: 1, code: () => peer('plain.glsl') },
 ];
+
+/**
+ * The fraction of pixels to which an adaptive variant gave extra samples: its "Show pixels with
+ * extra samples" view, rendered once, counted by its magenta.
+ */
+async function extraSampleFraction(variant, width, height) {
+  const shown = await renderRawShader(project({ SAMPLES: variant.spp, ADAPTIVE_AA: 1, SHOW_AA_PIXELS: 1 }), { width, height });
+  if (shown.stage) throw new Error(`${variant.name}, edge view: ${shown.stage}: ${shown.log}`);
+  return countExtraSamplePixels(shown) / (width * height);
+}
 
 async function main() {
   console.log(`benchmark${quick ? ' (quick)' : ''}: ${VARIANTS.length} variants at ${SIZES.map((s) => s.join('x')).join(' and ')}`);
@@ -137,6 +152,7 @@ async function main() {
           continue;
         }
         const error = imageError(result, reference);
+        const extra = variant.adaptive ? await extraSampleFraction(variant, width, height) : undefined;
         const entry = {
           name: variant.name,
           group: variant.group,
@@ -149,11 +165,13 @@ async function main() {
           frames: result.times.length,
           rmse: error.rmse,
           over2: error.over2,
+          ...(extra === undefined ? {} : { extraSampleFraction: extra }),
           chromium: context.environment.chromium,
           renderer: context.environment.renderer,
         };
         results.push(entry);
-        console.log(`  ${variant.name}: ${entry.medianMs.toFixed(1)} ms (min ${entry.minMs.toFixed(1)}), RMSE ${entry.rmse.toFixed(4)}, >2/255 ${(100 * entry.over2).toFixed(2)}%`);
+        const extraNote = extra === undefined ? '' : `, extra samples in ${(100 * extra).toFixed(2)}% of pixels`;
+        console.log(`  ${variant.name}: ${entry.medianMs.toFixed(1)} ms (min ${entry.minMs.toFixed(1)}), RMSE ${entry.rmse.toFixed(4)}, >2/255 ${(100 * entry.over2).toFixed(2)}%${extraNote}`);
       }
     }
   });
@@ -175,11 +193,11 @@ async function main() {
     const rows = atSize(width);
     const floor = rows.find((r) => r.group === 'floor');
     return [
-      `| variant | spp | median ms | min–max ms | RMSE | >2/255 |${width === w ? ' Pareto |' : ''}`,
-      `|---|---|---|---|---|---|${width === w ? '---|' : ''}`,
+      `| variant | spp | extra samples | median ms | min–max ms | RMSE | >2/255 |${width === w ? ' Pareto |' : ''}`,
+      `|---|---|---|---|---|---|---|${width === w ? '---|' : ''}`,
       ...rows.map(
         (r) =>
-          `| ${r.name} | ${r.samplesPerPixel} | ${r.medianMs.toFixed(1)} | ${r.minMs.toFixed(1)}–${r.maxMs.toFixed(1)} | ${r.rmse.toFixed(4)} | ${(100 * r.over2).toFixed(2)}% |${width === w ? (front.has(r.name) ? ' ● |' : ' |') : ''}`,
+          `| ${r.name} | ${r.samplesPerPixel}${r.extraSampleFraction === undefined ? '' : ' at edges'} | ${r.extraSampleFraction === undefined ? '' : `${(100 * r.extraSampleFraction).toFixed(2)}% of pixels`} | ${r.medianMs.toFixed(1)} | ${r.minMs.toFixed(1)}–${r.maxMs.toFixed(1)} | ${r.rmse.toFixed(4)} | ${(100 * r.over2).toFixed(2)}% |${width === w ? (front.has(r.name) ? ' ● |' : ' |') : ''}`,
       ),
       '',
       `Floor: the empty shader takes ${floor.medianMs.toFixed(1)} ms at this size.`,
@@ -200,6 +218,10 @@ async function main() {
     `### Targets at ${w}×${h}, 1 sample per pixel`,
     '',
     ...targets.map((t) => `- ${t.met ? 'met' : '**missed**'}: ${t.text}`),
+    '',
+    `### Targets at ${w}×${h}, adaptive anti-aliasing`,
+    '',
+    ...evaluateAdaptiveTargets(atSize(w)).map((t) => `- ${t.met ? 'met' : '**missed**'}: ${t.text}`),
   ].join('\n');
   fs.writeFileSync(path.join(BENCH_DIR, OUTPUT.markdown), markdown + '\n');
   if (OUTPUT.readme) replaceMarkedSection(path.join(REPO_ROOT, 'README.md'), 'bench', markdown);

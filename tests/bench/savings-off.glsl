@@ -14,7 +14,10 @@
 //
 // @replaces radiance mainImage
 
-vec3 radiance(Scene s, vec3 rd, float coneSpread) {
+vec3 radiance(Scene s, EyeRay eye, float coneSpread, out vec3 key, out vec3 keyNormal) {
+    key = vec3(0.0);  // (only adaptive anti-aliasing reads it; this variant is timed at one sample)
+    keyNormal = vec3(0.0);
+    vec3 rd = eye.dir;
     vec3 ro = vec3(0.0);
     vec3 color = vec3(0.0);
     float throughput = 1.0;
@@ -28,8 +31,11 @@ vec3 radiance(Scene s, vec3 rd, float coneSpread) {
         bool inside = dot(rd, n) > 0.0;
         vec3 p = reprojectOnSurface(s, ro + hit.t * rd, n, id);
         coneWidth += coneSpread * hit.t;
+        vec3 dpdx = hit.t * (eye.dirDx - rd * (eye.dirDx.y / rd.y));
+        vec3 dpdy = hit.t * (eye.dirDy - rd * (eye.dirDy.y / rd.y));
+        vec4 footprint = bounce == 0 ? abs(vec4(dpdx.x, dpdy.x, dpdx.z, dpdy.z)) : groundFootprint(rd, coneWidth).xxyy * vec4(1.0, 0.0, 1.0, 0.0);
         vec3 albedo = id == ID_GROUND
-            ? groundColor(mod(s.textureOrigin + p.xz, 2.0), groundFootprint(rd, coneWidth))
+            ? groundColor(mod(s.textureOrigin + p.xz, 2.0), footprint)
             : objectColor(id);
         vec3 toLight = s.light - p;
         float lightDist = length(toLight);
@@ -57,11 +63,12 @@ void mainImage(out vec4 fragColor, in vec2 fragCoord) {
     Camera camera = orbitCamera();
     Scene s = sceneRelativeTo(camera.eyeLocal);
     float coneSpread = 2.0 * camera.tanHalfFov / (iResolution.y * float(SAMPLES_PER_AXIS));
+    vec3 key, keyNormal;
     vec3 sum = vec3(0.0);
     for (int sy = 0; sy < SAMPLES_PER_AXIS; sy++) {
         for (int sx = 0; sx < SAMPLES_PER_AXIS; sx++) {
             vec2 offset = (vec2(sx, sy) + 0.5) / float(SAMPLES_PER_AXIS) - 0.5;
-            sum += radiance(s, primaryRay(camera, fragCoord + offset), coneSpread);
+            sum += radiance(s, eyeRay(camera, fragCoord + offset, 1.0 / float(SAMPLES_PER_AXIS)), coneSpread, key, keyNormal);
         }
     }
     fragColor = vec4(clamp(sum / float(SAMPLES_PER_AXIS * SAMPLES_PER_AXIS), 0.0, 1.0), 1.0);

@@ -198,7 +198,11 @@ int traceScene(Scene s, vec3 ro, vec3 rd, out float hitDist, out vec3 hitNormal)
 // shadeLocal) with the template's hit handling: world coordinates from gEye, unfiltered texture
 // at the hit, secondary rays and shading from EPSILON along the normal, and a shadow ray (the
 // nearest hit towards the light, blocking if nearer than the light) from surfaces facing it.
-vec3 radiance(Scene s, vec3 rd, float coneSpread) {
+vec3 radiance(Scene s, EyeRay eye, float coneSpread, out vec3 key, out vec3 keyNormal) {
+    // One sample per pixel: nothing for the adaptive anti-aliasing's edge test.
+    key = vec3(0.0);
+    keyNormal = vec3(0.0);
+    vec3 rd = eye.dir;
     vec3 ro = gEye;
     vec3 color = vec3(0.0);
     float throughput = 1.0;
@@ -215,7 +219,7 @@ vec3 radiance(Scene s, vec3 rd, float coneSpread) {
             float b = fract(1.0 * hitPos.x);
             albedo = (b + STRIPE_OFFSET) * STRIPE_COLOR;
 #else
-            albedo = groundColor(mod(hitPos.xz, 2.0), vec2(0.0));  // zero footprint: unfiltered
+            albedo = groundColor(mod(hitPos.xz, 2.0), vec4(0.0));  // zero footprint: unfiltered
 #endif
         }
         vec3 p = hitPos + EPSILON * n;

@@ -146,7 +146,7 @@ Hit traceScene(Scene s, vec3 ro, vec3 rd, float tMax) {
 }
 
 // Ground albedo at world xz, point-sampled; the footprint is ignored (the project's signature).
-vec3 groundColor(vec2 uv, vec2 footprint) {
+vec3 groundColor(vec2 uv, vec4 footprint) {
 #if TEXTURE == 0
     return (fract(uv.x) + STRIPE_OFFSET) * STRIPE_COLOR;
 #else
@@ -156,7 +156,11 @@ vec3 groundColor(vec2 uv, vec2 footprint) {
 
 // The project's bounce loop and weighting, traced the plain way. coneSpread is unused: nothing
 // is filtered.
-vec3 radiance(Scene s, vec3 rd, float coneSpread) {
+vec3 radiance(Scene s, EyeRay eye, float coneSpread, out vec3 key, out vec3 keyNormal) {
+    // One sample per pixel: nothing for the adaptive anti-aliasing's edge test.
+    key = vec3(0.0);
+    keyNormal = vec3(0.0);
+    vec3 rd = eye.dir;
     vec3 ro = gEye;
     vec3 color = vec3(0.0);
     float throughput = 1.0;
@@ -166,7 +170,7 @@ vec3 radiance(Scene s, vec3 rd, float coneSpread) {
 
         vec3 p = ro + hit.t * rd;
         vec3 n = hit.n;
-        vec3 albedo = hit.id == ID_GROUND ? groundColor(p.xz, vec2(0.0)) : objectColor(hit.id);
+        vec3 albedo = hit.id == ID_GROUND ? groundColor(p.xz, vec4(0.0)) : objectColor(hit.id);
 
         vec3 toLight = s.light - p;
         float lightDist = length(toLight);

@@ -194,7 +194,11 @@ bool occluded(Scene s, vec3 ro, vec3 rd, float lightDist) {
 // limit, reflectivity weighting, the ray cone's widening on curved mirrors) with sphere-traced
 // hits: world coordinates from gEye, secondary rays and shading from surfaceOffset along the
 // normal.
-vec3 radiance(Scene s, vec3 rd, float coneSpread) {
+vec3 radiance(Scene s, EyeRay eye, float coneSpread, out vec3 key, out vec3 keyNormal) {
+    // One sample per pixel: nothing for the adaptive anti-aliasing's edge test.
+    key = vec3(0.0);
+    keyNormal = vec3(0.0);
+    vec3 rd = eye.dir;
     vec3 ro = gEye;
     vec3 color = vec3(0.0);
     float throughput = 1.0;
@@ -208,7 +212,7 @@ vec3 radiance(Scene s, vec3 rd, float coneSpread) {
         vec3 hit = ro + t * rd;
         coneWidth += coneSpread * t;
         vec3 albedo = id == ID_GROUND
-            ? groundColor(mod(hit.xz, 2.0), groundFootprint(rd, coneWidth))
+            ? groundColor(mod(hit.xz, 2.0), groundFootprint(rd, coneWidth).xxyy * vec4(1.0, 0.0, 1.0, 0.0))
             : objectColor(id);
         vec3 p = hit + surfaceOffset(t) * n;
         vec3 toLight = s.light - p;
