@@ -14,6 +14,17 @@ import { viewSize } from './views.js';
 
 export const MAX_OVER_2 = 1e-4;
 
+/**
+ * @typedef {object} HardView
+ * @property {string} name
+ * @property {string} what what makes it hard
+ * @property {Record<string, any>} params the page's URL parameters (tests/views.js)
+ * @property {[number, number]} [size] the canvas size (default: DEFAULT_SIZE)
+ * @property {boolean} [uniform] a one-colour picture is right for it (not checked for blankness)
+ * @property {number} [maxOver2] a bound raised above MAX_OVER_2, with the reason beside it
+ */
+
+/** @type {HardView[]} */
 export const HARD_VIEWS = [
   {
     name: 'apex-from-above',

@@ -102,7 +102,10 @@ describe('GLSL intersectors against float64', () => {
   let results;
 
   const code = SHADERTOY_HEADER + fs.readFileSync(SHADER_FILE, 'utf8') + TEST_MAIN;
-  /** Runs every case through the shader, each with its range end tMax(case, i) (0: none). */
+  /**
+   * Runs every case through the shader, each with its range end tMax(case, i) (0: none).
+   * @param {(c: (typeof cases)[number], i: number) => number} [tMax]
+   */
   const evaluate = (tMax = () => 0) => {
     const table = new Float32Array(cases.length * 4 * 4);
     const texel = (row, i, values) => table.set(values, (row * cases.length + i) * 4);

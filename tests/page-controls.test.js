@@ -33,7 +33,7 @@ describe('time', () => {
       await new Promise((r) => setTimeout(r, 300));
       expect((await info(page)).time).toBe(paused);
 
-      await page.evaluate(() => document.activeElement?.blur());
+      await page.evaluate(() => /** @type {HTMLElement | null} */ (document.activeElement)?.blur());
       await page.keyboard.press('Space');
       await whenPlaying(page, true);
       expect(await playLabel(page)).toBe('Pause');
@@ -63,7 +63,7 @@ describe('time', () => {
     await withPage(async ({ page, goto }) => {
       await goto(`?${PATTERN}&size=96x54&time=1`);
       const slider = await page.$('::-p-aria([name="Time"][role="slider"])');
-      expect(await slider.evaluate((s) => s.value)).toBe('1');
+      expect(await slider.evaluate((s) => /** @type {HTMLInputElement} */ (s).value)).toBe('1');
       const before = await readPixels(page);
       await slider.focus();
       await page.keyboard.press('End'); // the slider's end: 60 s
@@ -107,7 +107,7 @@ describe('time', () => {
 describe('size', () => {
   const bufferSize = (page) =>
     page.evaluate(() => {
-      const c = document.getElementById('view');
+      const c = /** @type {HTMLCanvasElement} */ (document.getElementById('view'));
       return { width: c.width, height: c.height, cssWidth: c.clientWidth, cssHeight: c.clientHeight, dpr: devicePixelRatio };
     });
   const settle = (page) => page.evaluate(() => window.raytracer.readPixels().then(() => null));
@@ -128,13 +128,13 @@ describe('size', () => {
       expect(size.width).toBe(320);
 
       await page.setViewport({ width: 240, height: 200, deviceScaleFactor: 1 });
-      await page.waitForFunction(() => document.getElementById('view').width === 240);
+      await page.waitForFunction(() => /** @type {HTMLCanvasElement} */ (document.getElementById('view')).width === 240);
       await settle(page);
       size = await bufferSize(page);
       expect([size.width, size.height]).toEqual([240, size.cssHeight]);
 
       await page.setViewport({ width: 240, height: 200, deviceScaleFactor: 2 });
-      await page.waitForFunction(() => document.getElementById('view').width === 480);
+      await page.waitForFunction(() => /** @type {HTMLCanvasElement} */ (document.getElementById('view')).width === 480);
       await settle(page);
       size = await bufferSize(page);
       expect(size.dpr).toBe(2);
@@ -150,7 +150,10 @@ describe('size', () => {
 
       const cap = await page.$('::-p-aria([name="Max canvas size"][role="combobox"])');
       await cap.select('320 px');
-      await page.waitForFunction(() => Math.max(document.getElementById('view').width, document.getElementById('view').height) === 320);
+      await page.waitForFunction(() => {
+        const c = /** @type {HTMLCanvasElement} */ (document.getElementById('view'));
+        return Math.max(c.width, c.height) === 320;
+      });
       await settle(page);
       size = await bufferSize(page);
       const aspect = size.cssWidth / size.cssHeight;
@@ -205,6 +208,7 @@ describe('the URL', () => {
 
   // Each bad URL: the page still draws a picture, warns on the console naming the parameter, and
   // logs no error. `check` looks at what the page made of it.
+  /** @type {Array<[name: string, query: string, warned: string, check: (s: import('./globals.js').RaytracerInfo) => void, options?: {mayBeDark?: boolean}]>} */
   const BAD_URLS = [
     ['time=NaN', `${PATTERN}&size=64x36&time=NaN`, 'time=NaN', (s) => expect(s.playing).toBe(true)],
     ['negative time', `${PATTERN}&size=64x36&time=-3`, 'time=-3', (s) => expect(s.time).toBe(0)],

@@ -29,16 +29,27 @@ export async function withServedDir(prefix, body) {
 }
 
 /**
+ * What withPage hands its body: the page, what it logged, the harness, and `goto`.
+ * @typedef {object} PageSession
+ * @property {import('puppeteer-core').Page} page
+ * @property {string[]} errors console errors and page errors
+ * @property {string[]} warnings console warnings
+ * @property {import('./globals.js').HarnessContext} context
+ * @property {(query: string, options?: {expectReady?: boolean, base?: string}) => Promise<void>} goto
+ *   loads the page at `query` ("?shader=...") and waits for its first frame (or its failure)
+ */
+
+/**
  * Runs `body({page, errors, warnings, context, goto})` on a fresh page and closes it. The test
  * fails if the page logged a console error or threw, even when `body` passed.
- * @param {(p: object) => Promise<void>} body
- * @param {{viewport?: object, beforeLoad?: (page) => Promise<void>}} [options]
+ * @param {(p: PageSession) => Promise<void>} body
+ * @param {{viewport?: import('puppeteer-core').Viewport, beforeLoad?: (page: import('puppeteer-core').Page) => Promise<unknown>}} [options]
  */
 export async function withPage(body, { viewport, beforeLoad } = {}) {
   const { page, errors, context } = await openPage();
   const warnings = [];
   page.on('console', (message) => {
-    if (message.type() === 'warn' || message.type() === 'warning') warnings.push(message.text());
+    if (message.type() === 'warn') warnings.push(message.text());
   });
   if (viewport) await page.setViewport(viewport);
   if (beforeLoad) await beforeLoad(page);
@@ -164,7 +175,7 @@ export async function canvasBox(page) {
 /** The overlay's text, or null while it is hidden. */
 export async function overlayText(page) {
   return page.evaluate(() => {
-    const o = document.querySelector('[role="alert"]');
+    const o = /** @type {HTMLElement | null} */ (document.querySelector('[role="alert"]'));
     return o && !o.hidden ? o.textContent : null;
   });
 }

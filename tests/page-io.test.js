@@ -105,7 +105,7 @@ describe('the editor', () => {
       expect(await page.$eval('textarea', (t) => t.value)).toBe(exampleSource(name));
       await pasteIntoEditor(page, lines.join('\n'));
 
-      await page.waitForFunction(() => !document.querySelector('[role="alert"]').hidden, { polling: 50 });
+      await page.waitForFunction(() => !/** @type {HTMLElement} */ (document.querySelector('[role="alert"]')).hidden, { polling: 50 });
       const alert = await overlayText(page);
       expect(alert).toContain(`${name}.glsl:${line}:`);
       expect(alert).toContain('notDeclaredAnywhere');
@@ -116,7 +116,7 @@ describe('the editor', () => {
 
       // pasting a good shader runs it, and the alert goes
       await pasteIntoEditor(page, solid(10, 200, 30));
-      await page.waitForFunction(() => document.querySelector('[role="alert"]').hidden, { polling: 50 });
+      await page.waitForFunction(() => /** @type {HTMLElement} */ (document.querySelector('[role="alert"]')).hidden, { polling: 50 });
       expect(allPixels(await readPixels(page), [10, 200, 30])).toBe(true);
       expect(await page.$$('.editor-gutter .error')).toHaveLength(0);
     });
@@ -196,7 +196,7 @@ describe('dropping files on the page', () => {
         expect(pixel(await readPixels(page), 20, 45)).toEqual([20, 60, 240]);
         expect(pixel(await readPixels(page), 120, 45)).toEqual([0, 0, 0]);
         // Controls → Channels → "Load image into iChannel2…" opens a file chooser
-        await page.evaluate(() => [...document.querySelectorAll('.lil-gui .lil-title')].find((t) => t.textContent.trim() === 'Channels').click());
+        await page.evaluate(() => [.../** @type {NodeListOf<HTMLElement>} */ (document.querySelectorAll('.lil-gui .lil-title'))].find((t) => t.textContent.trim() === 'Channels').click());
         await new Promise((r) => setTimeout(r, 600)); // the folder's opening animation
         const [chooser] = await Promise.all([page.waitForFileChooser(), (await button(page, 'Load image into iChannel2…')).click()]);
         await chooser.accept([local]);

@@ -34,13 +34,13 @@ describe('errors', () => {
       await goto(PATTERN);
       const before = await readPixels(page);
       await page.evaluate(() => {
-        window.__loseContext = document.getElementById('view').getContext('webgl2').getExtension('WEBGL_lose_context');
+        window.__loseContext = /** @type {HTMLCanvasElement} */ (document.getElementById('view')).getContext('webgl2').getExtension('WEBGL_lose_context');
         window.__loseContext.loseContext();
       });
-      await page.waitForFunction(() => window.raytracer.info().contextLost && !document.querySelector('[role="alert"]').hidden);
+      await page.waitForFunction(() => window.raytracer.info().contextLost && !/** @type {HTMLElement} */ (document.querySelector('[role="alert"]')).hidden);
       expect(await overlayText(page)).toContain('GPU context was lost');
       await page.evaluate(() => window.__loseContext.restoreContext());
-      await page.waitForFunction(() => !window.raytracer.info().contextLost && document.querySelector('[role="alert"]').hidden);
+      await page.waitForFunction(() => !window.raytracer.info().contextLost && /** @type {HTMLElement} */ (document.querySelector('[role="alert"]')).hidden);
       const after = await readPixels(page);
       expect(sameImage(after, before), 'the restored context draws the same picture').toBe(true);
     });

@@ -37,6 +37,7 @@ describe('example shaders run unchanged and match Shadertoy\'s header', () => {
   test.each(EXAMPLES.map((e) => [e.name, e.kind, e]))('%s (%s)', async (_, __, example) => {
     const query = `?shader=examples/${example.name}.glsl&size=${W}x${H}&time=${example.time}&mouse=${example.mouse.join(',')}`;
     let page;
+    /** @type {number} */
     let frame;
     await withPage(async ({ page: p, goto }) => {
       await goto(query);
@@ -107,7 +108,11 @@ describe('uniform semantics (public/examples/inputs.glsl)', () => {
     { act: 'release', expect: (press, now) => [now.x, now.y, -press.x, -press.y] }, // released: z < 0, xy frozen
   ];
 
-  /** Fraction of the pixels of an image row (or column) that are light grey or white. */
+  /**
+   * Fraction of the pixels of an image row (or column) that are light grey or white.
+   * @param {{width: number, height: number, data: Buffer}} image
+   * @param {{row: number, column?: undefined} | {column: number, row?: undefined}} line y of the row (from the top), or x of the column
+   */
   function lightFraction(image, { row, column }) {
     const points = row !== undefined ? [...Array(image.width).keys()].map((x) => [x, row]) : [...Array(image.height - 20).keys()].map((y) => [column, y]);
     return points.filter(([x, y]) => Math.min(...pixel(image, x, y)) > 100).length / points.length;
@@ -132,6 +137,7 @@ describe('uniform semantics (public/examples/inputs.glsl)', () => {
           const { clientX, clientY } = await page.evaluate(() => window.__pointer);
           return { x: Math.floor(clientX - box.left), y: Math.floor(H - (clientY - box.top)) };
         };
+        /** @type {(x: number, y: number) => [number, number]} */
         const at = (x, y) => [box.left + x + 0.5, box.top + y + 0.5];
         const touch = kind !== 'mouse';
         const actions = {

@@ -12,6 +12,11 @@ export function paretoFront(results) {
 const COLORS = ['#555555', '#1f77b4', '#2ca02c', '#9467bd', '#d62728', '#ff7f0e', '#8c564b', '#e377c2'];
 const escape = (s) => s.replace(/&/g, '&amp;').replace(/</g, '&lt;');
 
+/**
+ * @param {Array<{name: string, group: string, medianMs: number, rmse: number}>} results
+ * @param {{title?: string, width?: number, height?: number}} [options]
+ * @returns {string} the SVG
+ */
 export function chartSvg(results, { title, width = 760, height = 460 } = {}) {
   const margin = { left: 70, right: 210, top: 40, bottom: 50 };
   const plotW = width - margin.left - margin.right;

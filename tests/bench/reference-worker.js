@@ -5,4 +5,5 @@ import { renderReference } from '../../src/reference/render.js';
 
 const { source, view, options } = workerData;
 const { rgb } = renderReference(source, view, options);
-parentPort.postMessage(rgb, [rgb.buffer]);
+// (rgb is a new Float64Array: its buffer is an ArrayBuffer, never a SharedArrayBuffer)
+parentPort.postMessage(rgb, [/** @type {ArrayBuffer} */ (rgb.buffer)]);

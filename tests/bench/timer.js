@@ -5,6 +5,14 @@ import { decodeRgba } from '../harness/page.js';
 import { openRawPage } from '../harness/raw-webgl.js';
 
 /**
+ * A shader's outcome in timeShaders: its `frames` times in ms and its last frame (RGBA8, rows top
+ * to bottom), or why it could not run. Each has the other's fields as undefined, so that
+ * `r.error` or `r.times` can be read before telling which it is.
+ * @typedef {{times: number[], width: number, height: number, data: Buffer, error?: undefined}
+ *   | {error: string, times?: undefined, width?: undefined, height?: undefined, data?: undefined}} TimedShader
+ */
+
+/**
  * Times complete fragment shaders in one plain WebGL2 canvas (no page code), interleaved: each
  * round draws every shader once, so that a machine that speeds up or slows down during the run
  * moves all of them alike. `warmup` untimed rounds (the first compiles SwiftShader's code), then
@@ -13,7 +21,9 @@ import { openRawPage } from '../harness/raw-webgl.js';
  * page (no protocol timeout however slow), and `onRound(i)` can show progress.
  * `shaders` is a list of { code, uniforms } where uniforms are { name, type, value } (float,
  * int, bool, vecN), set after Shadertoy's own at their first-frame values (iTime 0, iMouse 0).
- * @returns {Promise<Array<{times: number[], width, height, data: Buffer} | {error: string}>>}
+ * @param {Array<{code: string, uniforms?: Array<{name: string, type: string, value: number | boolean | number[]}>}>} shaders
+ * @param {{width: number, height: number, frames?: number, warmup?: number, onRound?: (round: number) => void}} options
+ * @returns {Promise<TimedShader[]>} one a shader, in order
  */
 export async function timeShaders(shaders, { width, height, frames = 15, warmup = 3, onRound = () => {} }) {
   // The benchmark needs the real clock: no deterministic injection here.
@@ -62,10 +72,11 @@ export async function timeShaders(shaders, { width, height, frames = 15, warmup 
       }
       onRound(round);
     }
+    /** @type {TimedShader[]} */
     const results = [];
     for (const [i, setup] of setups.entries()) {
       if (setup.error) {
-        results.push(setup);
+        results.push({ error: setup.error });
         continue;
       }
       const data = await page.evaluate((k) => window.__benchmark.pixels(k), i);

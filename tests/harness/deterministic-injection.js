@@ -65,7 +65,7 @@
   FixedDate.parse = RealDate.parse;
   FixedDate.UTC = RealDate.UTC;
   Object.defineProperty(FixedDate, 'name', { value: 'Date' });
-  globalThis.Date = FixedDate;
+  globalThis.Date = /** @type {DateConstructor} */ (FixedDate);
 
   // --- Clock: virtual, one 60 Hz frame per animation frame ---------------------------------------
   let virtualNow = 0;

@@ -111,6 +111,7 @@ async function renderViewOnce(view) {
   });
   const fail = (message) => {
     const logged = errors.length ? `\nThe page logged:\n  ${errors.join('\n  ')}` : '';
+    /** @type {Error & {selfNavigated?: boolean}} */
     const error = new Error(`${view.name} (${url}): ${message}${logged}`);
     error.selfNavigated = navigations > 1;
     return error;
@@ -133,7 +134,7 @@ async function renderViewOnce(view) {
           return { error: `raytracer.ready rejected: ${error?.message ?? error}; data-error: ${datasetError() ?? '(none)'}` };
         }
         const pixels = await window.raytracer.readPixels();
-        const canvas = document.querySelector('canvas[data-frame]');
+        const canvas = /** @type {HTMLCanvasElement | null} */ (document.querySelector('canvas[data-frame]'));
         const frame = canvas ? Number(canvas.dataset.frame) : NaN;
         const info = window.raytracer.info();
         return { pixels, frame, info: JSON.parse(JSON.stringify(info)), datasetError: datasetError() };

@@ -23,7 +23,12 @@ function context(width, height, attributes = {}) {
   return canvas.getContext('webgl2', { antialias: false, depth: false, stencil: false, ...attributes });
 }
 
-/** Compiles the fullscreen vertex shader and `fragment`, links and uses them: { program } or { stage, log }. */
+/**
+ * Compiles the fullscreen vertex shader and `fragment`, links and uses them: { program } or { stage, log }.
+ * @param {WebGL2RenderingContext} gl
+ * @param {string} fragment
+ * @returns {{program: WebGLProgram, stage?: undefined, log?: undefined} | {stage: 'vertex' | 'compile' | 'link', log: string, program?: undefined}}
+ */
 function program(gl, fragment) {
   const compile = (type, text) => {
     const shader = gl.createShader(type);
@@ -92,14 +97,25 @@ function rendererName(gl) {
   return debug ? gl.getParameter(debug.UNMASKED_RENDERER_WEBGL) : gl.getParameter(gl.RENDERER);
 }
 
-/** One frame of a complete fragment shader with Shadertoy's uniforms (see renderRawShader). */
+/**
+ * What render() returns: why it could not draw, or the frame (base64 RGBA8, rows top to bottom).
+ * Each has the other's fields as undefined, so that `stage` or `glError` can be read on either.
+ * @typedef {{stage: 'vertex' | 'compile' | 'link' | 'setup', log: string, data?: undefined, glError?: undefined, renderer?: undefined}} RawRenderFailure
+ * @typedef {{data: string, glError: number, renderer: string, stage?: undefined, log?: undefined}} RawRenderFrame
+ */
+
+/**
+ * One frame of a complete fragment shader with Shadertoy's uniforms (see renderRawShader).
+ * @returns {RawRenderFailure | RawRenderFrame}
+ */
 function render(fragment, { width, height, uniforms = {} }) {
   if (!window.__deterministic) return { stage: 'setup', log: 'the deterministic injection did not run' };
   const gl = context(width, height, { premultipliedAlpha: false, preserveDrawingBuffer: true });
   if (!gl) return { stage: 'setup', log: 'no WebGL2 context' };
-  document.body.appendChild(gl.canvas);
+  document.body.appendChild(/** @type {HTMLCanvasElement} */ (gl.canvas));
   const built = program(gl, fragment);
-  if (built.stage) return built;
+  // (with strictNullChecks off, a truthy `stage` does not narrow the union: say what it is)
+  if (built.stage) return /** @type {RawRenderFailure} */ (built);
   try {
     setShadertoyUniforms(gl, built.program, { width, height, overrides: uniforms });
   } catch (error) {
@@ -142,4 +158,6 @@ function evaluateFloat(fragment, { width, height, table, tableHeight, tableUnifo
   return { data: Array.from(out) };
 }
 
-window.__rawWebGL = { context, program, setUniform, setShadertoyUniforms, readBase64, render, evaluateFloat };
+const rawWebGL = { context, program, setUniform, setShadertoyUniforms, readBase64, render, evaluateFloat };
+/** @typedef {typeof rawWebGL} RawWebGL window.__rawWebGL (tests/globals.d.ts) */
+window.__rawWebGL = rawWebGL;

@@ -30,19 +30,29 @@ export async function openRawPage(title, options) {
 }
 
 /**
+ * What renderRawShader resolves with: the stage that failed and its log, or the frame (RGBA8,
+ * rows top to bottom). Each has the other's fields as undefined, so that `raw.stage` or
+ * `raw.glError` can be read before telling which it is.
+ * @typedef {{stage: 'vertex' | 'compile' | 'link' | 'setup', log: string, width?: undefined, height?: undefined, data?: undefined, glError?: undefined, renderer?: undefined}} RawShaderFailure
+ * @typedef {{width: number, height: number, data: Buffer, glError: number, renderer: string, stage?: undefined, log?: undefined}} RawShaderFrame
+ * @typedef {RawShaderFailure | RawShaderFrame} RawShaderResult
+ */
+
+/**
  * Compiles a complete fragment shader in a plain WebGL2 context and draws one fullscreen
  * triangle with Shadertoy's uniforms at their first-frame values (FIRST_FRAME_UNIFORMS of the
  * Shadertoy module): iResolution = (width, height, 1), iTime 0, iFrame 0, iMouse 0, iDate from
  * the (frozen) clock. `uniforms` overrides any of them, e.g.
  * { iTime: 1.5, iFrame: 3, iMouse: [40, 59, 40, -59] }.
- * @returns {Promise<{stage:'compile'|'link'|'setup', log:string} | {width, height, data:Buffer, glError:number, renderer:string}>}
+ * @returns {Promise<RawShaderResult>}
  */
 export async function renderRawShader(code, { width, height, uniforms = {} }) {
   const { page, errors } = await openRawPage('raw WebGL2');
   try {
     const result = await page.evaluate((fragment, options) => window.__rawWebGL.render(fragment, options), code, { width, height, uniforms });
     if (errors.length) throw new Error(`raw WebGL2 page logged errors:\n  ${errors.join('\n  ')}`);
-    if (result.stage) return result;
+    // (with strictNullChecks off, a truthy `stage` does not narrow the union: say what it is)
+    if (result.stage) return /** @type {RawShaderFailure} */ (result);
     return { width, height, data: decodeRgba(result.data, width, height, 'raw render'), glError: result.glError, renderer: result.renderer };
   } finally {
     await page.close().catch(() => {});

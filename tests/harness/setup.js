@@ -71,7 +71,7 @@ function freePort() {
     server.unref();
     server.on('error', reject);
     server.listen(0, '127.0.0.1', () => {
-      const { port } = server.address();
+      const { port } = /** @type {import('node:net').AddressInfo} */ (server.address());
       server.close(() => resolve(port));
     });
   });
@@ -162,6 +162,7 @@ async function launchOnGpu(launch, executablePath, userDataDir) {
     const flags = args.filter((arg) => !CHROME_ARGS.includes(arg)).join(' ');
     tried.push(`${flags}: ${webgl ? `WebGL2 renderer "${webgl.renderer}" (${kind})` : 'no WebGL2'}`);
   }
+  /** @type {Error & {code?: string}} */
   const error = new Error(
     `No hardware GPU found: headless Chromium (${executablePath}) has no WebGL2 on a hardware GPU. Tried:\n  ` +
       `${tried.join('\n  ')}\nA software renderer (SwiftShader, llvmpipe, ...) is never used in its place.`,

@@ -1,0 +1,124 @@
+// Types for `npm run typecheck` only (nothing imports this file at run time): the globals that
+// the pages under test define on `window`, which the tests reach through page.evaluate(), and
+// what vitest's globalSetup (tests/harness/setup.js) provides to the test files.
+
+/** Base64 RGBA8 pixels, rows top to bottom, as the page hands them over page.evaluate(). */
+export interface Base64Frame {
+  width: number;
+  height: number;
+  data: string;
+}
+
+/** window.raytracer.info(): see src/page/automation.js. */
+export interface RaytracerInfo {
+  /** UNMASKED_RENDERER_WEBGL (or RENDERER) */
+  renderer: string;
+  vendor: string;
+  version: string;
+  shadingLanguage: string;
+  /** the drawing buffer's size, device pixels */
+  width: number;
+  height: number;
+  /** frames drawn so far */
+  frame: number;
+  time: number;
+  playing: boolean;
+  speed: number;
+  /** iMouse: [x, y, z, w] */
+  mouse: number[];
+  /** the controls' current values, by name: a number, a boolean or an array of numbers */
+  controls: Record<string, any>;
+  fileName: string;
+  shaderUrl: string | null;
+  origin: import('../src/page/app.js').RaytracerApp['origin'];
+  contextLost: boolean;
+  /** successful compiles so far */
+  compiled: number;
+  liveControls: 'constants' | 'uniforms';
+  /** Only on a page that could not start (installFailedAutomation), which reports nothing else. */
+  error?: string;
+}
+
+/** What setSource() and loadShader() resolve with. */
+export interface CompileOutcome {
+  ok: boolean;
+  /** the compile error's report (or message) when !ok */
+  error?: string;
+}
+
+/** window.raytracer: the page's automation hook, installed by src/page/automation.js (see its header). */
+export interface RaytracerHook {
+  /** Resolves after the first frame has been drawn; rejects when WebGL2 is missing or the first compile fails. */
+  ready: Promise<void>;
+  /** Draws one frame and reads it back. */
+  readPixels(): Promise<Base64Frame>;
+  /** Draws n frames back to back: per-frame times in ms and their median. */
+  renderFrames(n?: number): Promise<{ median: number; times: number[] }>;
+  /** Sets shader controls as the URL does; resolves once compiled. */
+  setControls(changes: Record<string, unknown>): Promise<void>;
+  setSource(source: string): Promise<CompileOutcome>;
+  play(): void;
+  pause(): void;
+  togglePlay(): void;
+  restart(): void;
+  setTime(seconds: number): void;
+  setSpeed(speed: number): void;
+  /** iMouse [x, y, z, w] in device pixels, until the next click */
+  setMouse(mouse: number[]): void;
+  /** The next frame the page draws by itself, and its iFrame. Asks for no frame. */
+  nextFrame(): Promise<Base64Frame & { iFrame: number }>;
+  /** The last frame drawn again off screen at that size (default: the canvas's). */
+  capture(size?: { width: number; height: number } | null): Promise<Base64Frame>;
+  /** An image into iChannel `index` (null: black again). */
+  setChannel(index: number, url: string | null): Promise<void>;
+  /** Fetches and runs a shader as ?shader= does. */
+  loadShader(url: string): Promise<CompileOutcome>;
+  /** The link "Copy link" copies. */
+  shareUrl(): string;
+  info(): RaytracerInfo;
+}
+
+/** window.__benchmark: the benchmark's programs, set up in its raw WebGL2 page (tests/bench/timer.js). */
+export interface BenchmarkPage {
+  /** Draws shader `i` once, with a 1-pixel readPixels: the time it took, in ms. */
+  frame(i: number): number;
+  /** Draws shader `i` once: its pixels as base64 RGBA8, rows top to bottom. */
+  pixels(i: number): string;
+}
+
+/** What tests/harness/setup.js starts and hands to the test files (inject('harness')) and to scripts. */
+export interface HarnessContext {
+  /** the browser's DevTools WebSocket endpoint */
+  wsEndpoint: string;
+  /** the page server's URL, without a trailing slash */
+  baseUrl: string;
+  environment: { chromium: string; renderer: string; webglVersion: string };
+}
+
+declare global {
+  // Each of these exists only on its own page (or after the test sets it): read them there.
+  interface Window {
+    /** The page's automation hook (src/page/automation.js). */
+    raytracer: RaytracerHook;
+    /** The raw WebGL2 page's functions (tests/harness/raw-webgl-page.js). */
+    __rawWebGL: import('./harness/raw-webgl-page.js').RawWebGL;
+    /** Set by the deterministic injection (tests/harness/deterministic-injection.js). */
+    __deterministic: Readonly<{ fixedTime: number; frameMs: number }>;
+    /** Set by the benchmark's timer (tests/bench/timer.js). */
+    __benchmark: BenchmarkPage;
+    /** Set by page-helpers.js's nextFrame(): the frame it waits for. */
+    __nextFrame: ReturnType<RaytracerHook['nextFrame']>;
+    /** Set by the lost-context test (tests/page-lifecycle.test.js). */
+    __loseContext: WEBGL_lose_context;
+    /** Set by the file-watching tests (tests/page-lifecycle.test.js): still true if the page did not reload. */
+    __sameDocument: boolean;
+    /** Set by the pointer test (tests/page-shaders.test.js): the last pointer event's position. */
+    __pointer: { clientX: number; clientY: number };
+  }
+}
+
+declare module 'vitest' {
+  interface ProvidedContext {
+    harness: HarnessContext;
+  }
+}
