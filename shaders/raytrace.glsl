@@ -16,7 +16,7 @@
 // Shadertoy compiles this block as it stands; a host defines HOST_CONTROLS and declares the same
 // names itself (a #define is compile-time, a const becomes a uniform). Syntax: src/shadertoy/controls.js.
 #ifndef HOST_CONTROLS
-#define SAMPLES 1                                      // ui: Samples per pixel (per edge pixel when adaptive) | 1, 4, 9, 16
+#define SAMPLES 16                                     // ui: Samples per pixel (per edge pixel when adaptive) | 1, 4, 9, 16
 #define ADAPTIVE_AA 1                                  // ui: Adaptive anti-aliasing | toggle
 #define SHOW_AA_PIXELS 0                               // ui: Show pixels with extra samples | toggle
 #define BOUNCES 3                                      // ui: Reflection bounce limit | 0 .. 4
@@ -305,26 +305,33 @@ vec3 objectColor(int id) {
 //   stripes, fract:  P1(x) = floor(x)/2 + r^2/2,  P2(x) = x^2/4 - floor(x)/12 - r^2/4 + r^3/6,  r = fract(x)
 //   checkers, the square wave s(x) = floor(x) mod 2, with k = floor(x/2), y = x - 2k:
 //                    P1(x) = k + max(y - 1, 0),  P2(x) = k(k - 1) + k/2 + k y + max(y - 1, 0)^2 / 2
+// (One definition each, the pattern chosen inside: TEXTURE is fixed at compile time.)
+float pattern(float x) {
 #if TEXTURE == 0
-float pattern(float x) { return fract(x); }
+    return fract(x);
+#else
+    return mod(floor(x), 2.0);
+#endif
+}
+
 float patternIntegral(float x) {
+#if TEXTURE == 0
     float r = fract(x);
     return 0.5 * floor(x) + 0.5 * r * r;
+#else
+    return floor(0.5 * x) + max(2.0 * fract(0.5 * x) - 1.0, 0.0);
+#endif
 }
+
 float patternIntegral2(float x) {
+#if TEXTURE == 0
     float r = fract(x);
     return 0.25 * x * x - floor(x) / 12.0 - 0.25 * r * r + r * r * r / 6.0;
-}
 #else
-float pattern(float x) { return mod(floor(x), 2.0); }
-float patternIntegral(float x) {
-    return floor(0.5 * x) + max(2.0 * fract(0.5 * x) - 1.0, 0.0);
-}
-float patternIntegral2(float x) {
     float k = floor(0.5 * x), over = max(x - 2.0 * k - 1.0, 0.0);
     return k * (k - 1.0) + 0.5 * k + k * (x - 2.0 * k) + 0.5 * over * over;
-}
 #endif
+}
 
 // The pattern averaged over x + U, U the sum of two independent uniform offsets of widths wa and
 // wb: a footprint spanned by two vectors (a pixel's parallelogram on the ground), projected on

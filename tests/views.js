@@ -30,6 +30,9 @@ const MIRROR_GAP = {
   FIELD_OF_VIEW: 15,
 };
 
+// The cone's apex in front of the cube's corner, from close by.
+const EDGES_CLOSE_UP = { CAMERA_TARGET: [1.1, 0.9, 0], CAMERA_DISTANCE: 3, FIELD_OF_VIEW: 30 };
+
 // `contrast` (optional): the same view with these parameters changed must differ from it in
 // more than PAIR_MIN_FACTOR x MAX_DIFF_FRACTION of its pixels, so the view really tests what it
 // sets (used where no other view of the table is that contrast).
@@ -45,12 +48,14 @@ export const VIEWS = [
   { name: 'bounces-max', params: { time: 0, BOUNCES: 4, ...MIRROR_GAP }, contrast: { BOUNCES: 3 } },
   { name: 'no-shadows', params: { time: 0, SHADOWS: 0 } },
   { name: 'changed-control', params: { time: 0, CONE_HEIGHT: 2.6, LIGHT_POSITION: [-4, 5, 2] } },
-  // Uniform supersampling: every pixel takes the 2x2 grid.
-  { name: 'aa', params: { time: 0, SAMPLES: 4, ADAPTIVE_AA: 0 } },
-  // Adaptive anti-aliasing: pixels on an edge take the 4x4 grid, the others one sample ...
-  { name: 'adaptive-aa', params: { time: 0, SAMPLES: 16 } },
-  // ... and which pixels those are (magenta), over the picture in grey.
-  { name: 'aa-pixels', params: { time: 0, SAMPLES: 16, SHOW_AA_PIXELS: 1 } },
+  // Uniform supersampling, every pixel the 2x2 grid, on a close look at the cone and the cube
+  // (edges, creases and shadow boundaries fill the frame).
+  { name: 'aa', params: { time: 0, SAMPLES: 4, ADAPTIVE_AA: 0, ...EDGES_CLOSE_UP }, contrast: { SAMPLES: 1 } },
+  // One sample per pixel (the default is adaptive anti-aliasing: pixels on an edge take the 4x4
+  // grid, the others one sample) ...
+  { name: 'one-sample', params: { time: 0, SAMPLES: 1 } },
+  // ... and which pixels take the grid (magenta), over the picture in grey.
+  { name: 'aa-pixels', params: { time: 0, SHOW_AA_PIXELS: 1 } },
 ];
 
 // ------------------------------------------------------------------------------------------------

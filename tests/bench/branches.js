@@ -1,15 +1,17 @@
 // What does SwiftShader skip? The experiments behind the shader's structure (README, "What
-// bounds the targets"): the same 60 sin() calls run straight, behind an `if` that no pixel
+// SwiftShader rewards"): the same 60 sin() calls run straight, behind an `if` that no pixel
 // takes, and in loops of 0, 1 and 2 trips written two ways (condition at the top, as a `for`
-// reads; exit at the bottom, as the shader's loops are written); then the project's shader with
-// one extra radiance() call behind `if (iFrame < 0)`, which never runs. On a GPU the guarded
+// reads; exit at the bottom, as the shader's loops are written); conditions joined with && and
+// with all(); then the project's shader with one extra radiance() call behind
+// `if (iFrame < 0)`, which never runs. On a GPU the guarded
 // versions cost next to nothing; on SwiftShader an `if` costs its whole body and a loop one body
 // per trip, plus one more when the condition is tested at the top.
 //
 //   npm run bench:branches        (640x360, median of 9 interleaved frames)
 
 import fs from 'node:fs';
-import { composeImageShader } from '../../src/shadertoy/header.js';
+import { composeImageShader, hostControlBlock } from '../../src/shadertoy/header.js';
+import { controlDefaults, parseControls } from '../../src/shadertoy/controls.js';
 import { median } from '../../src/page/stats.js';
 import { SHADER_FILE } from '../harness/config.js';
 import { withHarness } from '../harness/setup.js';
@@ -21,8 +23,15 @@ const body = Array.from({ length: CALLS }, (_, i) => `        x = sin(x * 1.${i 
 const image = (code) => composeImageShader(`void mainImage(out vec4 c, in vec2 f) {\n    float x = f.x * 0.001;\n    bool never = f.x < -1.0;\n${code}\n    c = vec4(x);\n}\n`).code;
 const topLoop = (trips) => image(`    int n = never ? 7 : ${trips};\n    for (int k = 0; k < n; k++) {\n${body}\n    }`);
 const bottomLoop = (trips) => image(`    int n = never ? 7 : ${trips};\n    for (int k = 0;; k++) {\n${body}\n        if (k + 1 >= n) break;\n    }`);
+// Sixty tests of four conditions each, joined with && or with all(bvec4(...)).
+const tests = (join) =>
+  Array.from({ length: CALLS }, (_, i) => `        { float u = x * 1.${i % 10} + 0.1; bool b = ${join(['u > 0.1', 'u < 0.9', 'x > 0.05', 'x < 0.5'])}; x = fract(x + (b ? u : -u)); }`).join('\n');
 const project = fs.readFileSync(SHADER_FILE, 'utf8');
-const call = '    vec3 linear = radiance(s, primaryRay(camera, fragCoord), coneSpread);';
+// The project at one sample per pixel: its controls at their defaults but for the samples.
+const controls = parseControls(project);
+const onePixelSample = (text) =>
+  composeImageShader(text, { hostBlock: hostControlBlock(controls, { SAMPLES: 1, ADAPTIVE_AA: 0 }, controlDefaults(controls)) }).code;
+const call = '    vec3 linear = radiance(s, eyeRay(camera, fragCoord, 1.0), pixelSpread, key, keyNormal);';
 if (!project.includes(call)) throw new Error(`branches: ${SHADER_FILE} no longer has "${call.trim()}"`);
 
 const CASES = [
@@ -33,8 +42,10 @@ const CASES = [
   ['the same, 2 trips', topLoop(2)],
   ['in a loop with the exit at the bottom, 1 trip', bottomLoop(1)],
   ['the same, 2 trips', bottomLoop(2)],
-  ['the project shader', composeImageShader(project).code],
-  ['the project shader + radiance() behind if (iFrame < 0)', composeImageShader(project.replace(call, `${call}\n    if (iFrame < 0) linear += radiance(s, primaryRay(camera, fragCoord).zyx, coneSpread);`)).code],
+  [`${CALLS} tests of four conditions joined with &&`, image(tests((c) => c.join(' && ')))],
+  ['the same joined with all(bvec4(...))', image(tests((c) => `all(bvec4(${c.join(', ')}))`))],
+  ['the project shader (one sample per pixel)', onePixelSample(project)],
+  ['the same + radiance() behind if (iFrame < 0)', onePixelSample(project.replace(call, `${call}\n    if (iFrame < 0) linear += radiance(s, eyeRay(camera, fragCoord.yx, 1.0), pixelSpread, key, keyNormal);`))],
 ];
 
 await withHarness(async (context) => {

@@ -1,10 +1,12 @@
 // The accuracy table: every hard view (tests/hard-views.js) and the default view, rendered by the
 // page in headless Chromium and compared with the float64 reference twice: with the same rays
 // (arithmetic error alone) and converged (64 jittered samples per pixel, texture point-sampled:
-// the total error, aliasing included). Writes tests/accuracy/results.json and the table between
-// the accuracy markers in README.md.
+// the total error, aliasing included). Each view is measured at one sample per pixel and with
+// adaptive anti-aliasing (16 samples at edges; the same-ray reference takes its extra samples in
+// the pixels the shader's "Show pixels with extra samples" view marks). Writes
+// tests/accuracy/results.json and the table between the accuracy markers in README.md.
 //
-//   npm run accuracy            (about three minutes on two cores)
+//   npm run accuracy            (about six minutes on two cores)
 
 import fs from 'node:fs';
 import path from 'node:path';
@@ -12,6 +14,7 @@ import { renderReference } from '../../src/reference/render.js';
 import { imageError } from '../../src/reference/error.js';
 import { REPO_ROOT, SHADER_FILE } from '../harness/config.js';
 import { renderView } from '../harness/page.js';
+import { extraSampleMask } from '../harness/aa-mask.js';
 import { rendererLabel, withHarness } from '../harness/setup.js';
 import { HARD_VIEWS, referenceView } from '../hard-views.js';
 import { DEFAULT_SIZE, viewSize } from '../views.js';
@@ -20,10 +23,20 @@ import { replaceMarkedSection } from './readme-section.js';
 const CONVERGED_SAMPLES_PER_AXIS = 8;
 const VIEWS = [{ name: 'default', what: 'the default view', params: { time: 0 } }, ...HARD_VIEWS];
 
+const ADAPTIVE = { SAMPLES: 16, ADAPTIVE_AA: 1 };
+
 const pct = (f) => `${(100 * f).toFixed(3)}%`;
-const row = (name, same, converged) =>
-  `| ${name} | ${same.rmse.toExponential(1)} | ${same.maxAbs.toFixed(3)} | ${pct(same.over2)} | ${same.nonFinite} | ` +
+const row = (name, settings, same, converged) =>
+  `| ${name} | ${settings} | ${same.rmse.toExponential(1)} | ${same.maxAbs.toFixed(3)} | ${pct(same.over2)} | ${same.nonFinite} | ` +
   `${converged.rmse.toExponential(1)} | ${converged.psnr.toFixed(1)} | ${pct(converged.over1)} | ${pct(converged.over2)} |`;
+
+/** The page's image and its errors against the same-ray and the converged reference. */
+async function measure(source, view, extraSamples) {
+  const image = await renderView(view);
+  const same = imageError(image, renderReference(source, referenceView(view), { extraSamples }));
+  const converged = imageError(image, renderReference(source, referenceView(view), { mode: 'converged', samplesPerAxis: CONVERGED_SAMPLES_PER_AXIS }));
+  return { same, converged };
+}
 
 async function main() {
   const source = fs.readFileSync(SHADER_FILE, 'utf8');
@@ -31,14 +44,15 @@ async function main() {
   const context = await withHarness(async (harness) => {
     for (const [i, view] of VIEWS.entries()) {
       const [width, height] = viewSize(view);
-      process.stdout.write(`[${i + 1}/${VIEWS.length}] ${view.name}: page`);
-      const image = await renderView(view);
-      process.stdout.write(', same-ray reference');
-      const same = imageError(image, renderReference(source, referenceView(view)));
-      process.stdout.write(`, converged reference (${CONVERGED_SAMPLES_PER_AXIS ** 2} spp)`);
-      const converged = imageError(image, renderReference(source, referenceView(view), { mode: 'converged', samplesPerAxis: CONVERGED_SAMPLES_PER_AXIS }));
+      process.stdout.write(`[${i + 1}/${VIEWS.length}] ${view.name}: 1 spp`);
+      const one = await measure(source, { ...view, params: { ...view.params, SAMPLES: 1 } });
+      process.stdout.write(', adaptive');
+      const adaptiveView = { ...view, params: { ...view.params, ...ADAPTIVE } };
+      const mask = extraSampleMask(await renderView({ ...adaptiveView, params: { ...adaptiveView.params, SHOW_AA_PIXELS: 1 } }));
+      const adaptive = await measure(source, adaptiveView, mask);
+      const extraSampleFraction = mask.reduce((n, v) => n + v, 0) / mask.length;
       console.log(' done');
-      results.push({ name: view.name, what: view.what, width, height, sameRays: same, converged });
+      results.push({ name: view.name, what: view.what, width, height, sameRays: one.same, converged: one.converged, adaptive: { ...ADAPTIVE, extraSampleFraction, sameRays: adaptive.same, converged: adaptive.converged } });
     }
     return harness;
   });
@@ -47,11 +61,14 @@ async function main() {
   fs.mkdirSync(outDir, { recursive: true });
   fs.writeFileSync(path.join(outDir, 'results.json'), JSON.stringify({ environment: context.environment, convergedSamples: CONVERGED_SAMPLES_PER_AXIS ** 2, results }, null, 2) + '\n');
   const table = [
-    `Measured by \`npm run accuracy\` at ${DEFAULT_SIZE.join('×')}, 1 sample per pixel, on ${rendererLabel(context.environment.renderer)} (${context.environment.chromium}).`,
+    `Measured by \`npm run accuracy\` at ${DEFAULT_SIZE.join('×')}, at 1 sample per pixel and with adaptive anti-aliasing (16 samples in the pixels it marks, their share in brackets), on ${rendererLabel(context.environment.renderer)} (${context.environment.chromium}).`,
     '',
-    '| view | same-ray RMSE | same-ray max | same-ray >2/255 | NaN/Inf | converged RMSE | converged PSNR (dB) | converged >1/255 | converged >2/255 |',
-    '|---|---|---|---|---|---|---|---|---|',
-    ...results.map((r) => row(r.name, r.sameRays, r.converged)),
+    '| view | sampling | same-ray RMSE | same-ray max | same-ray >2/255 | NaN/Inf | converged RMSE | converged PSNR (dB) | converged >1/255 | converged >2/255 |',
+    '|---|---|---|---|---|---|---|---|---|---|',
+    ...results.flatMap((r) => [
+      row(r.name, '1 spp', r.sameRays, r.converged),
+      row('', `adaptive (${pct(r.adaptive.extraSampleFraction)})`, r.adaptive.sameRays, r.adaptive.converged),
+    ]),
   ].join('\n');
   replaceMarkedSection(path.join(REPO_ROOT, 'README.md'), 'accuracy', table);
   console.log(`\n${table}\n\nwrote tests/accuracy/results.json and the accuracy table in README.md`);

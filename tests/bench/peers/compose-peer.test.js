@@ -11,7 +11,8 @@ import { disconnect } from '../../harness/page.js';
 import { mapShaderLog, renderRawShader } from '../../harness/raw-webgl.js';
 import { ComposePeerError, composePeer, replacedNames, scanTopLevel } from './compose-peer.js';
 
-const PEERS = ['assignment', 'sdf', 'plain'];
+// The peers, and the project's own variants composed the same way (savings off, one trace site).
+const PEERS = ['assignment', 'sdf', 'plain', 'savings-off', 'one-trace-site'];
 const peerSource = (name) => fs.readFileSync(new URL(`./${name}.glsl`, import.meta.url), 'utf8');
 
 const PROJECT = `// project
