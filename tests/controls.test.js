@@ -26,7 +26,16 @@ describe('parseControls', () => {
 
   test('finds every annotated control, in order, and nothing else', () => {
     expect(controls.map((c) => c.name)).toEqual([
-      'BOUNCES', 'SHADOWS', 'TEXTURE', 'SAMPLES', 'EXPOSURE', 'CONE_HEIGHT', 'LIGHT_POSITION', 'SPLAT', 'FLAG', 'COUNT',
+      'BOUNCES',
+      'SHADOWS',
+      'TEXTURE',
+      'SAMPLES',
+      'EXPOSURE',
+      'CONE_HEIGHT',
+      'LIGHT_POSITION',
+      'SPLAT',
+      'FLAG',
+      'COUNT',
     ]);
   });
 
@@ -34,7 +43,18 @@ describe('parseControls', () => {
     // name, kind, type, default, extra fields
     ['BOUNCES', 'define', 'int', 3, { label: 'Bounce limit', min: 0, max: 4, step: 1, line: 4 }],
     ['SHADOWS', 'define', 'int', 1, { label: 'Shadows', toggle: true, min: 0, max: 1, step: 1 }],
-    ['TEXTURE', 'define', 'int', 0, { options: [{ label: 'Stripes', value: 0 }, { label: 'Checkerboard', value: 1 }] }],
+    [
+      'TEXTURE',
+      'define',
+      'int',
+      0,
+      {
+        options: [
+          { label: 'Stripes', value: 0 },
+          { label: 'Checkerboard', value: 1 },
+        ],
+      },
+    ],
     ['SAMPLES', 'define', 'int', 1, { options: [1, 4, 9, 16].map((v) => ({ label: String(v), value: v })) }],
     ['EXPOSURE', 'define', 'float', 1.5, { label: 'Exposure' }],
     ['CONE_HEIGHT', 'uniform', 'float', 1.8, { min: 0.1, max: 4, step: 0.01, line: 11 }],

@@ -29,7 +29,7 @@ export const MAX_OVER_2 = 1e-4;
 export const HARD_VIEWS = [
   {
     name: 'apex-from-above',
-    what: 'looking straight down at the cone\'s apex (elevation 90°: the camera basis must not degenerate, the apex normal is 0/0)',
+    what: "looking straight down at the cone's apex (elevation 90°: the camera basis must not degenerate, the apex normal is 0/0)",
     params: { time: 0, CAMERA_TARGET: [1.2, 1.7, 1.1], CAMERA_ORBIT: [30, 90], CAMERA_DISTANCE: 3 },
   },
   {

@@ -39,6 +39,8 @@ describe('hard views against the same-ray float64 reference', () => {
     const share = extraSamples.reduce((n, v) => n + v, 0) / extraSamples.length;
     console.log(`${view.name}, adaptive (extra samples in ${(100 * share).toFixed(2)}% of pixels): ${formatImageError(error)}`);
     expect(error.nonFinite).toBe(0);
-    expect(error.over2, `${view.name}, adaptive: ${formatImageError(error)}`).toBeLessThanOrEqual(view.adaptiveMaxOver2 ?? view.maxOver2 ?? MAX_OVER_2);
+    expect(error.over2, `${view.name}, adaptive: ${formatImageError(error)}`).toBeLessThanOrEqual(
+      view.adaptiveMaxOver2 ?? view.maxOver2 ?? MAX_OVER_2,
+    );
   });
 });

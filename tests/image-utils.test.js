@@ -7,7 +7,15 @@ import { describe, expect, test } from 'vitest';
 import { composeImageShader } from '../src/shadertoy/header.js';
 import { findChrome } from './harness/chrome-path.js';
 import { OUTPUT_DIR } from './harness/config.js';
-import { allowedDiffPixels, blankReason, compareImages, expectImagesMatch, makeImage as image, readPng, writePng } from './harness/images.js';
+import {
+  allowedDiffPixels,
+  blankReason,
+  compareImages,
+  expectImagesMatch,
+  makeImage as image,
+  readPng,
+  writePng,
+} from './harness/images.js';
 import { mapShaderLog } from './harness/raw-webgl.js';
 import { MAX_DIFF_FRACTION, PIXEL_THRESHOLD } from './views.js';
 const gradient = (x, y) => [(x * 2) % 200, (y * 2) % 200, 128];
@@ -49,7 +57,9 @@ describe('compareImages and the tolerance', () => {
   });
 
   test('a 40-level change in a 10x10 patch counts every pixel of it, edges included', () => {
-    const patched = image(w, h, (x, y) => (x >= 40 && x < 50 && y >= 40 && y < 50 ? gradient(x, y).map((c) => c + 40 > 255 ? c - 40 : c + 40) : gradient(x, y)));
+    const patched = image(w, h, (x, y) =>
+      x >= 40 && x < 50 && y >= 40 && y < 50 ? gradient(x, y).map((c) => (c + 40 > 255 ? c - 40 : c + 40)) : gradient(x, y),
+    );
     const { diffPixels, diff } = compareImages(patched, base);
     expect(diffPixels).toBe(100);
     expect(diffPixels).toBeGreaterThan(allowedDiffPixels(w, h));
@@ -122,7 +132,10 @@ describe('mapShaderLog', () => {
   const source = 'void mainImage(out vec4 c, in vec2 f) {\n    c = vec4(undefinedThing);\n}\n';
   const { code, firstSourceLine } = composeImageShader(source);
   test.each([
-    [`ERROR: 0:${firstSourceLine + 1}: 'undefinedThing' : undeclared identifier`, /^shaders\/raytrace\.glsl:2: error: 'undefinedThing'.*\n\s+c = vec4\(undefinedThing\);$/],
+    [
+      `ERROR: 0:${firstSourceLine + 1}: 'undefinedThing' : undeclared identifier`,
+      /^shaders\/raytrace\.glsl:2: error: 'undefinedThing'.*\n\s+c = vec4\(undefinedThing\);$/,
+    ],
     [`ERROR: 0:3: 'x' : bad`, /^error: 'x' : bad$/], // a line of Shadertoy's header: no line of the file
     [`ERROR: 0:${firstSourceLine + 10}: 'y' : bad`, /^error: 'y' : bad$/], // Shadertoy's main, after the file
     ['ERROR: 1 compilation errors.  No code generated.', /^$/], // the summary line is dropped

@@ -124,7 +124,7 @@ describe('GLSL intersectors against float64', () => {
   });
   afterAll(() => disconnect());
 
-  it('the reference itself agrees with each case\'s written expectation', () => {
+  it("the reference itself agrees with each case's written expectation", () => {
     const wrong = cases
       .filter((c) => ['hit', 'edge', 'surface'].includes(c.expect) !== reference(c)[0] > 0 && c.expect !== 'agree')
       .map((c) => `${c.name}: expected ${c.expect}, float64 says t = ${reference(c)[0]}`);
@@ -150,12 +150,21 @@ describe('GLSL intersectors against float64', () => {
         const S = caseScale(k);
         const hitGot = got[0] > 0;
         const hitWant = want[0] > 0;
-        const say = (what) => failures.push(`${k.name}: ${what} (got t=${got[0]} n=${got.slice(1).map((x) => x.toFixed(6))}, want t=${want[0]} n=${want.slice(1).map((x) => x.toFixed(6))}; ${k.note})`);
-        if (k.expect === 'agree' && hitGot !== hitWant && inAmbiguityBand(k, S)) { inBand++; continue; }
+        const say = (what) =>
+          failures.push(
+            `${k.name}: ${what} (got t=${got[0]} n=${got.slice(1).map((x) => x.toFixed(6))}, want t=${want[0]} n=${want.slice(1).map((x) => x.toFixed(6))}; ${k.note})`,
+          );
+        if (k.expect === 'agree' && hitGot !== hitWant && inAmbiguityBand(k, S)) {
+          inBand++;
+          continue;
+        }
         // From an origin on the surface, a root within rounding of 0 is the surface itself:
         // float32 may report it (the shader never relies on it: it skips or offsets instead).
         if (k.expect === 'surface' && hitGot && got[0] <= K * U * S) continue;
-        if (hitGot !== hitWant) { say(hitWant ? 'missed' : 'hit where float64 misses'); continue; }
+        if (hitGot !== hitWant) {
+          say(hitWant ? 'missed' : 'hit where float64 misses');
+          continue;
+        }
         if (!hitWant) continue;
         const tTol = k.expect === 'agree' ? tangentTolerance(S) : K * U * S;
         const dt = Math.abs(got[0] - want[0]);
@@ -235,6 +244,8 @@ describe('GLSL intersectors against float64', () => {
   // How close the worst case came to its tolerance: a bound far above every error is a bound
   // worth tightening.
   afterAll(() => {
-    console.log(`intersectors: worst t error ${ratios.t.toFixed(3)} x (K u S); worst normal angle ${ratios.angle.toFixed(3)} x its tolerance`);
+    console.log(
+      `intersectors: worst t error ${ratios.t.toFixed(3)} x (K u S); worst normal angle ${ratios.angle.toFixed(3)} x its tolerance`,
+    );
   });
 });

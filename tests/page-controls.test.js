@@ -215,16 +215,52 @@ describe('the URL', () => {
     ['mouse with a word', `${PATTERN}&size=64x36&time=0&mouse=1,2,x,4`, 'mouse=', (s) => expect(s.mouse).toEqual([0, 0, 0, 0])],
     ['size 0x0', `${PATTERN}&size=0x0&time=0`, 'size=0x0', (s) => expect(s.width).toBeGreaterThan(0)],
     ['size in words', `${PATTERN}&size=bigxsmall&time=0`, 'size=', (s) => expect(s.width).toBeGreaterThan(0)],
-    ['absurd width', `${PATTERN}&size=99999x50&time=0`, 'size=', (s) => expect([s.width <= 16384, s.width / s.height]).toEqual([true, 2048]), { mayBeDark: true }],
+    [
+      'absurd width',
+      `${PATTERN}&size=99999x50&time=0`,
+      'size=',
+      (s) => expect([s.width <= 16384, s.width / s.height]).toEqual([true, 2048]),
+      { mayBeDark: true },
+    ],
     ['scale out of range', `${PATTERN}&scale=40&time=0`, 'scale=40', () => {}],
     ['cap below the minimum', `${PATTERN}&cap=2&time=0`, 'cap=2', (s) => expect(Math.max(s.width, s.height)).toBe(16)],
     ['speed NaN', `${PATTERN}&size=64x36&speed=NaN`, 'speed=NaN', (s) => expect(s.speed).toBe(1)],
-    ['unknown control', `shader=examples/raymarch.glsl&size=64x36&time=0&NO_SUCH=1`, 'NO_SUCH', (s) => expect(s.controls).not.toHaveProperty('NO_SUCH')],
-    ['control not a number', `shader=examples/raymarch.glsl&size=64x36&time=0&TWIST=abc`, 'TWIST', (s) => expect(s.controls.TWIST).toBe(1.2)],
-    ['control out of range', `shader=examples/raymarch.glsl&size=64x36&time=0&TWIST=99`, 'TWIST=99', (s) => expect(s.controls.TWIST).toBe(4)],
-    ['vector of the wrong length', `shader=examples/raymarch.glsl&size=64x36&time=0&ALBEDO=1,2`, 'ALBEDO', (s) => expect(s.controls.ALBEDO).toEqual([0.85, 0.42, 0.18])],
-    ['shader on another site', `shader=https://example.com/evil.glsl&size=64x36&time=0`, 'shader=', (s) => expect(s.fileName).toBe('shaders/raytrace.glsl')],
-    ['shader that does not exist', `shader=examples/missing.glsl&size=64x36&time=0`, 'missing.glsl', (s) => expect(s.origin).toBe('builtin')],
+    [
+      'unknown control',
+      `shader=examples/raymarch.glsl&size=64x36&time=0&NO_SUCH=1`,
+      'NO_SUCH',
+      (s) => expect(s.controls).not.toHaveProperty('NO_SUCH'),
+    ],
+    [
+      'control not a number',
+      `shader=examples/raymarch.glsl&size=64x36&time=0&TWIST=abc`,
+      'TWIST',
+      (s) => expect(s.controls.TWIST).toBe(1.2),
+    ],
+    [
+      'control out of range',
+      `shader=examples/raymarch.glsl&size=64x36&time=0&TWIST=99`,
+      'TWIST=99',
+      (s) => expect(s.controls.TWIST).toBe(4),
+    ],
+    [
+      'vector of the wrong length',
+      `shader=examples/raymarch.glsl&size=64x36&time=0&ALBEDO=1,2`,
+      'ALBEDO',
+      (s) => expect(s.controls.ALBEDO).toEqual([0.85, 0.42, 0.18]),
+    ],
+    [
+      'shader on another site',
+      `shader=https://example.com/evil.glsl&size=64x36&time=0`,
+      'shader=',
+      (s) => expect(s.fileName).toBe('shaders/raytrace.glsl'),
+    ],
+    [
+      'shader that does not exist',
+      `shader=examples/missing.glsl&size=64x36&time=0`,
+      'missing.glsl',
+      (s) => expect(s.origin).toBe('builtin'),
+    ],
     ['channel that does not exist', `${PATTERN}&size=64x36&time=0&iChannel0=nope.png`, 'iChannel0=nope.png', () => {}],
     ['a name that is no name', `${PATTERN}&size=64x36&time=0&a%20b=1`, 'a b=1', () => {}],
   ];
@@ -235,8 +271,12 @@ describe('the URL', () => {
       // (a 16384 x 8 strip of the pattern is a legitimately dark picture; it was drawn, at that size)
       if (mayBeDark) expect(image.width * image.height).toBeGreaterThan(0);
       else assertNotBlank(image, query);
-      if (warned.startsWith('iChannel')) await page.waitForFunction(() => document.getElementById('toast').textContent.includes('nope.png'));
-      expect(warnings.some((w) => w.includes(warned)), `a warning naming ${warned}; got:\n${warnings.join('\n')}`).toBe(true);
+      if (warned.startsWith('iChannel'))
+        await page.waitForFunction(() => document.getElementById('toast').textContent.includes('nope.png'));
+      expect(
+        warnings.some((w) => w.includes(warned)),
+        `a warning naming ${warned}; got:\n${warnings.join('\n')}`,
+      ).toBe(true);
       check(await info(page));
       if (warned === 'missing.glsl') expect(await overlayText(page)).toContain('Could not load examples/missing.glsl');
     });

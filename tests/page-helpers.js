@@ -12,7 +12,8 @@ export const EXAMPLES_DIR = path.join(REPO_ROOT, 'public', 'examples');
 export const exampleSource = (name) => fs.readFileSync(path.join(EXAMPLES_DIR, `${name}.glsl`), 'utf8');
 
 /** A Shadertoy shader that paints every pixel rgb(r, g, b) (0..255). */
-export const solid = (r, g, b) => `void mainImage(out vec4 fragColor, in vec2 fragCoord) {\n    fragColor = vec4(${r / 255}, ${g / 255}, ${b / 255}, 1.0);\n}\n`;
+export const solid = (r, g, b) =>
+  `void mainImage(out vec4 fragColor, in vec2 fragCoord) {\n    fragColor = vec4(${r / 255}, ${g / 255}, ${b / 255}, 1.0);\n}\n`;
 
 /**
  * Runs `body(dir, base)` with a fresh folder public/<prefix>-<pid>/ that the page serves as
@@ -58,7 +59,12 @@ export async function withPage(body, { viewport, beforeLoad } = {}) {
     await page.goto(`${base}/${query}`, { waitUntil: 'load' });
     await page.waitForFunction(() => window.raytracer || document.documentElement.dataset.error, { polling: 50 });
     if (expectReady) {
-      const outcome = await page.evaluate(() => window.raytracer.ready.then(() => 'ok', (e) => `ready rejected: ${e?.message ?? e}`));
+      const outcome = await page.evaluate(() =>
+        window.raytracer.ready.then(
+          () => 'ok',
+          (e) => `ready rejected: ${e?.message ?? e}`,
+        ),
+      );
       expect(outcome, `${query}: the page did not draw its first frame`).toBe('ok');
     }
   };
@@ -85,7 +91,10 @@ export async function nextFrame(page) {
   await page.evaluate(() => {
     window.__nextFrame = window.raytracer.nextFrame();
   });
-  return () => page.evaluate(() => window.__nextFrame).then((r) => ({ width: r.width, height: r.height, iFrame: r.iFrame, data: decodeRgba(r.data, r.width, r.height, 'nextFrame') }));
+  return () =>
+    page
+      .evaluate(() => window.__nextFrame)
+      .then((r) => ({ width: r.width, height: r.height, iFrame: r.iFrame, data: decodeRgba(r.data, r.width, r.height, 'nextFrame') }));
 }
 
 export async function info(page) {

@@ -10,7 +10,18 @@ import { composeImageShader } from '../src/shadertoy/header.js';
 import { makeImage, readPng, sameImage, writePng } from './harness/images.js';
 import { disconnect } from './harness/page.js';
 import { renderRawShader } from './harness/raw-webgl.js';
-import { EXAMPLES_DIR, button, exampleSource, info, overlayText, pixel, readPixels, solid, withPage, withServedDir } from './page-helpers.js';
+import {
+  EXAMPLES_DIR,
+  button,
+  exampleSource,
+  info,
+  overlayText,
+  pixel,
+  readPixels,
+  solid,
+  withPage,
+  withServedDir,
+} from './page-helpers.js';
 
 afterAll(disconnect);
 
@@ -78,7 +89,10 @@ async function dropFiles(page, files) {
 
 /** A PNG file of one colour. */
 function writeSolidPng(file, width, height, rgb) {
-  writePng(file, makeImage(width, height, () => rgb));
+  writePng(
+    file,
+    makeImage(width, height, () => rgb),
+  );
 }
 
 // ------------------------------------------------------------------------------------------------
@@ -90,37 +104,40 @@ describe('the editor', () => {
     { name: 'pattern', find: 'float turn = ', error: 'undeclared' },
     { name: 'raymarch', find: 'float sphere = ', error: 'undeclared' },
   ];
-  test.each(BROKEN.map((b) => [b.name, b]))('pasting a broken %s.glsl names the right line and keeps the last image', async (name, broken) => {
-    await withPage(async ({ page, context, goto }) => {
-      await allowClipboard(page, context.baseUrl);
-      await goto(`?shader=examples/${name}.glsl&${SIZE}&time=2`);
-      const before = await readPixels(page);
-      const lines = exampleSource(name).split('\n');
-      const index = lines.findIndex((l) => l.includes(broken.find));
-      lines[index] = lines[index].replace(broken.find, `${broken.find}notDeclaredAnywhere + `);
-      const line = index + 1;
+  test.each(BROKEN.map((b) => [b.name, b]))(
+    'pasting a broken %s.glsl names the right line and keeps the last image',
+    async (name, broken) => {
+      await withPage(async ({ page, context, goto }) => {
+        await allowClipboard(page, context.baseUrl);
+        await goto(`?shader=examples/${name}.glsl&${SIZE}&time=2`);
+        const before = await readPixels(page);
+        const lines = exampleSource(name).split('\n');
+        const index = lines.findIndex((l) => l.includes(broken.find));
+        lines[index] = lines[index].replace(broken.find, `${broken.find}notDeclaredAnywhere + `);
+        const line = index + 1;
 
-      await (await button(page, 'Edit shader')).click();
-      await page.waitForSelector('textarea[aria-label="Shader source"]', { visible: true });
-      expect(await page.$eval('textarea', (t) => t.value)).toBe(exampleSource(name));
-      await pasteIntoEditor(page, lines.join('\n'));
+        await (await button(page, 'Edit shader')).click();
+        await page.waitForSelector('textarea[aria-label="Shader source"]', { visible: true });
+        expect(await page.$eval('textarea', (t) => t.value)).toBe(exampleSource(name));
+        await pasteIntoEditor(page, lines.join('\n'));
 
-      await page.waitForFunction(() => !/** @type {HTMLElement} */ (document.querySelector('[role="alert"]')).hidden, { polling: 50 });
-      const alert = await overlayText(page);
-      expect(alert).toContain(`${name}.glsl:${line}:`);
-      expect(alert).toContain('notDeclaredAnywhere');
-      expect(alert).toContain(broken.error);
-      expect(alert).toContain('still showing the last version that compiled');
-      expect(await page.$$eval('.editor-gutter .error', (els) => els.map((e) => Number(e.textContent)))).toContain(line);
-      expect(sameImage(await readPixels(page), before), 'the previous image stays').toBe(true);
+        await page.waitForFunction(() => !(/** @type {HTMLElement} */ (document.querySelector('[role="alert"]')).hidden), { polling: 50 });
+        const alert = await overlayText(page);
+        expect(alert).toContain(`${name}.glsl:${line}:`);
+        expect(alert).toContain('notDeclaredAnywhere');
+        expect(alert).toContain(broken.error);
+        expect(alert).toContain('still showing the last version that compiled');
+        expect(await page.$$eval('.editor-gutter .error', (els) => els.map((e) => Number(e.textContent)))).toContain(line);
+        expect(sameImage(await readPixels(page), before), 'the previous image stays').toBe(true);
 
-      // pasting a good shader runs it, and the alert goes
-      await pasteIntoEditor(page, solid(10, 200, 30));
-      await page.waitForFunction(() => /** @type {HTMLElement} */ (document.querySelector('[role="alert"]')).hidden, { polling: 50 });
-      expect(allPixels(await readPixels(page), [10, 200, 30])).toBe(true);
-      expect(await page.$$('.editor-gutter .error')).toHaveLength(0);
-    });
-  });
+        // pasting a good shader runs it, and the alert goes
+        await pasteIntoEditor(page, solid(10, 200, 30));
+        await page.waitForFunction(() => /** @type {HTMLElement} */ (document.querySelector('[role="alert"]')).hidden, { polling: 50 });
+        expect(allPixels(await readPixels(page), [10, 200, 30])).toBe(true);
+        expect(await page.$$('.editor-gutter .error')).toHaveLength(0);
+      });
+    },
+  );
 
   test('typing then Ctrl+Enter compiles; a shader without a control block empties the panel', async () => {
     await withPage(async ({ page, goto }) => {
@@ -136,7 +153,11 @@ describe('the editor', () => {
       await page.keyboard.down('Control');
       await page.keyboard.press('Enter');
       await page.keyboard.up('Control');
-      await page.waitForFunction(() => window.raytracer.info().origin === 'editor' && !document.querySelector('.lil-gui .lil-title')?.parentElement.textContent.includes('Twist'));
+      await page.waitForFunction(
+        () =>
+          window.raytracer.info().origin === 'editor' &&
+          !document.querySelector('.lil-gui .lil-title')?.parentElement.textContent.includes('Twist'),
+      );
       await page.evaluate(() => window.raytracer.readPixels()); // settles the compile
       expect(allPixels(await readPixels(page), [255, 0, 255])).toBe(true);
       expect(await folders()).not.toContain('Shader controls');
@@ -196,7 +217,11 @@ describe('dropping files on the page', () => {
         expect(pixel(await readPixels(page), 20, 45)).toEqual([20, 60, 240]);
         expect(pixel(await readPixels(page), 120, 45)).toEqual([0, 0, 0]);
         // Controls → Channels → "Load image into iChannel2…" opens a file chooser
-        await page.evaluate(() => [.../** @type {NodeListOf<HTMLElement>} */ (document.querySelectorAll('.lil-gui .lil-title'))].find((t) => t.textContent.trim() === 'Channels').click());
+        await page.evaluate(() =>
+          [.../** @type {NodeListOf<HTMLElement>} */ (document.querySelectorAll('.lil-gui .lil-title'))]
+            .find((t) => t.textContent.trim() === 'Channels')
+            .click(),
+        );
         await new Promise((r) => setTimeout(r, 600)); // the folder's opening animation
         const [chooser] = await Promise.all([page.waitForFileChooser(), (await button(page, 'Load image into iChannel2…')).click()]);
         await chooser.accept([local]);

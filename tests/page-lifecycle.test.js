@@ -18,7 +18,10 @@ const PATTERN = `?shader=examples/pattern.glsl&${SIZE}&time=2`;
 describe('errors', () => {
   test('a shader that fails on load: the alert names the line, nothing else runs, nothing throws', async () => {
     await withServedDir('test-broken', async (dir, base) => {
-      fs.writeFileSync(path.join(dir, 'broken.glsl'), '// line 1\n// line 2\nvoid mainImage(out vec4 c, in vec2 f) {\n    c = vec3(1.0);\n}\n');
+      fs.writeFileSync(
+        path.join(dir, 'broken.glsl'),
+        '// line 1\n// line 2\nvoid mainImage(out vec4 c, in vec2 f) {\n    c = vec3(1.0);\n}\n',
+      );
       await withPage(async ({ page, goto }) => {
         await goto(`?shader=${base}/broken.glsl&${SIZE}&time=0`, { expectReady: false });
         await page.waitForFunction(() => document.documentElement.dataset.error === 'shader-compile');
@@ -34,13 +37,19 @@ describe('errors', () => {
       await goto(PATTERN);
       const before = await readPixels(page);
       await page.evaluate(() => {
-        window.__loseContext = /** @type {HTMLCanvasElement} */ (document.getElementById('view')).getContext('webgl2').getExtension('WEBGL_lose_context');
+        window.__loseContext = /** @type {HTMLCanvasElement} */ (document.getElementById('view'))
+          .getContext('webgl2')
+          .getExtension('WEBGL_lose_context');
         window.__loseContext.loseContext();
       });
-      await page.waitForFunction(() => window.raytracer.info().contextLost && !/** @type {HTMLElement} */ (document.querySelector('[role="alert"]')).hidden);
+      await page.waitForFunction(
+        () => window.raytracer.info().contextLost && !(/** @type {HTMLElement} */ (document.querySelector('[role="alert"]')).hidden),
+      );
       expect(await overlayText(page)).toContain('GPU context was lost');
       await page.evaluate(() => window.__loseContext.restoreContext());
-      await page.waitForFunction(() => !window.raytracer.info().contextLost && /** @type {HTMLElement} */ (document.querySelector('[role="alert"]')).hidden);
+      await page.waitForFunction(
+        () => !window.raytracer.info().contextLost && /** @type {HTMLElement} */ (document.querySelector('[role="alert"]')).hidden,
+      );
       const after = await readPixels(page);
       expect(sameImage(after, before), 'the restored context draws the same picture').toBe(true);
     });
@@ -54,7 +63,12 @@ describe('errors', () => {
         const alert = await overlayText(page);
         expect(alert).toContain('WebGL2 is not available');
         expect(alert).toMatch(/browser or GPU provides no WebGL2/);
-        const rejected = await page.evaluate(() => window.raytracer.ready.then(() => null, (e) => e.message));
+        const rejected = await page.evaluate(() =>
+          window.raytracer.ready.then(
+            () => null,
+            (e) => e.message,
+          ),
+        );
         expect(rejected).toMatch(/WebGL2/);
       },
       {
@@ -111,7 +125,11 @@ describe('development: editing a shader file reloads it without reloading the pa
       await onWatchingServer(`?shader=${prefix}${name}&size=32x18&time=0`, async (page) => {
         expect(pixel(await readPixels(page), 5, 5)).toEqual([200, 0, 0]);
         let colour;
-        await touchUntil(() => fs.writeFileSync(file, solid(0, 0, 200)), 300, async () => (colour = pixel(await readPixels(page), 5, 5))[2] === 200);
+        await touchUntil(
+          () => fs.writeFileSync(file, solid(0, 0, 200)),
+          300,
+          async () => (colour = pixel(await readPixels(page), 5, 5))[2] === 200,
+        );
         expect(colour).toEqual([0, 0, 200]);
         expect(await info(page)).toMatchObject({ origin: 'url', fileName: name });
       });

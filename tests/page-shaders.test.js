@@ -33,7 +33,7 @@ const EXAMPLES = [
   { name: 'inputs', kind: 'iMouse / iFrame / iDate inspector', time: 1.25, mouse: [40, 59, -100, -30] },
 ];
 
-describe('example shaders run unchanged and match Shadertoy\'s header', () => {
+describe("example shaders run unchanged and match Shadertoy's header", () => {
   test.each(EXAMPLES.map((e) => [e.name, e.kind, e]))('%s (%s)', async (_, __, example) => {
     const query = `?shader=examples/${example.name}.glsl&size=${W}x${H}&time=${example.time}&mouse=${example.mouse.join(',')}`;
     let page;
@@ -44,7 +44,13 @@ describe('example shaders run unchanged and match Shadertoy\'s header', () => {
       page = await readPixels(p);
       frame = (await info(p)).frame;
       const state = await info(p);
-      expect(state).toMatchObject({ fileName: `${example.name}.glsl`, origin: 'url', shaderUrl: `examples/${example.name}.glsl`, time: example.time, playing: false });
+      expect(state).toMatchObject({
+        fileName: `${example.name}.glsl`,
+        origin: 'url',
+        shaderUrl: `examples/${example.name}.glsl`,
+        time: example.time,
+        playing: false,
+      });
     });
     assertNotBlank(page, `${example.name} in the page`);
 
@@ -70,7 +76,10 @@ describe('uniform semantics (public/examples/inputs.glsl)', () => {
     await withPage(async ({ page, goto }) => {
       await goto(QUERY);
       const image = await readPixels(page);
-      expect(Object.values(checkResults(image)).every((r) => r === 'pass'), JSON.stringify(checkResults(image), null, 1)).toBe(true);
+      expect(
+        Object.values(checkResults(image)).every((r) => r === 'pass'),
+        JSON.stringify(checkResults(image), null, 1),
+      ).toBe(true);
       const v = decodeInputs(image);
       expect([v.resX, v.resY, v.resZ1000]).toEqual([W, H, 1000]); // iResolution.z = 1
       expect(v.timeMs).toBe(1250);
@@ -114,7 +123,10 @@ describe('uniform semantics (public/examples/inputs.glsl)', () => {
    * @param {{row: number, column?: undefined} | {column: number, row?: undefined}} line y of the row (from the top), or x of the column
    */
   function lightFraction(image, { row, column }) {
-    const points = row !== undefined ? [...Array(image.width).keys()].map((x) => [x, row]) : [...Array(image.height - 20).keys()].map((y) => [column, y]);
+    const points =
+      row !== undefined
+        ? [...Array(image.width).keys()].map((x) => [x, row])
+        : [...Array(image.height - 20).keys()].map((y) => [column, y]);
     return points.filter(([x, y]) => Math.min(...pixel(image, x, y)) > 100).length / points.length;
   }
 
@@ -141,7 +153,8 @@ describe('uniform semantics (public/examples/inputs.glsl)', () => {
         const at = (x, y) => [box.left + x + 0.5, box.top + y + 0.5];
         const touch = kind !== 'mouse';
         const actions = {
-          'press at (40, 30)': () => (touch ? page.touchscreen.touchStart(...at(40, 30)) : page.mouse.move(...at(40, 30)).then(() => page.mouse.down())),
+          'press at (40, 30)': () =>
+            touch ? page.touchscreen.touchStart(...at(40, 30)) : page.mouse.move(...at(40, 30)).then(() => page.mouse.down()),
           'drag to (100, 60)': () => (touch ? page.touchscreen.touchMove(...at(100, 60)) : page.mouse.move(...at(100, 60))),
           release: () => (touch ? page.touchscreen.touchEnd() : page.mouse.up()),
         };
@@ -156,7 +169,10 @@ describe('uniform semantics (public/examples/inputs.glsl)', () => {
           expect(Math.abs(now.x - (step.act.includes('40') ? 40 : 100))).toBeLessThanOrEqual(1); // the pointer is where we put it
           const mouse = decodeInputs(image).mouse;
           expect(mouse, `${kind}: ${step.act}`).toEqual(step.expect(press, now));
-          expect(Object.values(checkResults(image)).every((r) => r === 'pass'), `${step.act}: ${JSON.stringify(checkResults(image))}`).toBe(true);
+          expect(
+            Object.values(checkResults(image)).every((r) => r === 'pass'),
+            `${step.act}: ${JSON.stringify(checkResults(image))}`,
+          ).toBe(true);
           // the crosshair runs through the pixel under the pointer: its row and column are light,
           // the row above is not
           const row = H - 1 - now.y;

@@ -40,11 +40,15 @@ test(`every pair of distinct views differs in more than ${PAIR_MIN_FACTOR}x the 
       const { fraction } = compareImages(images[i].image, images[j].image);
       if (fraction < closest.fraction) closest = { fraction, pair: `${images[i].name} vs ${images[j].name}` };
       if (fraction < needed) {
-        tooClose.push(`${images[i].name} vs ${images[j].name}: ${(100 * fraction).toFixed(2)}% of pixels differ (need ${(100 * needed).toFixed(2)}%)`);
+        tooClose.push(
+          `${images[i].name} vs ${images[j].name}: ${(100 * fraction).toFixed(2)}% of pixels differ (need ${(100 * needed).toFixed(2)}%)`,
+        );
       }
     }
   }
-  console.log(`closest pair of views: ${closest.pair}, ${(100 * closest.fraction).toFixed(2)}% of pixels differ (tolerance ${(100 * MAX_DIFF_FRACTION).toFixed(2)}%)`);
+  console.log(
+    `closest pair of views: ${closest.pair}, ${(100 * closest.fraction).toFixed(2)}% of pixels differ (tolerance ${(100 * MAX_DIFF_FRACTION).toFixed(2)}%)`,
+  );
   expect(tooClose, 'views that the tolerance cannot tell apart').toEqual([]);
 });
 

@@ -38,12 +38,15 @@ describe('composeImageShader', () => {
     ['no host block, no trailing newline', SOURCE.trimEnd(), undefined],
     ['with a host block', SOURCE, hostBlock],
     ['empty host block', SOURCE, ''],
-  ])('%s: firstSourceLine is the line of the file\'s first line', (_, source, block) => {
+  ])("%s: firstSourceLine is the line of the file's first line", (_, source, block) => {
     const { code, firstSourceLine } = composeImageShader(source, block === undefined ? undefined : { hostBlock: block });
     const lines = code.split('\n');
     expect(lines[firstSourceLine - 1]).toBe(source.split('\n')[0]);
     // every line of the file follows in order
-    source.split('\n').filter(Boolean).forEach((line, i) => expect(lines[firstSourceLine - 1 + i]).toBe(line));
+    source
+      .split('\n')
+      .filter(Boolean)
+      .forEach((line, i) => expect(lines[firstSourceLine - 1 + i]).toBe(line));
     expect(firstSourceLine).toBe(headerLines + (block ? block.split('\n').length - 1 : 0) + 1);
     expect(code.startsWith(SHADERTOY_HEADER)).toBe(true);
     expect(code.endsWith(SHADERTOY_FOOTER)).toBe(true);

@@ -137,7 +137,8 @@ export class RaytracerApp extends Emitter {
    */
   setControls(changes, from = 'setControls') {
     const recompile = this.applyControls(changes, from);
-    if (recompile) this.compile().catch(() => {}); // errors are shown on the page
+    if (recompile)
+      this.compile().catch(() => {}); // errors are shown on the page
     else this.requestRender();
     return this.whenCompiled();
   }

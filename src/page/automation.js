@@ -102,7 +102,14 @@ export function installAutomation(app, ready, ui) {
     // read in the same task as the frame was drawn (no preserveDrawingBuffer)
     async nextFrame() {
       const { width, height, pixels, iFrame } = await new Promise((resolve) =>
-        app.once('drawn', () => resolve({ width: app.renderer.width, height: app.renderer.height, pixels: app.renderer.readPixels(), iFrame: app.inputs.last.frame })),
+        app.once('drawn', () =>
+          resolve({
+            width: app.renderer.width,
+            height: app.renderer.height,
+            pixels: app.renderer.readPixels(),
+            iFrame: app.inputs.last.frame,
+          }),
+        ),
       );
       return { width, height, iFrame, data: toBase64(flipRows(pixels, width, height)) };
     },

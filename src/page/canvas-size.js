@@ -21,7 +21,9 @@ export function fitGpu(size, maxSide, what) {
   if (!maxSide) return size;
   const fitted = clampSize(size, maxSide);
   if (fitted.width !== size.width || fitted.height !== size.height) {
-    console.warn(`${what} ${size.width}x${size.height} is larger than this GPU draws (${maxSide} px a side): using ${fitted.width}x${fitted.height}`);
+    console.warn(
+      `${what} ${size.width}x${size.height} is larger than this GPU draws (${maxSide} px a side): using ${fitted.width}x${fitted.height}`,
+    );
   }
   return fitted;
 }

@@ -57,7 +57,10 @@ function showAppOnPage(app, overlay) {
   app.on('context', (_, lost) => {
     if (lost) {
       root.context = 'lost';
-      overlay.show('The GPU context was lost', 'The browser took the graphics context away (a driver reset, or too many pages using the GPU). The picture comes back when the browser restores it.');
+      overlay.show(
+        'The GPU context was lost',
+        'The browser took the graphics context away (a driver reset, or too many pages using the GPU). The picture comes back when the browser restores it.',
+      );
     } else {
       delete root.context;
     }

@@ -9,8 +9,23 @@ import { MAX_SCALE, MIN_SCALE } from './url-params.js';
 const COMPONENTS = ['x', 'y', 'z', 'w'];
 
 /** Longer side of the drawing buffer, in device pixels (0: no cap). */
-export const CAP_CHOICES = { 'No cap': 0, '3840 px': 3840, '2560 px': 2560, '1920 px': 1920, '1280 px': 1280, '960 px': 960, '640 px': 640, '320 px': 320 };
-export const SCREENSHOT_CHOICES = { 'Canvas size': 'current', '2× canvas': 'double', '1280×720': '1280x720', '1920×1080': '1920x1080', '3840×2160': '3840x2160' };
+export const CAP_CHOICES = {
+  'No cap': 0,
+  '3840 px': 3840,
+  '2560 px': 2560,
+  '1920 px': 1920,
+  '1280 px': 1280,
+  '960 px': 960,
+  '640 px': 640,
+  '320 px': 320,
+};
+export const SCREENSHOT_CHOICES = {
+  'Canvas size': 'current',
+  '2× canvas': 'double',
+  '1280×720': '1280x720',
+  '1920×1080': '1920x1080',
+  '3840×2160': '3840x2160',
+};
 
 /** The screenshot size a SCREENSHOT_CHOICES value means for a canvas of width × height, or null for the canvas size. */
 export function screenshotSize(choice, width, height) {
@@ -39,7 +54,10 @@ export class Panel {
     this._state = { scale, cap: Object.values(CAP_CHOICES).includes(cap) ? cap : 0, screenshot: 'current' };
     const view = this.gui.addFolder('View');
     const scaleController = view.add(this._state, 'scale', MIN_SCALE, MAX_SCALE, 0.05).name('Resolution scale').onChange(onScale);
-    const capController = view.add(this._state, 'cap', CAP_CHOICES).name('Max canvas size').onChange((v) => onCap(Number(v)));
+    const capController = view
+      .add(this._state, 'cap', CAP_CHOICES)
+      .name('Max canvas size')
+      .onChange((v) => onCap(Number(v)));
     if (sizeFixed) {
       scaleController.name('Scale (size fixed)').disable();
       capController.name('Max size (size fixed)').disable();

@@ -10,7 +10,9 @@ import { writeUniforms } from './shadertoy-inputs.js';
 
 export class WebGL2UnavailableError extends Error {
   constructor() {
-    super('This browser or GPU provides no WebGL2 context, which the raytracer needs. Try a current Chrome, Firefox or Safari with hardware acceleration switched on.');
+    super(
+      'This browser or GPU provides no WebGL2 context, which the raytracer needs. Try a current Chrome, Firefox or Safari with hardware acceleration switched on.',
+    );
     this.name = 'WebGL2UnavailableError';
   }
 }
@@ -65,7 +67,8 @@ function shadertoyUniforms() {
     if (type === 'sampler2D') value = black;
     else if (type === 'vec3') value = new THREE.Vector3().fromArray(Array.isArray(first) ? first : [0, 0, 0]);
     else if (type === 'vec4') value = new THREE.Vector4().fromArray(Array.isArray(first) ? first : [0, 0, 0, 0]);
-    else if (type.endsWith(']') && Array.isArray(first)) value = [...first]; // float[4], vec3[4] (flat)
+    else if (type.endsWith(']') && Array.isArray(first))
+      value = [...first]; // float[4], vec3[4] (flat)
     else if ((type === 'float' || type === 'int') && typeof first === 'number') value = first;
     else throw new Error(`no first-frame value for Shadertoy's ${type} ${name}`);
     uniforms[name] = { value };
@@ -77,7 +80,14 @@ export class ShaderRenderer {
   /** @param {HTMLCanvasElement} canvas */
   constructor(canvas) {
     /** @type {WebGLContextAttributes} */
-    const attributes = { alpha: false, antialias: false, depth: false, stencil: false, preserveDrawingBuffer: false, powerPreference: 'high-performance' };
+    const attributes = {
+      alpha: false,
+      antialias: false,
+      depth: false,
+      stencil: false,
+      preserveDrawingBuffer: false,
+      powerPreference: 'high-performance',
+    };
     const gl = canvas.getContext('webgl2', attributes);
     if (!gl) throw new WebGL2UnavailableError();
     this.gl = gl;

@@ -26,7 +26,8 @@ const ICONS = {
   edit: '<path d="M11.2 1.8l3 3-8.7 8.7-3.8.8.8-3.8z"/>',
   copy: '<g fill="none" stroke="currentColor" stroke-width="1.5"><path d="M5.5 1.75h8v9.5h-8z"/><path d="M2.75 4.5v9.75h8"/></g>',
   download: '<g fill="none" stroke="currentColor" stroke-width="1.6"><path d="M8 1.5v8.5M4.3 6.6 8 10.3l3.7-3.7M2.5 14h11"/></g>',
-  camera: '<g fill="none" stroke="currentColor" stroke-width="1.5"><path d="M1.75 4.5h3l1.3-2h3.9l1.3 2h3v9H1.75z"/><circle cx="8" cy="8.8" r="2.6"/></g>',
+  camera:
+    '<g fill="none" stroke="currentColor" stroke-width="1.5"><path d="M1.75 4.5h3l1.3-2h3.9l1.3 2h3v9H1.75z"/><circle cx="8" cy="8.8" r="2.6"/></g>',
   link: '<g fill="none" stroke="currentColor" stroke-width="1.6" stroke-linecap="round"><path d="M6.3 9.7l3.4-3.4M7.2 4.6l1.1-1.1a2.7 2.7 0 0 1 3.8 3.8L11 8.4M8.8 11.4l-1.1 1.1a2.7 2.7 0 0 1-3.8-3.8L5 7.6"/></g>',
 };
 
@@ -49,10 +50,22 @@ export class Toolbar {
 
     this.playButton = element('button', { type: 'button', class: 'play' });
     this.playButton.addEventListener('click', () => actions.togglePlay());
-    const restart = element('button', { type: 'button', 'aria-label': 'Restart', title: 'Restart: time and frame back to 0 (R)' }, icon('restart'));
+    const restart = element(
+      'button',
+      { type: 'button', 'aria-label': 'Restart', title: 'Restart: time and frame back to 0 (R)' },
+      icon('restart'),
+    );
     restart.addEventListener('click', () => actions.restart());
 
-    this.timeSlider = element('input', { type: 'range', min: 0, max: 60, step: 0.01, value: 0, 'aria-label': 'Time', title: 'Time (iTime, seconds)' });
+    this.timeSlider = element('input', {
+      type: 'range',
+      min: 0,
+      max: 60,
+      step: 0.01,
+      value: 0,
+      'aria-label': 'Time',
+      title: 'Time (iTime, seconds)',
+    });
     this._dragging = false;
     this.timeSlider.addEventListener('input', () => {
       this._dragging = true;
@@ -73,11 +86,26 @@ export class Toolbar {
     this._shownAt = 0;
 
     this.nameText = element('span', { class: 'name', title: 'The running shader' });
-    const editButton = element('button', { type: 'button', 'aria-label': 'Edit shader', 'aria-expanded': 'false', title: 'Show the shader source (paste a shader there, or drop a .glsl file on the page)' }, icon('edit'), element('span', { class: 'label' }, ' Edit'));
+    const editButton = element(
+      'button',
+      {
+        type: 'button',
+        'aria-label': 'Edit shader',
+        'aria-expanded': 'false',
+        title: 'Show the shader source (paste a shader there, or drop a .glsl file on the page)',
+      },
+      icon('edit'),
+      element('span', { class: 'label' }, ' Edit'),
+    );
     editButton.addEventListener('click', () => actions.toggleEditor());
     this.editButton = editButton;
     const button = (label, title, glyph, action) => {
-      const b = element('button', { type: 'button', title, 'aria-label': label }, icon(glyph), element('span', { class: 'label' }, ` ${label}`));
+      const b = element(
+        'button',
+        { type: 'button', title, 'aria-label': label },
+        icon(glyph),
+        element('span', { class: 'label' }, ` ${label}`),
+      );
       b.addEventListener('click', () => action());
       return b;
     };
@@ -90,10 +118,20 @@ export class Toolbar {
         'div',
         { class: 'group' },
         editButton,
-        button('Copy for Shadertoy', "Copies the shader's text, ready to paste into Shadertoy's Image tab", 'copy', actions.copyForShadertoy),
+        button(
+          'Copy for Shadertoy',
+          "Copies the shader's text, ready to paste into Shadertoy's Image tab",
+          'copy',
+          actions.copyForShadertoy,
+        ),
         button('Download .glsl', 'Saves the shader as a .glsl file', 'download', actions.download),
         button('Screenshot', 'Saves the current frame as a PNG (size: Controls → View)', 'camera', actions.screenshot),
-        button('Copy link', 'Copies a link that reproduces this view: shader URL, controls, mouse, time and size', 'link', actions.copyLink),
+        button(
+          'Copy link',
+          'Copies a link that reproduces this view: shader URL, controls, mouse, time and size',
+          'link',
+          actions.copyLink,
+        ),
       ),
     );
   }

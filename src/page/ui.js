@@ -52,7 +52,9 @@ export function pngBlob({ width, height, data }) {
   canvas.height = height;
   const context = canvas.getContext('2d');
   context.putImageData(new ImageData(new Uint8ClampedArray(data.buffer, data.byteOffset, data.byteLength), width, height), 0, 0);
-  return new Promise((resolve, reject) => canvas.toBlob((blob) => (blob ? resolve(blob) : reject(new Error('PNG encoding failed'))), 'image/png'));
+  return new Promise((resolve, reject) =>
+    canvas.toBlob((blob) => (blob ? resolve(blob) : reject(new Error('PNG encoding failed'))), 'image/png'),
+  );
 }
 
 /** A file name without its folders and extension. */
@@ -105,7 +107,11 @@ export function installUi(app) {
     /** Exactly the text Shadertoy's Image tab takes: the shader file (Shadertoy adds the header). */
     async copyForShadertoy() {
       const ok = await copyText(app.source);
-      toast(ok ? `Copied ${app.fileName} (${app.source.split('\n').length} lines): paste it into Shadertoy's Image tab` : 'The browser refused to copy; use Download .glsl instead');
+      toast(
+        ok
+          ? `Copied ${app.fileName} (${app.source.split('\n').length} lines): paste it into Shadertoy's Image tab`
+          : 'The browser refused to copy; use Download .glsl instead',
+      );
       return ok;
     },
 

@@ -47,7 +47,10 @@ export function imageError(test, reference) {
       const value = a[p * 3 + c];
       let diff;
       if (Number.isFinite(value)) diff = Math.abs(value - b[p * 3 + c]);
-      else { nonFinite++; diff = 1; }
+      else {
+        nonFinite++;
+        diff = 1;
+      }
       sumSquares += diff * diff;
       if (diff > worst) worst = diff;
     }

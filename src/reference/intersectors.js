@@ -53,8 +53,14 @@ export function intersectBox(ro, rd, center, halfSize) {
     const tB = (halfSize[axis] - o[axis]) / rd[axis];
     const tIn = Math.min(tA, tB);
     const tOut = Math.max(tA, tB);
-    if (tIn > tEnter) { tEnter = tIn; enterAxis = axis; }
-    if (tOut < tExit) { tExit = tOut; exitAxis = axis; }
+    if (tIn > tEnter) {
+      tEnter = tIn;
+      enterAxis = axis;
+    }
+    if (tOut < tExit) {
+      tExit = tOut;
+      exitAxis = axis;
+    }
   }
   if (tEnter > tExit || tExit <= 0) return MISS;
   const n = [0, 0, 0];
@@ -93,16 +99,25 @@ export function intersectCone(ro, rd, pa, pb, ra, rb) {
     const q = -(b + (b >= 0 ? 1 : -1) * Math.sqrt(disc));
     for (const t of [q !== 0 ? c / q : -1, a !== 0 ? q / a : -1]) {
       const y = yo + t * yd;
-      if (t > 0 && t < tBest && y >= 0 && y <= height) { tBest = t; part = 0; }
+      if (t > 0 && t < tBest && y >= 0 && y <= height) {
+        tBest = t;
+        part = 0;
+      }
     }
   }
   if (yd !== 0) {
     const tBase = -yo / yd;
     const wBase = addScaled(oPerp, dPerp, tBase);
-    if (tBase > 0 && tBase < tBest && dot(wBase, wBase) <= ra * ra) { tBest = tBase; part = 1; }
+    if (tBase > 0 && tBase < tBest && dot(wBase, wBase) <= ra * ra) {
+      tBest = tBase;
+      part = 1;
+    }
     const tTop = (height - yo) / yd;
     const wTop = addScaled(oPerp, dPerp, tTop);
-    if (rb > 0 && tTop > 0 && tTop < tBest && dot(wTop, wTop) <= rb * rb) { tBest = tTop; part = 2; }
+    if (rb > 0 && tTop > 0 && tTop < tBest && dot(wTop, wTop) <= rb * rb) {
+      tBest = tTop;
+      part = 2;
+    }
   }
   if (part < 0) return MISS;
   if (part === 1) return [tBest, ...scale(axis, -1)];

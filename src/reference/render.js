@@ -205,7 +205,9 @@ export function renderReference(shaderSource, view, { mode = 'same-rays', sample
   const gridPerAxis = converged ? samplesPerAxis : Math.round(Math.sqrt(s.SAMPLES));
   const adaptive = !converged && s.ADAPTIVE_AA === 1 && gridPerAxis > 1;
   if (adaptive && !extraSamples) {
-    throw new Error('reference: adaptive anti-aliasing needs extraSamples, the pixels the shader gave extra samples (its SHOW_AA_PIXELS view)');
+    throw new Error(
+      'reference: adaptive anti-aliasing needs extraSamples, the pixels the shader gave extra samples (its SHOW_AA_PIXELS view)',
+    );
   }
   const filter = !converged && s.TEXTURE_FILTER === 1;
   const [firstRow, endRow] = rows ?? [0, height];

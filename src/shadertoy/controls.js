@@ -26,9 +26,7 @@ import { HOST_CONTROLS_MACRO } from './header.js';
 const VECTOR_SIZES = { float: 1, int: 1, bool: 1, vec2: 2, vec3: 3, vec4: 4 };
 const NUMBER = String.raw`[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?`;
 const DEFINE_LINE = new RegExp(String.raw`^\s*#define\s+([A-Za-z_]\w*)\s+(${NUMBER})\s*//\s*ui:\s*(.*)$`);
-const CONST_LINE = new RegExp(
-  String.raw`^\s*const\s+(float|int|bool|vec2|vec3|vec4)\s+([A-Za-z_]\w*)\s*=\s*([^;]+);\s*//\s*ui:\s*(.*)$`,
-);
+const CONST_LINE = new RegExp(String.raw`^\s*const\s+(float|int|bool|vec2|vec3|vec4)\s+([A-Za-z_]\w*)\s*=\s*([^;]+);\s*//\s*ui:\s*(.*)$`);
 
 /**
  * One control of a control block, as parseControls returns it.
@@ -130,9 +128,18 @@ export function parseControls(source) {
       control = { name: define[1], kind: 'define', type: isInt ? 'int' : 'float', default: value, ...parseAnnotation(define[3], lineNo) };
     } else if (constant) {
       const [, type, name, value, annotation] = constant;
-      control = { name, kind: 'uniform', type: /** @type {Control['type']} */ (type), default: parseValue(type, value, lineNo), ...parseAnnotation(annotation, lineNo) };
+      control = {
+        name,
+        kind: 'uniform',
+        type: /** @type {Control['type']} */ (type),
+        default: parseValue(type, value, lineNo),
+        ...parseAnnotation(annotation, lineNo),
+      };
     } else {
-      throw new ControlBlockError(`cannot read control line "${text.trim()}"; expected "#define NAME number // ui: ..." or "const TYPE NAME = value; // ui: ..."`, lineNo);
+      throw new ControlBlockError(
+        `cannot read control line "${text.trim()}"; expected "#define NAME number // ui: ..." or "const TYPE NAME = value; // ui: ..."`,
+        lineNo,
+      );
     }
     if (names.has(control.name)) throw new ControlBlockError(`control ${control.name} is declared twice`, lineNo);
     if (control.type === 'int' && control.step === undefined && !control.options) control.step = 1;

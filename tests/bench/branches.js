@@ -20,12 +20,20 @@ import { timeShaders } from './timer.js';
 const CALLS = 60;
 const body = Array.from({ length: CALLS }, (_, i) => `        x = sin(x * 1.${i % 10} + 0.${i % 7});`).join('\n');
 // `never` is false for every pixel, but the compiler cannot know it.
-const image = (code) => composeImageShader(`void mainImage(out vec4 c, in vec2 f) {\n    float x = f.x * 0.001;\n    bool never = f.x < -1.0;\n${code}\n    c = vec4(x);\n}\n`).code;
+const image = (code) =>
+  composeImageShader(
+    `void mainImage(out vec4 c, in vec2 f) {\n    float x = f.x * 0.001;\n    bool never = f.x < -1.0;\n${code}\n    c = vec4(x);\n}\n`,
+  ).code;
 const topLoop = (trips) => image(`    int n = never ? 7 : ${trips};\n    for (int k = 0; k < n; k++) {\n${body}\n    }`);
-const bottomLoop = (trips) => image(`    int n = never ? 7 : ${trips};\n    for (int k = 0;; k++) {\n${body}\n        if (k + 1 >= n) break;\n    }`);
+const bottomLoop = (trips) =>
+  image(`    int n = never ? 7 : ${trips};\n    for (int k = 0;; k++) {\n${body}\n        if (k + 1 >= n) break;\n    }`);
 // Sixty tests of four conditions each, joined with && or with all(bvec4(...)).
 const tests = (join) =>
-  Array.from({ length: CALLS }, (_, i) => `        { float u = x * 1.${i % 10} + 0.1; bool b = ${join(['u > 0.1', 'u < 0.9', 'x > 0.05', 'x < 0.5'])}; x = fract(x + (b ? u : -u)); }`).join('\n');
+  Array.from(
+    { length: CALLS },
+    (_, i) =>
+      `        { float u = x * 1.${i % 10} + 0.1; bool b = ${join(['u > 0.1', 'u < 0.9', 'x > 0.05', 'x < 0.5'])}; x = fract(x + (b ? u : -u)); }`,
+  ).join('\n');
 const project = fs.readFileSync(SHADER_FILE, 'utf8');
 // The project at one sample per pixel: its controls at their defaults but for the samples.
 const controls = parseControls(project);
@@ -45,11 +53,22 @@ const CASES = [
   [`${CALLS} tests of four conditions joined with &&`, image(tests((c) => c.join(' && ')))],
   ['the same joined with all(bvec4(...))', image(tests((c) => `all(bvec4(${c.join(', ')}))`))],
   ['the project shader (one sample per pixel)', onePixelSample(project)],
-  ['the same + radiance() behind if (iFrame < 0)', onePixelSample(project.replace(call, `${call}\n    if (iFrame < 0) linear += radiance(s, eyeRay(camera, fragCoord.yx, 1.0), pixelSpread, key, keyNormal);`))],
+  [
+    'the same + radiance() behind if (iFrame < 0)',
+    onePixelSample(
+      project.replace(
+        call,
+        `${call}\n    if (iFrame < 0) linear += radiance(s, eyeRay(camera, fragCoord.yx, 1.0), pixelSpread, key, keyNormal);`,
+      ),
+    ),
+  ],
 ];
 
 await withHarness(async (context) => {
-  const results = await timeShaders(CASES.map(([, code]) => ({ code })), { width: 640, height: 360, frames: 9, warmup: 2 });
+  const results = await timeShaders(
+    CASES.map(([, code]) => ({ code })),
+    { width: 640, height: 360, frames: 9, warmup: 2 },
+  );
   console.log(`640x360 on ${context.environment.renderer}, median of 9 interleaved frames:`);
   results.forEach((r, i) => {
     if (r.error) throw new Error(`${CASES[i][0]}: ${r.error}`);

@@ -38,7 +38,8 @@ export function chartSvg(results, { title, width = 760, height = 460 } = {}) {
   // Log-scale grid lines at 1, 2 and 5 times each power of ten inside [lo, hi] (log10 units).
   const ticks = (lo, hi) => {
     const values = [];
-    for (let e = Math.floor(lo); e <= Math.ceil(hi); e++) for (const m of [1, 2, 5]) if (log(m * 10 ** e) >= lo && log(m * 10 ** e) <= hi) values.push(m * 10 ** e);
+    for (let e = Math.floor(lo); e <= Math.ceil(hi); e++)
+      for (const m of [1, 2, 5]) if (log(m * 10 ** e) >= lo && log(m * 10 ** e) <= hi) values.push(m * 10 ** e);
     return values;
   };
   for (const v of ticks(x0, x1)) {
@@ -51,19 +52,31 @@ export function chartSvg(results, { title, width = 760, height = 460 } = {}) {
   }
   parts.push(`<rect x="${margin.left}" y="${margin.top}" width="${plotW}" height="${plotH}" fill="none" stroke="#999"/>`);
   parts.push(`<text x="${margin.left + plotW / 2}" y="${height - 12}" text-anchor="middle">median frame time, ms (log)</text>`);
-  parts.push(`<text transform="translate(16 ${margin.top + plotH / 2}) rotate(-90)" text-anchor="middle">RMSE against converged float64 (log)</text>`);
+  parts.push(
+    `<text transform="translate(16 ${margin.top + plotH / 2}) rotate(-90)" text-anchor="middle">RMSE against converged float64 (log)</text>`,
+  );
   const front = paretoFront(results);
-  parts.push(`<polyline fill="none" stroke="#000" stroke-dasharray="4 3" points="${front.map((r) => `${px(r.medianMs)},${py(r.rmse)}`).join(' ')}"/>`);
+  parts.push(
+    `<polyline fill="none" stroke="#000" stroke-dasharray="4 3" points="${front.map((r) => `${px(r.medianMs)},${py(r.rmse)}`).join(' ')}"/>`,
+  );
   for (const r of results) {
-    parts.push(`<circle cx="${px(r.medianMs)}" cy="${py(r.rmse)}" r="4" fill="${color(r.group)}"><title>${escape(r.name)}: ${r.medianMs.toFixed(1)} ms, RMSE ${r.rmse.toFixed(4)}</title></circle>`);
-    parts.push(`<text x="${px(r.medianMs) + 6}" y="${py(r.rmse) - 5}" fill="${color(r.group)}" font-size="9">${escape(r.name.replace(/ \(peer \d\)/, ''))}</text>`);
+    parts.push(
+      `<circle cx="${px(r.medianMs)}" cy="${py(r.rmse)}" r="4" fill="${color(r.group)}"><title>${escape(r.name)}: ${r.medianMs.toFixed(1)} ms, RMSE ${r.rmse.toFixed(4)}</title></circle>`,
+    );
+    parts.push(
+      `<text x="${px(r.medianMs) + 6}" y="${py(r.rmse) - 5}" fill="${color(r.group)}" font-size="9">${escape(r.name.replace(/ \(peer \d\)/, ''))}</text>`,
+    );
   }
   groups.forEach((g, i) => {
     const y = margin.top + 10 + i * 16;
-    parts.push(`<circle cx="${margin.left + plotW + 16}" cy="${y}" r="4" fill="${color(g)}"/><text x="${margin.left + plotW + 26}" y="${y + 4}">${escape(g)}</text>`);
+    parts.push(
+      `<circle cx="${margin.left + plotW + 16}" cy="${y}" r="4" fill="${color(g)}"/><text x="${margin.left + plotW + 26}" y="${y + 4}">${escape(g)}</text>`,
+    );
   });
   const y = margin.top + 10 + groups.length * 16;
-  parts.push(`<line x1="${margin.left + plotW + 10}" x2="${margin.left + plotW + 22}" y1="${y}" y2="${y}" stroke="#000" stroke-dasharray="4 3"/><text x="${margin.left + plotW + 26}" y="${y + 4}">Pareto front</text>`);
+  parts.push(
+    `<line x1="${margin.left + plotW + 10}" x2="${margin.left + plotW + 22}" y1="${y}" y2="${y}" stroke="#000" stroke-dasharray="4 3"/><text x="${margin.left + plotW + 26}" y="${y + 4}">Pareto front</text>`,
+  );
   parts.push('</svg>');
   return parts.join('\n') + '\n';
 }

@@ -3,7 +3,12 @@
 import os from 'node:os';
 import { Worker } from 'node:worker_threads';
 
-export async function renderReferenceParallel(source, view, options, threads = Math.max(1, os.availableParallelism?.() ?? os.cpus().length)) {
+export async function renderReferenceParallel(
+  source,
+  view,
+  options,
+  threads = Math.max(1, os.availableParallelism?.() ?? os.cpus().length),
+) {
   const { width, height } = view;
   const bands = [];
   for (let i = 0; i < threads; i++) {

@@ -35,29 +35,61 @@ import { countExtraSamplePixels } from '../harness/aa-mask.js';
 import { composePeer } from './peers/compose-peer.js';
 import { renderReferenceParallel } from './reference.js';
 import { paretoFront, chartSvg } from './chart.js';
-import { ONE_TRACE_SITE, PAGE_FORM, PLAIN, SAVINGS_OFF, adaptiveSamples, evaluateAdaptiveTargets, evaluateTargets, sphereTracing, uniformSamples } from './targets.js';
+import {
+  ONE_TRACE_SITE,
+  PAGE_FORM,
+  PLAIN,
+  SAVINGS_OFF,
+  adaptiveSamples,
+  evaluateAdaptiveTargets,
+  evaluateTargets,
+  sphereTracing,
+  uniformSamples,
+} from './targets.js';
 
 const quick = process.argv.includes('--quick');
 // --gpu: the machine's own GPU (startHarness({ gpu: true })), into files of its own, so that the
 // SwiftShader results, chart and README table are never overwritten by a GPU run.
 const gpu = process.argv.includes('--gpu');
 const OUTPUT = gpu
-  ? { json: 'results-gpu.json', markdown: 'results-gpu.md', chart: null, readme: false, written: 'tests/bench/results-gpu.json and results-gpu.md' }
-  : { json: 'results.json', markdown: 'results.md', chart: 'chart.svg', readme: true, written: 'tests/bench/results.json, results.md, chart.svg and the table in README.md' };
+  ? {
+      json: 'results-gpu.json',
+      markdown: 'results-gpu.md',
+      chart: null,
+      readme: false,
+      written: 'tests/bench/results-gpu.json and results-gpu.md',
+    }
+  : {
+      json: 'results.json',
+      markdown: 'results.md',
+      chart: 'chart.svg',
+      readme: true,
+      written: 'tests/bench/results.json, results.md, chart.svg and the table in README.md',
+    };
 /** withHarness, on the GPU with --gpu (its renderer printed); with no hardware GPU, a clear stop. */
 async function withBenchHarness(body) {
   try {
-    return await withHarness(async (context) => {
-      if (gpu) console.log(`GPU renderer: ${context.environment.renderer} (${context.environment.chromium})`);
-      return body(context);
-    }, { gpu });
+    return await withHarness(
+      async (context) => {
+        if (gpu) console.log(`GPU renderer: ${context.environment.renderer} (${context.environment.chromium})`);
+        return body(context);
+      },
+      { gpu },
+    );
   } catch (error) {
     if (error.code !== 'NO_HARDWARE_GPU') throw error;
-    console.error(`\nnpm run bench -- --gpu: ${error.message}\nNothing was measured. The default benchmark, on SwiftShader, is \`npm run bench\`.`);
+    console.error(
+      `\nnpm run bench -- --gpu: ${error.message}\nNothing was measured. The default benchmark, on SwiftShader, is \`npm run bench\`.`,
+    );
     process.exit(1);
   }
 }
-const SIZES = quick ? [[160, 90]] : [[640, 360], [1280, 720]];
+const SIZES = quick
+  ? [[160, 90]]
+  : [
+      [640, 360],
+      [1280, 720],
+    ];
 // Each variant is compiled COPIES times (the copies differ by a comment) and timed as separate
 // programs, their frames pooled: on SwiftShader one compilation of a shader can run 20-40%
 // slower than another of the same text, for as long as it lives (seen for the project's shader:
@@ -78,21 +110,40 @@ const defaults = Object.fromEntries(controls.map((c) => [c.name, c.default]));
 // Every variant is compiled in the paste form (the live controls as constants with their
 // default values: the shader as Shadertoy compiles it, and as the page runs it while its
 // controls rest) but the one marked `uniforms`, the page's form while a control moves.
-const pasteForm = (text, defines = {}, extra = '') => composeImageShader(text, { hostBlock: hostControlBlock(controls, defines, defaults) + extra }).code;
+const pasteForm = (text, defines = {}, extra = '') =>
+  composeImageShader(text, { hostBlock: hostControlBlock(controls, defines, defaults) + extra }).code;
 /** The project's shader with some compile-time controls changed; one sample per pixel unless they say otherwise. */
 const ONE_SAMPLE = { SAMPLES: 1, ADAPTIVE_AA: 0 };
 const project = (defines = {}) => pasteForm(source, { ...ONE_SAMPLE, ...defines });
 const composed = (file, dir = path.join(BENCH_DIR, 'peers')) => composePeer(source, read(path.join(dir, file)), { peerName: file });
 const peer = (file, extra = '') => pasteForm(composed(file), ONE_SAMPLE, extra);
-const EMPTY = composeImageShader('void mainImage(out vec4 fragColor, in vec2 fragCoord) {\n    fragColor = vec4(0.5, 0.5, 0.5, 1.0);\n}\n').code;
+const EMPTY = composeImageShader(
+  'void mainImage(out vec4 fragColor, in vec2 fragCoord) {\n    fragColor = vec4(0.5, 0.5, 0.5, 1.0);\n}\n',
+).code;
 
 // group: which series a variant belongs to on the chart; spp: samples per pixel.
 export const VARIANTS = [
   { name: 'empty shader (floor)', group: 'floor', spp: 1, code: () => EMPTY },
-  ...[1, 4, 9, 16].map((spp) => ({ name: uniformSamples(spp), group: 'project: samples', spp, code: () => project({ SAMPLES: spp, ADAPTIVE_AA: 0 }) })),
+  ...[1, 4, 9, 16].map((spp) => ({
+    name: uniformSamples(spp),
+    group: 'project: samples',
+    spp,
+    code: () => project({ SAMPLES: spp, ADAPTIVE_AA: 0 }),
+  })),
   // Adaptive anti-aliasing: spp is what an edge pixel gets; the others take one sample.
-  ...[4, 9, 16].map((spp) => ({ name: adaptiveSamples(spp), group: 'project: adaptive', spp, adaptive: true, code: () => project({ SAMPLES: spp, ADAPTIVE_AA: 1 }) })),
-  ...[0, 1, 2, 4].map((bounces) => ({ name: `project, bounces ${bounces}`, group: 'project: bounces', spp: 1, code: () => project({ BOUNCES: bounces }) })),
+  ...[4, 9, 16].map((spp) => ({
+    name: adaptiveSamples(spp),
+    group: 'project: adaptive',
+    spp,
+    adaptive: true,
+    code: () => project({ SAMPLES: spp, ADAPTIVE_AA: 1 }),
+  })),
+  ...[0, 1, 2, 4].map((bounces) => ({
+    name: `project, bounces ${bounces}`,
+    group: 'project: bounces',
+    spp: 1,
+    code: () => project({ BOUNCES: bounces }),
+  })),
   { name: 'project, no shadows', group: 'project: features', spp: 1, code: () => project({ SHADOWS: 0 }) },
   { name: 'project, primary rays only', group: 'project: features', spp: 1, code: () => project({ SHADOWS: 0, BOUNCES: 0 }) },
   { name: 'project, unfiltered stripes', group: 'project: features', spp: 1, code: () => project({ TEXTURE_FILTER: 0 }) },
@@ -106,7 +157,12 @@ export const VARIANTS = [
   { name: SAVINGS_OFF, group: 'project: savings off', spp: 1, code: () => pasteForm(composed('savings-off.glsl'), ONE_SAMPLE) },
   { name: ONE_TRACE_SITE, group: 'project: one trace site', spp: 1, code: () => pasteForm(composed('one-trace-site.glsl'), ONE_SAMPLE) },
   { name: 'assignment (peer 1)', group: 'peer: assignment', spp: 1, code: () => peer('assignment.glsl') },
-  ...[32, 64, 128, 256].map((steps) => ({ name: sphereTracing(steps), group: 'peer: sphere tracing', spp: 1, code: () => peer('sdf.glsl', `#define MAX_STEPS ${steps}\n`) })),
+  ...[32, 64, 128, 256].map((steps) => ({
+    name: sphereTracing(steps),
+    group: 'peer: sphere tracing',
+    spp: 1,
+    code: () => peer('sdf.glsl', `#define MAX_STEPS ${steps}\n`),
+  })),
   { name: PLAIN, group: 'peer: plain analytic', spp: 1, code: () => peer('plain.glsl') },
 ];
 
@@ -129,7 +185,11 @@ async function main() {
       const perAxis = REFERENCE_SAMPLES_PER_AXIS(width);
       process.stdout.write(`${width}x${height}: converged float64 reference (${perAxis * perAxis} spp) ... `);
       const started = Date.now();
-      const reference = await renderReferenceParallel(source, { width, height, time: 0, mouse: [0, 0, 0, 0], controls: {} }, { mode: 'converged', samplesPerAxis: perAxis });
+      const reference = await renderReferenceParallel(
+        source,
+        { width, height, time: 0, mouse: [0, 0, 0, 0], controls: {} },
+        { mode: 'converged', samplesPerAxis: perAxis },
+      );
       console.log(`${((Date.now() - started) / 1000).toFixed(0)} s`);
       // All variants in one page, interleaved round by round (see timeShaders).
       process.stdout.write(`  timing ${VARIANTS.length} variants x ${COPIES} copies, ${WARMUP} warm-up + ${FRAMES} timed rounds: `);
@@ -137,7 +197,13 @@ async function main() {
         const code = v.code();
         return Array.from({ length: COPIES }, (_, k) => ({ code: `${code}\n// copy ${k}\n`, uniforms: v.uniforms ? uniformValues : [] }));
       });
-      const runs = await timeShaders(programs, { width, height, frames: FRAMES, warmup: WARMUP, onRound: (round) => process.stdout.write(`${round + 1} `) });
+      const runs = await timeShaders(programs, {
+        width,
+        height,
+        frames: FRAMES,
+        warmup: WARMUP,
+        onRound: (round) => process.stdout.write(`${round + 1} `),
+      });
       // One result per variant: the frames of all its copies, and the last copy's image.
       const timed = VARIANTS.map((v, i) => {
         const copies = runs.slice(i * COPIES, (i + 1) * COPIES);
@@ -171,7 +237,9 @@ async function main() {
         };
         results.push(entry);
         const extraNote = extra === undefined ? '' : `, extra samples in ${(100 * extra).toFixed(2)}% of pixels`;
-        console.log(`  ${variant.name}: ${entry.medianMs.toFixed(1)} ms (min ${entry.minMs.toFixed(1)}), RMSE ${entry.rmse.toFixed(4)}, >2/255 ${(100 * entry.over2).toFixed(2)}%${extraNote}`);
+        console.log(
+          `  ${variant.name}: ${entry.medianMs.toFixed(1)} ms (min ${entry.minMs.toFixed(1)}), RMSE ${entry.rmse.toFixed(4)}, >2/255 ${(100 * entry.over2).toFixed(2)}%${extraNote}`,
+        );
       }
     }
   });
@@ -187,7 +255,11 @@ async function main() {
   fs.writeFileSync(path.join(BENCH_DIR, OUTPUT.json), JSON.stringify(results, null, 2) + '\n');
   const [w, h] = SIZES[0];
   const atSize = (width) => results.filter((r) => r.width === width);
-  if (OUTPUT.chart) fs.writeFileSync(path.join(BENCH_DIR, OUTPUT.chart), chartSvg(atSize(w), { title: `Time against error at ${w}×${h} (SwiftShader, 2 cores)` }));
+  if (OUTPUT.chart)
+    fs.writeFileSync(
+      path.join(BENCH_DIR, OUTPUT.chart),
+      chartSvg(atSize(w), { title: `Time against error at ${w}×${h} (SwiftShader, 2 cores)` }),
+    );
   const front = new Set(paretoFront(atSize(w)).map((r) => r.name));
   const table = (width) => {
     const rows = atSize(width);

@@ -55,10 +55,15 @@ export function evaluateTargets(results) {
   //    off" slower than the default.
   const front = new Set(paretoFront(results).map((r) => r.name));
   const otherForms = new Set([SAVINGS_OFF, ONE_TRACE_SITE, PAGE_FORM]);
-  const off = results.filter((r) => r.group.startsWith('project') && r.samplesPerPixel === 1 && !otherForms.has(r.name) && !front.has(r.name));
+  const off = results.filter(
+    (r) => r.group.startsWith('project') && r.samplesPerPixel === 1 && !otherForms.has(r.name) && !front.has(r.name),
+  );
   targets.push({
     met: off.length === 0,
-    text: off.length === 0 ? 'every project variant at 1 spp is on the Pareto front (target: all)' : `project variants at 1 spp not on the Pareto front: ${off.map((r) => `${r.name} (${ms(r)}, RMSE ${r.rmse.toFixed(4)})`).join('; ')} (target: none)`,
+    text:
+      off.length === 0
+        ? 'every project variant at 1 spp is on the Pareto front (target: all)'
+        : `project variants at 1 spp not on the Pareto front: ${off.map((r) => `${r.name} (${ms(r)}, RMSE ${r.rmse.toFixed(4)})`).join('; ')} (target: none)`,
   });
   const savingsOff = by(results, SAVINGS_OFF);
   targets.push({

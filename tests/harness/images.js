@@ -134,7 +134,9 @@ export function expectImagesMatch(
   } = {},
 ) {
   const out = clearOutput(name);
-  const files = () => `\n  actual:   ${rel(out.actual)}\n  expected: ${rel(out.expected)}` + (fs.existsSync(out.diff) ? `\n  diff:     ${rel(out.diff)}` : '');
+  const files = () =>
+    `\n  actual:   ${rel(out.actual)}\n  expected: ${rel(out.expected)}` +
+    (fs.existsSync(out.diff) ? `\n  diff:     ${rel(out.diff)}` : '');
   const more = hint ? `\n${hint}` : '';
   if (actual.width !== expected.width || actual.height !== expected.height) {
     writePng(out.actual, actual);

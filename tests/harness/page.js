@@ -24,7 +24,9 @@ export async function harnessContext() {
   const { inject } = await import('vitest');
   const context = inject('harness');
   if (!context) {
-    throw new Error('The harness did not start: tests/harness/setup.js must be the globalSetup of tests/vitest.config.js (run the tests with npm test).');
+    throw new Error(
+      'The harness did not start: tests/harness/setup.js must be the globalSetup of tests/vitest.config.js (run the tests with npm test).',
+    );
   }
   return context;
 }

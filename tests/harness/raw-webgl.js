@@ -49,11 +49,21 @@ export async function openRawPage(title, options) {
 export async function renderRawShader(code, { width, height, uniforms = {} }) {
   const { page, errors } = await openRawPage('raw WebGL2');
   try {
-    const result = await page.evaluate((fragment, options) => window.__rawWebGL.render(fragment, options), code, { width, height, uniforms });
+    const result = await page.evaluate((fragment, options) => window.__rawWebGL.render(fragment, options), code, {
+      width,
+      height,
+      uniforms,
+    });
     if (errors.length) throw new Error(`raw WebGL2 page logged errors:\n  ${errors.join('\n  ')}`);
     // (with strictNullChecks off, a truthy `stage` does not narrow the union: say what it is)
     if (result.stage) return /** @type {RawShaderFailure} */ (result);
-    return { width, height, data: decodeRgba(result.data, width, height, 'raw render'), glError: result.glError, renderer: result.renderer };
+    return {
+      width,
+      height,
+      data: decodeRgba(result.data, width, height, 'raw render'),
+      glError: result.glError,
+      renderer: result.renderer,
+    };
   } finally {
     await page.close().catch(() => {});
   }

@@ -38,15 +38,11 @@ export const CHROME_ARGS = [
  * https://developer.chrome.com/blog/supercharge-web-ai-testing), then Chromium's default back
  * end; elsewhere the default (Metal on macOS, Direct3D 11 on Windows).
  */
-export const GPU_CHROME_ARGS = (process.platform === 'linux'
-  ? [['--use-angle=vulkan', '--enable-features=Vulkan', '--disable-vulkan-surface'], ['--use-angle=default']]
-  : [['--use-angle=default']]
-).map((backend) => [
-  ...CHROME_ARGS.filter((arg) => !/swiftshader/i.test(arg)),
-  '--enable-gpu',
-  '--ignore-gpu-blocklist',
-  ...backend,
-]);
+export const GPU_CHROME_ARGS = (
+  process.platform === 'linux'
+    ? [['--use-angle=vulkan', '--enable-features=Vulkan', '--disable-vulkan-surface'], ['--use-angle=default']]
+    : [['--use-angle=default']]
+).map((backend) => [...CHROME_ARGS.filter((arg) => !/swiftshader/i.test(arg)), '--enable-gpu', '--ignore-gpu-blocklist', ...backend]);
 
 const SOFTWARE_RENDERERS = /swiftshader|llvmpipe|lavapipe|softpipe|software|basic render|mesa offscreen/i;
 

@@ -34,7 +34,10 @@ const row = (name, settings, same, converged) =>
 async function measure(source, view, extraSamples) {
   const image = await renderView(view);
   const same = imageError(image, renderReference(source, referenceView(view), { extraSamples }));
-  const converged = imageError(image, renderReference(source, referenceView(view), { mode: 'converged', samplesPerAxis: CONVERGED_SAMPLES_PER_AXIS }));
+  const converged = imageError(
+    image,
+    renderReference(source, referenceView(view), { mode: 'converged', samplesPerAxis: CONVERGED_SAMPLES_PER_AXIS }),
+  );
   return { same, converged };
 }
 
@@ -52,14 +55,25 @@ async function main() {
       const adaptive = await measure(source, adaptiveView, mask);
       const extraSampleFraction = mask.reduce((n, v) => n + v, 0) / mask.length;
       console.log(' done');
-      results.push({ name: view.name, what: view.what, width, height, sameRays: one.same, converged: one.converged, adaptive: { ...ADAPTIVE, extraSampleFraction, sameRays: adaptive.same, converged: adaptive.converged } });
+      results.push({
+        name: view.name,
+        what: view.what,
+        width,
+        height,
+        sameRays: one.same,
+        converged: one.converged,
+        adaptive: { ...ADAPTIVE, extraSampleFraction, sameRays: adaptive.same, converged: adaptive.converged },
+      });
     }
     return harness;
   });
 
   const outDir = path.join(REPO_ROOT, 'tests', 'accuracy');
   fs.mkdirSync(outDir, { recursive: true });
-  fs.writeFileSync(path.join(outDir, 'results.json'), JSON.stringify({ environment: context.environment, convergedSamples: CONVERGED_SAMPLES_PER_AXIS ** 2, results }, null, 2) + '\n');
+  fs.writeFileSync(
+    path.join(outDir, 'results.json'),
+    JSON.stringify({ environment: context.environment, convergedSamples: CONVERGED_SAMPLES_PER_AXIS ** 2, results }, null, 2) + '\n',
+  );
   const table = [
     `Measured by \`npm run accuracy\` at ${DEFAULT_SIZE.join('×')}, at 1 sample per pixel and with adaptive anti-aliasing (16 samples in the pixels it marks, their share in brackets), on ${rendererLabel(context.environment.renderer)} (${context.environment.chromium}).`,
     '',

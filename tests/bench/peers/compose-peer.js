@@ -51,7 +51,7 @@ export function scanTopLevel(source, label = 'source') {
   let header = ''; // code text of the current declaration up to its first `{` (comments dropped)
   let lineStart = true;
   const lineOf = (index) => countNewlines(source, index) + 1;
-  for (let i = 0; i < source.length; ) {
+  for (let i = 0; i < source.length;) {
     const c = source[i];
     if (c === '/' && source[i + 1] === '/') {
       while (i < source.length && source[i] !== '\n') i++;
@@ -123,7 +123,10 @@ function functionName(header) {
 export function replacedNames(peerSource) {
   const names = [];
   for (const match of peerSource.matchAll(DIRECTIVE)) {
-    for (const name of match[1].trim().split(/[\s,]+/).filter(Boolean)) {
+    for (const name of match[1]
+      .trim()
+      .split(/[\s,]+/)
+      .filter(Boolean)) {
       if (!IDENT.test(name)) throw new ComposePeerError(`"${name}" in an @replaces line is not a GLSL name`);
       if (names.includes(name)) throw new ComposePeerError(`${name} is listed twice in @replaces`);
       names.push(name);
@@ -170,7 +173,8 @@ export function composePeer(projectSource, peerSource, { peerName = 'peer' } = {
     const inProject = projectDefs.get(name) ?? [];
     const inPeer = peerDefs.get(name) ?? [];
     if (inProject.length === 0) throw new ComposePeerError(`${peerName} replaces ${name}, which the project does not define (renamed?)`);
-    if (inProject.length > 1) throw new ComposePeerError(`the project defines ${name} ${inProject.length} times (overloads); cannot tell which to replace`);
+    if (inProject.length > 1)
+      throw new ComposePeerError(`the project defines ${name} ${inProject.length} times (overloads); cannot tell which to replace`);
     if (inPeer.length === 0) throw new ComposePeerError(`${peerName} lists ${name} in @replaces but does not define it`);
     if (inPeer.length > 1) throw new ComposePeerError(`${peerName} defines ${name} ${inPeer.length} times`);
   }

@@ -106,11 +106,23 @@ describe('composePeer', () => {
     ['no @replaces line', 'float a(float x) { return x; }\n', /no "\/\/ @replaces/],
     ['a name the project lacks (renamed)', '// @replaces zz\nfloat zz() { return 1.0; }\n', /zz, which the project does not define/],
     ['a listed name the peer lacks', '// @replaces a\nfloat q() { return 1.0; }\n', /lists a in @replaces but does not define it/],
-    ['an unlisted project name', '// @replaces a\nfloat a(float x) { return x; }\nfloat b(S s) { return 1.0; }\n', /defines b, which the project also defines/],
+    [
+      'an unlisted project name',
+      '// @replaces a\nfloat a(float x) { return x; }\nfloat b(S s) { return 1.0; }\n',
+      /defines b, which the project also defines/,
+    ],
     ['the project order broken', '// @replaces a b\nfloat b(S s) { return 1.0; }\nfloat a(float x) { return x; }\n', /defines b before a/],
     ['a name listed twice', '// @replaces a a\nfloat a(float x) { return x; }\n', /listed twice/],
-    ['a peer definition given twice', '// @replaces a\nfloat a(float x) { return x; }\nfloat a(int x) { return 1.0; }\n', /defines a 2 times/],
-    ['an #if spanning a replacement', '// @replaces a b\n#if X\nfloat a(float x) { return x; }\n#endif\nfloat b(S s) { return 1.0; }\n', /#if without its #endif/],
+    [
+      'a peer definition given twice',
+      '// @replaces a\nfloat a(float x) { return x; }\nfloat a(int x) { return 1.0; }\n',
+      /defines a 2 times/,
+    ],
+    [
+      'an #if spanning a replacement',
+      '// @replaces a b\n#if X\nfloat a(float x) { return x; }\n#endif\nfloat b(S s) { return 1.0; }\n',
+      /#if without its #endif/,
+    ],
   ])('fails loudly on %s', (_, peer, message) => {
     expect(() => composePeer(PROJECT, peer)).toThrow(ComposePeerError);
     expect(() => composePeer(PROJECT, peer)).toThrow(message);
@@ -128,8 +140,14 @@ describe('the real peers with the real shader', () => {
   test.each(PEERS)('%s composes: each replaced definition once, the control block untouched', (name) => {
     const peer = peerSource(name);
     const out = composePeer(project, peer, { peerName: name });
-    const defined = scanTopLevel(out).filter((i) => i.kind !== 'other').map((i) => i.name);
-    for (const replaced of replacedNames(peer)) expect(defined.filter((n) => n === replaced), replaced).toHaveLength(1);
+    const defined = scanTopLevel(out)
+      .filter((i) => i.kind !== 'other')
+      .map((i) => i.name);
+    for (const replaced of replacedNames(peer))
+      expect(
+        defined.filter((n) => n === replaced),
+        replaced,
+      ).toHaveLength(1);
     expect(new Set(defined).size).toBe(defined.length);
     expect(parseControls(out)).toEqual(parseControls(project));
     expect(out).toContain('void mainImage(');
@@ -157,7 +175,8 @@ describe('composed peers in WebGL2 (SwiftShader)', () => {
   async function render(source, hostBlock, label) {
     const { code, firstSourceLine } = composeImageShader(source, { hostBlock });
     const raw = await renderRawShader(code, { width: WIDTH, height: HEIGHT });
-    if (raw.stage) throw new Error(`${label} fails to ${raw.stage}:\n${mapShaderLog(raw.log, { code, firstSourceLine, source, fileName: label })}`);
+    if (raw.stage)
+      throw new Error(`${label} fails to ${raw.stage}:\n${mapShaderLog(raw.log, { code, firstSourceLine, source, fileName: label })}`);
     expect(raw.glError, `${label}: WebGL error`).toBe(0);
     assertNotBlank(raw, label);
     return raw;
@@ -167,7 +186,7 @@ describe('composed peers in WebGL2 (SwiftShader)', () => {
   // (alpha is 1 in both: Shadertoy's main forces it).
   const differing = (a, b, levels, fromRow) => differingPixels(a, b, levels, { fromRow }).fraction;
 
-  test('every variant compiles and draws; sdf at 256 steps and plain draw the project\'s scene', async () => {
+  test("every variant compiles and draws; sdf at 256 steps and plain draw the project's scene", async () => {
     const projectImage = await render(project, '', 'project');
     const assignment = composePeer(project, peerSource('assignment'), { peerName: 'assignment' });
     const assignmentImage = await render(assignment, '', 'assignment');
@@ -178,14 +197,14 @@ describe('composed peers in WebGL2 (SwiftShader)', () => {
     const sdf256 = await render(sdf, '#define MAX_STEPS 256\n', 'sdf 256');
     expect(differing(sdf256, projectImage, 16, HEIGHT / 3)).toBeLessThan(0.02);
     const unfiltered = project.replace(/^#define TEXTURE_FILTER 1\b/m, '#define TEXTURE_FILTER 0');
-    expect(unfiltered, 'the project\'s TEXTURE_FILTER default line').not.toBe(project);
+    expect(unfiltered, "the project's TEXTURE_FILTER default line").not.toBe(project);
     const unfilteredImage = await render(unfiltered, '', 'project, unfiltered stripes');
     const plain = composePeer(project, peerSource('plain'), { peerName: 'plain' });
     const plainImage = await render(plain, '', 'plain');
     expect(differing(plainImage, unfilteredImage, 16, 0)).toBeLessThan(0.02);
   });
 
-  test('the peers honour the project\'s compile-time controls through a host block', async () => {
+  test("the peers honour the project's compile-time controls through a host block", async () => {
     for (const name of PEERS) {
       const source = composePeer(project, peerSource(name), { peerName: name });
       const controls = parseControls(source);
@@ -194,7 +213,10 @@ describe('composed peers in WebGL2 (SwiftShader)', () => {
       // checks compilation and a draw, not the picture.
       const { code, firstSourceLine } = composeImageShader(source, { hostBlock: hostControlBlock(controls, values) });
       const raw = await renderRawShader(code, { width: 32, height: 18 });
-      if (raw.stage) throw new Error(`${name} with a host block fails to ${raw.stage}:\n${mapShaderLog(raw.log, { code, firstSourceLine, source, fileName: name })}`);
+      if (raw.stage)
+        throw new Error(
+          `${name} with a host block fails to ${raw.stage}:\n${mapShaderLog(raw.log, { code, firstSourceLine, source, fileName: name })}`,
+        );
       expect(raw.glError).toBe(0);
     }
   });
