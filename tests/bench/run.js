@@ -4,6 +4,7 @@
 // and a plain analytic tracer.
 //
 //   npm run bench              640x360 and 1280x720, 15 timed frames after 3 warm-up frames
+//   npm run bench -- --report  the tables, chart and README section again from results.json
 //   npm run bench -- --quick   every variant once at 160x90 (CI runs this so the benchmark
 //                              cannot rot; it asserts no time and writes no results)
 //   npm run bench -- --gpu     the same on the machine's own GPU instead of SwiftShader (with
@@ -48,6 +49,8 @@ import {
 } from './targets.js';
 
 const quick = process.argv.includes('--quick');
+// --report: the tables, chart and README section again from the last results.json, nothing measured.
+const reportOnly = process.argv.includes('--report');
 // --gpu: the machine's own GPU (startHarness({ gpu: true })), into files of its own, so that the
 // SwiftShader results, chart and README table are never overwritten by a GPU run.
 const gpu = process.argv.includes('--gpu');
@@ -178,71 +181,72 @@ async function extraSampleFraction(variant, width, height) {
 
 async function main() {
   console.log(`benchmark${quick ? ' (quick)' : ''}: ${VARIANTS.length} variants at ${SIZES.map((s) => s.join('x')).join(' and ')}`);
-  const results = [];
+  const results = reportOnly ? JSON.parse(read(path.join(BENCH_DIR, OUTPUT.json))) : [];
   const failures = [];
-  await withBenchHarness(async (context) => {
-    for (const [width, height] of SIZES) {
-      const perAxis = REFERENCE_SAMPLES_PER_AXIS(width);
-      process.stdout.write(`${width}x${height}: converged float64 reference (${perAxis * perAxis} spp) ... `);
-      const started = Date.now();
-      const reference = await renderReferenceParallel(
-        source,
-        { width, height, time: 0, mouse: [0, 0, 0, 0], controls: {} },
-        { mode: 'converged', samplesPerAxis: perAxis },
-      );
-      console.log(`${((Date.now() - started) / 1000).toFixed(0)} s`);
-      // All variants in one page, interleaved round by round (see timeShaders).
-      process.stdout.write(`  timing ${VARIANTS.length} variants x ${COPIES} copies, ${WARMUP} warm-up + ${FRAMES} timed rounds: `);
-      const programs = VARIANTS.flatMap((v) => {
-        const code = v.code();
-        return Array.from({ length: COPIES }, (_, k) => ({ code: `${code}\n// copy ${k}\n`, uniforms: v.uniforms ? uniformValues : [] }));
-      });
-      const runs = await timeShaders(programs, {
-        width,
-        height,
-        frames: FRAMES,
-        warmup: WARMUP,
-        onRound: (round) => process.stdout.write(`${round + 1} `),
-      });
-      // One result per variant: the frames of all its copies, and the last copy's image.
-      const timed = VARIANTS.map((v, i) => {
-        const copies = runs.slice(i * COPIES, (i + 1) * COPIES);
-        const failed = copies.find((c) => c.error);
-        return failed ?? { ...copies[COPIES - 1], times: copies.flatMap((c) => c.times) };
-      });
-      console.log('done');
-      for (const [i, variant] of VARIANTS.entries()) {
-        const result = timed[i];
-        if (result.error) {
-          failures.push(`${variant.name} at ${width}x${height}: ${result.error}`);
-          continue;
-        }
-        const error = imageError(result, reference);
-        const extra = variant.adaptive ? await extraSampleFraction(variant, width, height) : undefined;
-        const entry = {
-          name: variant.name,
-          group: variant.group,
+  if (!reportOnly)
+    await withBenchHarness(async (context) => {
+      for (const [width, height] of SIZES) {
+        const perAxis = REFERENCE_SAMPLES_PER_AXIS(width);
+        process.stdout.write(`${width}x${height}: converged float64 reference (${perAxis * perAxis} spp) ... `);
+        const started = Date.now();
+        const reference = await renderReferenceParallel(
+          source,
+          { width, height, time: 0, mouse: [0, 0, 0, 0], controls: {} },
+          { mode: 'converged', samplesPerAxis: perAxis },
+        );
+        console.log(`${((Date.now() - started) / 1000).toFixed(0)} s`);
+        // All variants in one page, interleaved round by round (see timeShaders).
+        process.stdout.write(`  timing ${VARIANTS.length} variants x ${COPIES} copies, ${WARMUP} warm-up + ${FRAMES} timed rounds: `);
+        const programs = VARIANTS.flatMap((v) => {
+          const code = v.code();
+          return Array.from({ length: COPIES }, (_, k) => ({ code: `${code}\n// copy ${k}\n`, uniforms: v.uniforms ? uniformValues : [] }));
+        });
+        const runs = await timeShaders(programs, {
           width,
           height,
-          samplesPerPixel: variant.spp,
-          medianMs: median(result.times),
-          minMs: Math.min(...result.times),
-          maxMs: Math.max(...result.times),
-          frames: result.times.length,
-          rmse: error.rmse,
-          over2: error.over2,
-          ...(extra === undefined ? {} : { extraSampleFraction: extra }),
-          chromium: context.environment.chromium,
-          renderer: context.environment.renderer,
-        };
-        results.push(entry);
-        const extraNote = extra === undefined ? '' : `, extra samples in ${(100 * extra).toFixed(2)}% of pixels`;
-        console.log(
-          `  ${variant.name}: ${entry.medianMs.toFixed(1)} ms (min ${entry.minMs.toFixed(1)}), RMSE ${entry.rmse.toFixed(4)}, >2/255 ${(100 * entry.over2).toFixed(2)}%${extraNote}`,
-        );
+          frames: FRAMES,
+          warmup: WARMUP,
+          onRound: (round) => process.stdout.write(`${round + 1} `),
+        });
+        // One result per variant: the frames of all its copies, and the last copy's image.
+        const timed = VARIANTS.map((v, i) => {
+          const copies = runs.slice(i * COPIES, (i + 1) * COPIES);
+          const failed = copies.find((c) => c.error);
+          return failed ?? { ...copies[COPIES - 1], times: copies.flatMap((c) => c.times) };
+        });
+        console.log('done');
+        for (const [i, variant] of VARIANTS.entries()) {
+          const result = timed[i];
+          if (result.error) {
+            failures.push(`${variant.name} at ${width}x${height}: ${result.error}`);
+            continue;
+          }
+          const error = imageError(result, reference);
+          const extra = variant.adaptive ? await extraSampleFraction(variant, width, height) : undefined;
+          const entry = {
+            name: variant.name,
+            group: variant.group,
+            width,
+            height,
+            samplesPerPixel: variant.spp,
+            medianMs: median(result.times),
+            minMs: Math.min(...result.times),
+            maxMs: Math.max(...result.times),
+            frames: result.times.length,
+            rmse: error.rmse,
+            over2: error.over2,
+            ...(extra === undefined ? {} : { extraSampleFraction: extra }),
+            chromium: context.environment.chromium,
+            renderer: context.environment.renderer,
+          };
+          results.push(entry);
+          const extraNote = extra === undefined ? '' : `, extra samples in ${(100 * extra).toFixed(2)}% of pixels`;
+          console.log(
+            `  ${variant.name}: ${entry.medianMs.toFixed(1)} ms (min ${entry.minMs.toFixed(1)}), RMSE ${entry.rmse.toFixed(4)}, >2/255 ${(100 * entry.over2).toFixed(2)}%${extraNote}`,
+          );
+        }
       }
-    }
-  });
+    });
   if (failures.length) {
     console.error(`\n${failures.length} variant(s) failed:\n  ${failures.join('\n  ')}`);
     process.exit(1);
@@ -252,7 +256,7 @@ async function main() {
     return;
   }
 
-  fs.writeFileSync(path.join(BENCH_DIR, OUTPUT.json), JSON.stringify(results, null, 2) + '\n');
+  if (!reportOnly) fs.writeFileSync(path.join(BENCH_DIR, OUTPUT.json), JSON.stringify(results, null, 2) + '\n');
   const [w, h] = SIZES[0];
   const atSize = (width) => results.filter((r) => r.width === width);
   if (OUTPUT.chart)

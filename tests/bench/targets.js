@@ -92,15 +92,26 @@ export function evaluateAdaptiveTargets(results) {
     met: adaptive.medianMs <= 2.5 * one.medianMs,
     text: `adaptive (16 at edges) takes ${x(adaptive.medianMs, one.medianMs)} the 1-spp time (${ms(adaptive)} against ${ms(one)}), with extra samples in ${(100 * adaptive.extraSampleFraction).toFixed(2)}% of pixels (target: at most 2.5×)`,
   });
-  // On the front, and each dominating the uniform variant of the same sample count.
+  // The adaptive points on the front, dominating the uniform points they replace: a uniform
+  // variant is replaced when some adaptive variant is both faster and at least as accurate.
   const front = new Set(paretoFront(results).map((r) => r.name));
+  const adaptives = [4, 9, 16].map((spp) => by(results, adaptiveSamples(spp)));
+  const offFront = adaptives.filter((a) => !front.has(a.name));
+  targets.push({
+    met: offFront.length === 0,
+    text:
+      offFront.length === 0
+        ? 'every adaptive variant is on the Pareto front (target: all)'
+        : `adaptive variants off the Pareto front: ${offFront.map((a) => a.name).join(', ')} (target: none)`,
+  });
   for (const spp of [4, 9, 16]) {
-    const a = by(results, adaptiveSamples(spp));
     const u = by(results, uniformSamples(spp));
-    const dominates = a.medianMs <= u.medianMs && a.rmse <= u.rmse;
+    const dominating = adaptives.filter((a) => a.medianMs <= u.medianMs && a.rmse <= u.rmse);
     targets.push({
-      met: front.has(a.name) && dominates,
-      text: `adaptive ${spp} (${ms(a)}, RMSE ${a.rmse.toFixed(4)}) is ${front.has(a.name) ? '' : 'not '}on the Pareto front and ${dominates ? 'dominates' : 'does not dominate'} uniform ${spp} spp (${ms(u)}, RMSE ${u.rmse.toFixed(4)}) (target: both)`,
+      met: dominating.length > 0,
+      text: dominating.length
+        ? `uniform ${spp} spp (${ms(u)}, RMSE ${u.rmse.toFixed(4)}) is dominated by ${dominating.map((a) => `${a.name} (${ms(a)}, RMSE ${a.rmse.toFixed(4)})`).join(' and ')}`
+        : `uniform ${spp} spp (${ms(u)}, RMSE ${u.rmse.toFixed(4)}) is dominated by no adaptive variant (the most accurate: ${adaptives.map((a) => a.rmse.toFixed(4)).sort()[0]}) (target: dominated)`,
     });
   }
   return targets;
