@@ -20,7 +20,7 @@
 //                         saves it.
 //   setChannel(i, url|null)    Promise: an image into iChannel i (null: black again).
 //   loadShader(url)       Promise<{ok, error?}>: fetches and runs a shader as ?shader= does.
-//   shareUrl()            the link "Copy link" copies (reproduces this view).
+//   shareUrl()            Promise<string>: the link "Copy link" copies (reproduces this view).
 //   info()                {renderer (UNMASKED_RENDERER_WEBGL), vendor, version, shadingLanguage,
 //                         width, height, frame, time, playing, speed, mouse (iMouse),
 //                         controls: {NAME: value}, fileName, shaderUrl, origin, contextLost,

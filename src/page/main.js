@@ -10,11 +10,12 @@ import { Overlay } from './overlay.js';
 import { CHANNEL_PARAMS, parseUrlParams } from './url-params.js';
 import { fetchShader, shaderName } from './shader-loader.js';
 import { installUi } from './ui.js';
+import { sourceFromHash } from './share-link.js';
 
 const BUILTIN_NAME = 'shaders/raytrace.glsl';
 
 /** @typedef {{title: string, detail: string}} Notice */
-/** @typedef {{source: string, from: {name: string, origin: 'builtin' | 'url', url?: string}, notice?: Notice}} FirstSource */
+/** @typedef {{source: string, from: {name: string, origin: 'builtin' | 'url' | 'editor', url?: string}, notice?: Notice}} FirstSource */
 
 /**
  * The page could not start (no WebGL2, most likely): say so on the page, not in a blank one.
@@ -72,10 +73,23 @@ function showAppOnPage(app, overlay) {
 /**
  * The first source: the ?shader= file, or the built-in raytracer (also when that file cannot be
  * had: then with a notice that says so).
- * @param {{shader?: string}} params
+ * @param {{shader?: string, refusedShader?: {url: string, why: string}}} params
  * @returns {Promise<FirstSource>}
  */
 async function initialSource(params) {
+  try {
+    const shared = await sourceFromHash(location.hash);
+    if (shared) return { source: shared.source, from: { name: shared.name, origin: 'editor' } };
+  } catch (error) {
+    console.warn(`The shader in the link's #source= could not be read: ${error.message}`);
+    const notice = { title: 'Could not read the shader in this link', detail: `${error.message}\nShowing the built-in raytracer instead.` };
+    return { source: builtinSource, from: { name: BUILTIN_NAME, origin: 'builtin' }, notice };
+  }
+  if (params.refusedShader) {
+    const { url, why } = params.refusedShader;
+    const notice = { title: `Could not load ${url}`, detail: `${why}.\nShowing the built-in raytracer (${BUILTIN_NAME}) instead.` };
+    return { source: builtinSource, from: { name: BUILTIN_NAME, origin: 'builtin' }, notice };
+  }
   if (!params.shader) return { source: builtinSource, from: { name: BUILTIN_NAME, origin: 'builtin' } };
   try {
     const source = await fetchShader(params.shader);

@@ -46,9 +46,9 @@ export class Panel {
    * @param {(index: number, file: File|null) => void} options.onChannel
    */
   constructor({ scale, cap, sizeFixed, onScale, onCap, onControl, onChannel }) {
-    // inside the stage (above the toolbar), not fixed to the window
-    this.gui = new GUI({ title: 'Controls', container: document.getElementById('stage') ?? document.body });
-    if (window.innerWidth < 640) this.gui.close(); // a phone: the picture first
+    // docked beside the canvas (below it on a phone: style.css), never over the scene
+    this.gui = new GUI({ title: 'Controls', container: document.getElementById('panel-dock') ?? document.body });
+    if (window.innerWidth < 640) this.gui.close(); // a phone: the picture first, the panel one tap away
     this.onControl = onControl;
 
     this._state = { scale, cap: Object.values(CAP_CHOICES).includes(cap) ? cap : 0, screenshot: 'current' };

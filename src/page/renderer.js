@@ -286,6 +286,11 @@ export class ShaderRenderer {
   }
 
   /** [width, height] of the image in each channel (0, 0 when empty). */
+  /** Whether iChannel `index` holds an image (not the black default). @param {number} index */
+  channelInUse(index) {
+    return Boolean(this._channels[index]);
+  }
+
   channelSizes() {
     const r = this.uniforms.iChannelResolution.value;
     return [0, 1, 2, 3].map((i) => [r[i * 3], r[i * 3 + 1]]);

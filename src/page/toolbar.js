@@ -28,6 +28,7 @@ const ICONS = {
   download: '<g fill="none" stroke="currentColor" stroke-width="1.6"><path d="M8 1.5v8.5M4.3 6.6 8 10.3l3.7-3.7M2.5 14h11"/></g>',
   camera:
     '<g fill="none" stroke="currentColor" stroke-width="1.5"><path d="M1.75 4.5h3l1.3-2h3.9l1.3 2h3v9H1.75z"/><circle cx="8" cy="8.8" r="2.6"/></g>',
+  fullscreen: '<g fill="none" stroke="currentColor" stroke-width="1.6"><path d="M2 6V2h4M10 2h4v4M14 10v4h-4M6 14H2v-4"/></g>',
   link: '<g fill="none" stroke="currentColor" stroke-width="1.6" stroke-linecap="round"><path d="M6.3 9.7l3.4-3.4M7.2 4.6l1.1-1.1a2.7 2.7 0 0 1 3.8 3.8L11 8.4M8.8 11.4l-1.1 1.1a2.7 2.7 0 0 1-3.8-3.8L5 7.6"/></g>',
 };
 
@@ -41,7 +42,7 @@ export class Toolbar {
   /**
    * @param {HTMLElement} root the (empty) toolbar element
    * @param {object} actions callbacks: togglePlay, restart, setTime(s), setSpeed(s), toggleEditor,
-   *   copyForShadertoy, download, screenshot, copyLink
+   *   copyForShadertoy, download, screenshot, toggleFullscreen, copyLink
    */
   constructor(root, actions) {
     this.root = root;
@@ -110,6 +111,14 @@ export class Toolbar {
       return b;
     };
 
+    this.fullscreenButton = button(
+      'Fullscreen',
+      'The canvas alone, on the whole screen (F; Esc leaves)',
+      'fullscreen',
+      actions.toggleFullscreen,
+    );
+    this.fullscreenButton.setAttribute('aria-pressed', 'false');
+
     root.append(
       element('div', { class: 'group' }, this.playButton, restart, this.timeSlider, this.timeText, this.speedSelect),
       element('div', { class: 'group meter' }, this.graph, this.fpsText),
@@ -126,6 +135,7 @@ export class Toolbar {
         ),
         button('Download .glsl', 'Saves the shader as a .glsl file', 'download', actions.download),
         button('Screenshot', 'Saves the current frame as a PNG (size: Controls → View)', 'camera', actions.screenshot),
+        this.fullscreenButton,
         button(
           'Copy link',
           'Copies a link that reproduces this view: shader URL, controls, mouse, time and size',
@@ -163,6 +173,11 @@ export class Toolbar {
       this.fpsText.textContent = 'paused';
       this._drawGraph();
     }
+  }
+
+  /** @param {boolean} on whether the page is fullscreen */
+  setFullscreen(on) {
+    this.fullscreenButton.setAttribute('aria-pressed', String(on));
   }
 
   setEditorOpen(open) {

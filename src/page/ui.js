@@ -1,12 +1,14 @@
 // The page's widgets around the canvas, wired to the app: the toolbar (time and output), the
-// lil-gui panel, the editor, keyboard shortcuts (Space: play/pause, R: restart), dropping a
+// lil-gui panel, the editor, keyboard shortcuts (shortcuts.js: Space, R, F), dropping a
 // .glsl file or an image on the page, and a status line for short confirmations.
 
 import { Editor } from './editor.js';
 import { Panel } from './panel.js';
 import { Toolbar } from './toolbar.js';
 import { droppedKind } from './shader-loader.js';
-import { formatUrlParams } from './url-params.js';
+import { installShortcuts } from './shortcuts.js';
+import { toggleFullscreen, watchFullscreen } from './fullscreen.js';
+import { MAX_LINK_LENGTH, shareLink } from './share-link.js';
 
 /** Saves a Blob as a file, as a link with `download` does. */
 function saveBlob(blob, fileName) {
@@ -63,15 +65,12 @@ function stem(name) {
   return base.replace(/\.[^.]*$/, '') || 'shader';
 }
 
-function isTextEntry(target) {
-  return target instanceof Element && Boolean(target.closest('input, textarea, select, [contenteditable=""], [contenteditable="true"]'));
-}
-
 /**
  * @param {import('./app.js').RaytracerApp} app
  * @returns the page's output actions, for the automation hook and the tests
  */
 export function installUi(app) {
+  const stage = /** @type {HTMLElement} */ (document.getElementById('stage'));
   const statusLine = document.getElementById('toast');
   /** @type {ReturnType<typeof setTimeout> | undefined} */
   let toastTimer;
@@ -84,18 +83,7 @@ export function installUi(app) {
 
   // ---- output --------------------------------------------------------------------------------
 
-  const shareUrl = () => {
-    const query = formatUrlParams({
-      shader: app.origin === 'builtin' ? null : app.shaderUrl,
-      size: { width: app.renderer.width, height: app.renderer.height },
-      time: app.inputs.time,
-      mouse: app.inputs.mouse(),
-      speed: app.inputs.speed,
-      channels: app.channelUrls,
-      controls: app.changedControls(),
-    });
-    return `${location.origin}${location.pathname}${query}`;
-  };
+  const shareUrl = async () => (await shareLink(app)).url;
 
   const actions = {
     togglePlay: () => app.togglePlay(),
@@ -103,6 +91,7 @@ export function installUi(app) {
     setTime: (t) => app.setTime(t),
     setSpeed: (s) => app.setSpeed(s),
     toggleEditor: () => editor.toggle(),
+    toggleFullscreen: () => toggleFullscreen(stage),
 
     /** Exactly the text Shadertoy's Image tab takes: the shader file (Shadertoy adds the header). */
     async copyForShadertoy() {
@@ -137,15 +126,17 @@ export function installUi(app) {
       }
     },
 
+    /** Copies the view's link, saying what it leaves out; a link too long to travel is not copied. */
     async copyLink() {
-      const url = shareUrl();
+      const { url, omitted, tooLong } = await shareLink(app);
+      if (tooLong) {
+        toast(
+          `Not copied: the link would be ${url.length} characters, too long for many browsers and apps (over ${MAX_LINK_LENGTH}); share the shader with Download .glsl`,
+        );
+        return null;
+      }
       const ok = await copyText(url);
-      const caveat =
-        app.origin === 'editor' || app.origin === 'file'
-          ? app.shaderUrl
-            ? ' (a link cannot hold your edits: it opens the file the shader came from)'
-            : ' (a link cannot hold a pasted or dropped shader: share its text with Download .glsl)'
-          : '';
+      const caveat = omitted.length ? ` (${omitted.join(', ')} ${omitted.length > 1 ? 'are' : 'is'} not in the link)` : '';
       toast(ok ? `Copied a link to this view${caveat}` : 'The browser refused to copy the link');
       return url;
     },
@@ -206,17 +197,8 @@ export function installUi(app) {
 
   // ---- keyboard ------------------------------------------------------------------------------
 
-  window.addEventListener('keydown', (event) => {
-    if (event.defaultPrevented || event.ctrlKey || event.metaKey || event.altKey || isTextEntry(event.target)) return;
-    const onButton = event.target instanceof Element && event.target.closest('button');
-    if (event.code === 'Space' && !onButton) {
-      event.preventDefault();
-      app.togglePlay();
-    } else if (event.code === 'KeyR' && !event.repeat) {
-      event.preventDefault();
-      app.restart();
-    }
-  });
+  installShortcuts({ Space: () => app.togglePlay(), KeyR: () => app.restart(), KeyF: () => actions.toggleFullscreen() });
+  watchFullscreen((on) => toolbar.setFullscreen(on));
 
   // ---- drag and drop -------------------------------------------------------------------------
 

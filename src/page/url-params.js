@@ -68,7 +68,7 @@ export function clampSize({ width, height }, maxSide = MAX_SIZE, maxPixels = MAX
  * @param {string} [base] the page's address (resolves `shader` and `iChannelN` URLs)
  * @returns {{shader?: string, time?: number, mouse?: number[], size?: {width:number, height:number},
  *   scale?: number, cap?: number, speed?: number, channels: (string|undefined)[],
- *   controls: Record<string, string>, warnings: string[]}}
+ *   controls: Record<string, string>, warnings: string[], refusedShader?: {url: string, why: string}}}
  */
 export function parseUrlParams(search, base = 'http://localhost/') {
   const out = { controls: {}, channels: [], warnings: [] };
@@ -115,8 +115,11 @@ export function parseUrlParams(search, base = 'http://localhost/') {
       if (s !== undefined) out.speed = s;
     } else if (key === 'shader' || CHANNEL_PARAMS.includes(key)) {
       const { url, why } = value.trim() ? sameOriginUrl(value.trim(), base) : { url: null, why: 'empty' };
-      if (!url) warn(key, value, why);
-      else if (key === 'shader') out.shader = value.trim();
+      if (!url) {
+        warn(key, value, why);
+        // the page says so too (main.js), not only the console
+        if (key === 'shader') out.refusedShader = { url: value, why };
+      } else if (key === 'shader') out.shader = value.trim();
       else out.channels[CHANNEL_PARAMS.indexOf(key)] = value.trim();
     } else if (!/^[A-Za-z_]\w*$/.test(key)) {
       warn(key, value, 'not a page parameter or a shader control name');
@@ -136,7 +139,7 @@ function formatNumber(v) {
  * The query string (with its `?`) for a view, the inverse of parseUrlParams.
  * @param {object} state
  * @param {string} [state.shader] the shader's URL as the page was given it (omitted: built-in)
- * @param {{width:number, height:number}} state.size drawing buffer, device pixels
+ * @param {{width:number, height:number} | null} [state.size] a fixed drawing buffer, device pixels (omitted: the window's)
  * @param {number} state.time
  * @param {number[]} [state.mouse] iMouse; omitted when all zero
  * @param {number} [state.speed] omitted when 1
@@ -146,7 +149,7 @@ function formatNumber(v) {
 export function formatUrlParams({ shader, size, time, mouse, speed = 1, channels = [], controls = {} }) {
   const query = new URLSearchParams();
   if (shader) query.set('shader', shader);
-  query.set('size', `${size.width}x${size.height}`);
+  if (size) query.set('size', `${size.width}x${size.height}`);
   query.set('time', formatNumber(time));
   if (mouse && mouse.some((v) => v !== 0)) query.set('mouse', mouse.map(formatNumber).join(','));
   if (speed !== 1) query.set('speed', formatNumber(speed));
