@@ -3,7 +3,7 @@
 // wide and 390 wide); "Copy link" saying what it leaves out, pinning the size only when fixed,
 // and carrying an edited shader in its fragment; a refused ?shader= said on the page; Fullscreen.
 import { afterAll, describe, expect, test } from 'vitest';
-import { disconnect } from './harness/page.js';
+import { disconnect, openPage } from './harness/page.js';
 import { button, overlayText, pixel, readPixels, solid, withPage } from './page-helpers.js';
 
 afterAll(disconnect);
@@ -205,5 +205,51 @@ describe('links', () => {
       expect(await overlayText(page)).toMatch(/https:\/\/example\.com\/x\.glsl/);
       expect(warnings.join('\n')).toMatch(/example\.com/);
     });
+  });
+});
+
+describe('the frame-time readout', () => {
+  test('GPU time where measured, else labelled as the time between frames; never a frame rate the page did not reach', async () => {
+    // the real clock (no deterministic injection): what is measured is the browser's real speed
+    const { page, errors, context } = await openPage({ deterministic: false });
+    try {
+      // Each time the readout changes, the frame rate the page really reached: from when it drew
+      // each frame (the canvas's data-frame attribute), over the two seconds up to the last one.
+      await page.evaluateOnNewDocument(() => {
+        /** @type {number[]} */
+        const drawnAt = [];
+        /** @type {Array<[string, number, number]>} */
+        const samples = [];
+        /** @type {any} */ (window).__readouts = samples;
+        new MutationObserver((records) => {
+          for (const record of records) {
+            if (record.type === 'attributes') drawnAt.push(performance.now());
+            else if (record.target instanceof Element && record.target.matches('#toolbar .fps')) {
+              const last = drawnAt[drawnAt.length - 1];
+              const recent = drawnAt.filter((x) => last - x <= 2000);
+              const fps = recent.length < 2 ? 0 : ((recent.length - 1) * 1000) / (last - recent[0]);
+              samples.push([record.target.textContent, fps, last - drawnAt[0]]);
+            }
+          }
+        }).observe(document, { subtree: true, childList: true, attributeFilter: ['data-frame'] });
+      });
+      await page.goto(`${context.baseUrl}/?size=640x360&SAMPLES=4`, { waitUntil: 'load' });
+      await page.waitForFunction(() => window.raytracer, { polling: 50 });
+      await page.evaluate(() => window.raytracer.ready);
+      // once the page's first frame is out of the two seconds (it comes unevenly, after the compile)
+      await page.waitForFunction(() => /** @type {any} */ (window).__readouts.filter(([t, , n]) => /fps/.test(t) && n > 2500).length >= 5, {
+        polling: 100,
+      });
+      /** @type {Array<[string, number, number]>} */
+      const samples = await page.evaluate(() => /** @type {any} */ (window).__readouts.filter(([t, , n]) => /fps/.test(t) && n > 2500));
+      for (const [text, reached] of samples) {
+        expect(text, 'the readout says what it measures').toMatch(/^(GPU \d+\.\d ms|\d+\.\d ms between frames) · \d+(\.\d)? fps$/);
+        const claimed = Number(/([\d.]+) fps$/.exec(text)[1]);
+        expect(claimed, `"${text}" while the page drew ${reached.toFixed(2)} frames a second`).toBeLessThanOrEqual(reached * 1.02);
+      }
+    } finally {
+      await page.close().catch(() => {});
+    }
+    expect(errors, 'the page logged errors').toEqual([]);
   });
 });

@@ -307,8 +307,11 @@ export class RaytracerApp extends Emitter {
     this._raf = 0;
     const drawn = this.renderNow(now);
     if (drawn && this.inputs.playing) {
-      if (this._lastFrameAt !== null) this.emit('frame', now - this._lastFrameAt);
-      this._lastFrameAt = now;
+      // the clock when the frame was drawn, not `now` (when it was due): on a slow GPU the
+      // animation frames' timestamps run ahead of the drawing (frame-timer.js)
+      const drawnAt = performance.now();
+      if (this._lastFrameAt !== null) this.emit('frame', drawnAt - this._lastFrameAt);
+      this._lastFrameAt = drawnAt;
     } else {
       this._lastFrameAt = null;
     }

@@ -2,6 +2,7 @@
 // WebGLRenderer (WebGL2). Compiling is done off to the side, so a shader that fails to compile
 // never replaces the last one that worked.
 
+import { GpuTimer } from './frame-timer.js';
 import * as THREE from 'three';
 import { FIRST_FRAME_UNIFORMS, SHADERTOY_UNIFORMS, composeImageShader } from '../shadertoy/header.js';
 import { formatShaderMessages, parseShaderLog, userLineOffset } from '../shadertoy/shader-errors.js';
@@ -91,6 +92,8 @@ export class ShaderRenderer {
     const gl = canvas.getContext('webgl2', attributes);
     if (!gl) throw new WebGL2UnavailableError();
     this.gl = gl;
+    /** The GPU time of each frame drawn, where the browser measures it (frame-timer.js). */
+    this.gpuTimer = new GpuTimer(gl);
     this.canvas = canvas;
 
     this.three = new THREE.WebGLRenderer({ canvas, context: gl, ...attributes });
@@ -347,7 +350,9 @@ export class ShaderRenderer {
   /** Draws the current shader; false if none has compiled yet. */
   render() {
     if (!this.hasProgram) return false;
+    this.gpuTimer.begin();
     this.three.render(this.scene, this.camera);
+    this.gpuTimer.end();
     return true;
   }
 

@@ -3,6 +3,8 @@
 // <button> whose accessible name is what it does ("Play", "Pause", "Restart", "Copy for
 // Shadertoy", "Download .glsl", "Screenshot", ...); the icons are decoration.
 
+import { FrameRate } from './frame-timer.js';
+
 const SPEEDS = [0, 0.1, 0.25, 0.5, 1, 2, 4, 8];
 const GRAPH_FRAMES = 90; // frame times kept in the graph
 const GRAPH_MAX_MS = 50; // the graph's top (20 fps); slower frames are clipped there
@@ -81,9 +83,18 @@ export class Toolbar {
     this.speedSelect.addEventListener('change', () => actions.setSpeed(Number(this.speedSelect.value)));
 
     this.graph = element('canvas', { class: 'graph', width: GRAPH_FRAMES, height: 24, 'aria-hidden': 'true' });
-    this.fpsText = element('span', { class: 'fps', title: 'Time between frames (smoothed) and frames per second' }, 'paused');
+    this.fpsText = element(
+      'span',
+      {
+        class: 'fps',
+        title: 'GPU time per frame where the browser measures it, else the time between frames; and the frames per second reached',
+      },
+      'paused',
+    );
     this._frameTimes = [];
-    this._average = null;
+    this._rate = new FrameRate();
+    /** Smoothed GPU time per frame (ms), when the browser measures it. @type {number | null} */
+    this._gpu = null;
     this._shownAt = 0;
 
     this.nameText = element('span', { class: 'name', title: 'The running shader' });
@@ -169,7 +180,8 @@ export class Toolbar {
     if (this.nameText.textContent !== name) this.nameText.textContent = name;
     if (!playing) {
       this._frameTimes.length = 0;
-      this._average = null;
+      this._rate.reset();
+      this._gpu = null;
       this.fpsText.textContent = 'paused';
       this._drawGraph();
     }
@@ -184,16 +196,40 @@ export class Toolbar {
     this.editButton.setAttribute('aria-expanded', String(open));
   }
 
-  /** One more frame interval (ms) while playing. */
+  /**
+   * One more frame drawn while playing, `ms` after the one before (the page's clock).
+   * @param {number} ms
+   * @param {number} [now] performance.now()
+   */
   addFrameTime(ms, now = performance.now()) {
     this._frameTimes.push(ms);
     if (this._frameTimes.length > GRAPH_FRAMES) this._frameTimes.shift();
-    this._average = this._average === null ? ms : this._average * 0.9 + ms * 0.1;
+    this._rate.add(now);
     this._drawGraph();
     if (now - this._shownAt > 250) {
       this._shownAt = now;
-      this.fpsText.textContent = `${this._average.toFixed(1)} ms · ${(1000 / this._average).toFixed(0)} fps`;
+      this._showReadout();
     }
+  }
+
+  /**
+   * GPU times (ms) measured with EXT_disjoint_timer_query_webgl2 (frame-timer.js).
+   * @param {number[]} times
+   */
+  addGpuTimes(times) {
+    for (const ms of times) this._gpu = this._gpu === null ? ms : this._gpu * 0.9 + ms * 0.1;
+  }
+
+  /**
+   * GPU time where measured, else the time between frames; and the frame rate actually reached
+   * (rounded down: never a speed the page did not reach).
+   */
+  _showReadout() {
+    const fps = this._rate.fps;
+    if (fps === null) return;
+    const rate = fps < 10 ? `${(Math.floor(fps * 10 + 1e-6) / 10).toFixed(1)} fps` : `${Math.floor(fps + 1e-6)} fps`;
+    const time = this._gpu !== null ? `GPU ${this._gpu.toFixed(1)} ms` : `${(1000 / fps).toFixed(1)} ms between frames`;
+    this.fpsText.textContent = `${time} · ${rate}`;
   }
 
   _drawGraph() {

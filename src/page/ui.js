@@ -176,6 +176,7 @@ export function installUi(app) {
     showState();
   });
   app.on('frame', (_, ms) => {
+    toolbar.addGpuTimes(app.renderer.gpuTimer.poll());
     toolbar.addFrameTime(ms);
     const now = performance.now();
     if (now - shownAt > 100) {
