@@ -46,6 +46,9 @@ export interface CompileOutcome {
   error?: string;
 }
 
+/** What record() resolves with: the recording's settings and the file as base64. */
+export type RecordingResult = Omit<import('../src/page/recorder.js').Recording, 'bytes'> & { data: string };
+
 /** window.raytracer: the page's automation hook, installed by src/page/automation.js (see its header). */
 export interface RaytracerHook {
   /** Resolves after the first frame has been drawn; rejects when WebGL2 is missing or the first compile fails. */
@@ -75,6 +78,11 @@ export interface RaytracerHook {
   loadShader(url: string): Promise<CompileOutcome>;
   /** The link "Copy link" copies. */
   shareUrl(): string;
+  /** Records the shader frame by frame (src/page/recorder.js); `data` is the file as base64. */
+  record(request?: import('../src/page/recorder.js').RecordRequest): Promise<RecordingResult>;
+  /** Stops the recording under way: its record() rejects, nothing is made. */
+  cancelRecording(): void;
+  recording(): { busy: boolean };
   info(): RaytracerInfo;
 }
 

@@ -21,6 +21,13 @@
 //   setChannel(i, url|null)    Promise: an image into iChannel i (null: black again).
 //   loadShader(url)       Promise<{ok, error?}>: fetches and runs a shader as ?shader= does.
 //   shareUrl()            Promise<string>: the link "Copy link" copies (reproduces this view).
+//   record({format, frames | duration, fps, width, height})  Promise<{format, frames, fps,
+//                         width, height, codec, mimeType, data}>: records the shader frame by
+//                         frame as the Record button does (recorder.js: 'webm' or 'png', a .zip
+//                         of PNGs); `data` is the file as base64. Rejects with RecordingCancelled
+//                         after cancelRecording().
+//   cancelRecording()     stops the recording under way (this one or the Record button's).
+//   recording()           {busy}: whether a recording is under way.
 //   info()                {renderer (UNMASKED_RENDERER_WEBGL), vendor, version, shadingLanguage,
 //                         width, height, frame, time, playing, speed, mouse (iMouse),
 //                         controls: {NAME: value}, fileName, shaderUrl, origin, contextLost,
@@ -137,6 +144,14 @@ export function installAutomation(app, ready, ui) {
 
     shareUrl: () => ui.shareUrl(),
 
+    async record(request = {}) {
+      await settled();
+      const { bytes, ...result } = await ui.recording.recorder.record(request);
+      return { ...result, data: toBase64(bytes) };
+    },
+    cancelRecording: () => ui.recording.recorder.cancel(),
+    recording: () => ({ busy: ui.recording.recorder.busy }),
+
     info() {
       return {
         ...app.renderer.info(),
@@ -175,6 +190,9 @@ export function installFailedAutomation(error) {
     setChannel: fail,
     loadShader: fail,
     shareUrl: () => location.href,
+    record: fail,
+    cancelRecording() {},
+    recording: () => ({ busy: false }),
     play() {},
     pause() {},
     togglePlay() {},

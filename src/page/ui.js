@@ -5,6 +5,7 @@
 import { Editor } from './editor.js';
 import { Panel } from './panel.js';
 import { Toolbar } from './toolbar.js';
+import { installRecordDialog } from './record-dialog.js';
 import { droppedKind } from './shader-loader.js';
 import { installShortcuts } from './shortcuts.js';
 import { toggleFullscreen, watchFullscreen } from './fullscreen.js';
@@ -145,6 +146,7 @@ export function installUi(app) {
   // ---- widgets -------------------------------------------------------------------------------
 
   const toolbar = new Toolbar(document.getElementById('toolbar'), actions);
+  const recording = installRecordDialog(app, toolbar.root, { saveBlob, toast });
   const panel = new Panel({
     scale: app.canvasSize.scale,
     cap: app.canvasSize.cap,
@@ -245,5 +247,5 @@ export function installUi(app) {
     }
   });
 
-  return { toast, toolbar, panel, editor, actions, shareUrl };
+  return { toast, toolbar, panel, editor, actions, shareUrl, recording };
 }
