@@ -78,6 +78,8 @@ export interface RaytracerHook {
   loadShader(url: string): Promise<CompileOutcome>;
   /** The link "Copy link" copies. */
   shareUrl(): string;
+  /** The editor's text (what it holds, compiled or not). */
+  editorSource(): string;
   /** Records the shader frame by frame (src/page/recorder.js); `data` is the file as base64. */
   record(request?: import('../src/page/recorder.js').RecordRequest): Promise<RecordingResult>;
   /** Stops the recording under way: its record() rejects, nothing is made. */

@@ -5,7 +5,7 @@
 import { afterAll, describe, expect, test } from 'vitest';
 import { assertNotBlank, differingPixels, sameImage } from './harness/images.js';
 import { disconnect } from './harness/page.js';
-import { button, info, overlayText, readPixels, withPage } from './page-helpers.js';
+import { button, editorText, info, overlayText, readPixels, typeInEditor, withPage } from './page-helpers.js';
 
 afterAll(disconnect);
 
@@ -50,11 +50,9 @@ describe('time', () => {
       await page.waitForFunction(() => window.raytracer.info().time === 0, { polling: 20 });
 
       // Space typed into the editor is text, not a shortcut
-      await (await button(page, 'Edit shader')).click();
-      await page.focus('textarea');
-      const length = await page.$eval('textarea', (t) => t.value.length);
-      await page.keyboard.press('Space');
-      await page.waitForFunction((n) => document.querySelector('textarea').value.length === n + 1, { polling: 20 }, length);
+      const length = (await editorText(page)).length;
+      await typeInEditor(page, ' ');
+      await page.waitForFunction((n) => window.raytracer.editorSource().length === n + 1, { polling: 20 }, length);
       expect(await playing(page)).toBe(false);
     });
   });

@@ -71,6 +71,8 @@ export async function withPage(body, { viewport, beforeLoad } = {}) {
   try {
     await body({ page, errors, warnings, context, goto });
   } finally {
+    // edits the page kept in localStorage (kept-source.js) must not reach the next test's page
+    await page.evaluate(() => localStorage.clear()).catch(() => {});
     await page.close().catch(() => {});
   }
   expect(errors, 'the page logged errors').toEqual([]);
@@ -194,4 +196,66 @@ export async function button(page, name) {
   const handle = await page.$(`::-p-aria([name="${name}"][role="button"])`);
   if (!handle) throw new Error(`no button named "${name}"`);
   return handle;
+}
+
+// ---- the editor (CodeMirror 6, src/page/editor.js) ----------------------------------------------
+
+/** The editor's text area (CodeMirror's content element). */
+export const EDITOR = '.cm-content[aria-label="Shader source"]';
+
+/** Opens the editor with its "Edit shader" button (if it is closed) and waits for its text. */
+export async function openEditor(page) {
+  if (!(await page.$eval('#editor', (e) => !(/** @type {HTMLElement} */ (e).hidden)))) await (await button(page, 'Edit shader')).click();
+  await page.waitForSelector(EDITOR, { visible: true });
+}
+
+/** The editor's whole text (compiled or not). */
+export async function editorText(page) {
+  return page.evaluate(() => window.raytracer.editorSource());
+}
+
+/**
+ * Types `text` into the editor as a person does: `at` 'end' (Ctrl+End first), 'start' (Ctrl+Home)
+ * or 'cursor' (where the cursor is). CodeMirror closes brackets as they are typed, and skips the
+ * closing one when it is typed.
+ * @param {import('puppeteer-core').Page} page
+ * @param {string} text
+ * @param {'end' | 'start' | 'cursor'} [at]
+ */
+export async function typeInEditor(page, text, at = 'end') {
+  await openEditor(page);
+  if (!(await page.$eval(EDITOR, (e) => e.contains(document.activeElement)))) await page.focus(EDITOR);
+  if (at !== 'cursor') {
+    await page.keyboard.down('Control');
+    await page.keyboard.press(at === 'end' ? 'End' : 'Home');
+    await page.keyboard.up('Control');
+  }
+  await page.keyboard.type(text);
+}
+
+/** Puts `text` on the clipboard and pastes it over everything in the editor, as a person does (needs clipboard permission). */
+export async function pasteIntoEditor(page, text) {
+  await page.evaluate((t) => navigator.clipboard.writeText(t), text);
+  await openEditor(page);
+  await page.focus(EDITOR);
+  await page.keyboard.down('Control');
+  await page.keyboard.press('KeyA');
+  await page.keyboard.up('Control');
+  await page.keyboard.press('KeyV', { commands: ['Paste'] });
+}
+
+/** The line numbers that show a compile-error marker in the editor's gutter (of the lines drawn). */
+export async function errorMarkerLines(page) {
+  return page.evaluate(() => {
+    const top = (e) => Math.round(e.getBoundingClientRect().top);
+    const numbers = new Map(
+      [...document.querySelectorAll('.cm-lineNumbers .cm-gutterElement')].map((e) => [top(e), Number(e.textContent)]),
+    );
+    return [...document.querySelectorAll('.cm-lint-marker-error')].map((m) => numbers.get(top(m.closest('.cm-gutterElement'))));
+  });
+}
+
+/** The line the editor's cursor is on (its highlighted line number). */
+export async function cursorLine(page) {
+  return page.$eval('.cm-lineNumbers .cm-activeLineGutter', (e) => Number(e.textContent));
 }

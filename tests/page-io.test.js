@@ -12,13 +12,18 @@ import { disconnect } from './harness/page.js';
 import { renderRawShader } from './harness/raw-webgl.js';
 import {
   EXAMPLES_DIR,
+  EDITOR,
   button,
+  editorText,
+  errorMarkerLines,
   exampleSource,
   info,
   overlayText,
+  pasteIntoEditor,
   pixel,
   readPixels,
   solid,
+  typeInEditor,
   withPage,
   withServedDir,
 } from './page-helpers.js';
@@ -40,16 +45,6 @@ function allPixels(image, rgb) {
 async function allowClipboard(page, baseUrl) {
   await page.browserContext().overridePermissions(baseUrl, ['clipboard-read', 'clipboard-write', 'clipboard-sanitized-write']);
   await page.bringToFront();
-}
-
-/** Puts `text` on the clipboard and pastes it over everything in the editor, as a person does. */
-async function pasteIntoEditor(page, text) {
-  await page.evaluate((t) => navigator.clipboard.writeText(t), text);
-  await page.focus('textarea');
-  await page.keyboard.down('Control');
-  await page.keyboard.press('KeyA');
-  await page.keyboard.up('Control');
-  await page.keyboard.press('KeyV', { commands: ['Paste'] });
 }
 
 /** Saves the page's downloads in a fresh folder; `next()` waits for the next finished file. */
@@ -117,24 +112,25 @@ describe('the editor', () => {
         const line = index + 1;
 
         await (await button(page, 'Edit shader')).click();
-        await page.waitForSelector('textarea[aria-label="Shader source"]', { visible: true });
-        expect(await page.$eval('textarea', (t) => t.value)).toBe(exampleSource(name));
+        await page.waitForSelector(EDITOR, { visible: true });
+        expect(await editorText(page)).toBe(exampleSource(name));
         await pasteIntoEditor(page, lines.join('\n'));
 
         await page.waitForFunction(() => !(/** @type {HTMLElement} */ (document.querySelector('[role="alert"]')).hidden), { polling: 50 });
         const alert = await overlayText(page);
-        expect(alert).toContain(`${name}.glsl:${line}:`);
+        expect(alert).toContain(`untitled:${line}:`); // a paste over everything is a shader of its own
         expect(alert).toContain('notDeclaredAnywhere');
         expect(alert).toContain(broken.error);
         expect(alert).toContain('still showing the last version that compiled');
-        expect(await page.$$eval('.editor-gutter .error', (els) => els.map((e) => Number(e.textContent)))).toContain(line);
+        await page.$eval('.cm-scroller', (s) => s.scrollTo(0, 0)); // the paste left it at the end
+        await expect.poll(() => errorMarkerLines(page)).toContain(line);
         expect(sameImage(await readPixels(page), before), 'the previous image stays').toBe(true);
 
         // pasting a good shader runs it, and the alert goes
         await pasteIntoEditor(page, solid(10, 200, 30));
         await page.waitForFunction(() => /** @type {HTMLElement} */ (document.querySelector('[role="alert"]')).hidden, { polling: 50 });
         expect(allPixels(await readPixels(page), [10, 200, 30])).toBe(true);
-        expect(await page.$$('.editor-gutter .error')).toHaveLength(0);
+        expect(await page.$$('.cm-lint-marker-error')).toHaveLength(0);
       });
     },
   );
@@ -146,10 +142,13 @@ describe('the editor', () => {
       expect(await folders()).toContain('Shader controls');
       expect(await page.$('::-p-aria([name="Twist (radians per unit)"])')).not.toBeNull();
       await (await button(page, 'Edit shader')).click();
-      await page.$eval('textarea', (t) => {
-        t.value = '';
-      });
-      await page.type('textarea', 'void mainImage(out vec4 c, in vec2 f) { c = vec4(1.0, 0.0, 1.0, 1.0); }');
+      await page.focus(EDITOR);
+      await page.keyboard.down('Control');
+      await page.keyboard.press('KeyA');
+      await page.keyboard.up('Control');
+      await page.keyboard.press('Backspace');
+      await typeInEditor(page, 'void mainImage(out vec4 c, in vec2 f) { c = vec4(1.0, 0.0, 1.0, 1.0); }');
+      expect(await editorText(page)).toBe('void mainImage(out vec4 c, in vec2 f) { c = vec4(1.0, 0.0, 1.0, 1.0); }');
       await page.keyboard.down('Control');
       await page.keyboard.press('Enter');
       await page.keyboard.up('Control');
@@ -189,7 +188,7 @@ describe('dropping files on the page', () => {
         let frame = await readPixels(page);
         expect(pixel(frame, 20, 45)).toEqual([0, 0, 0]); // an empty channel is black
         expect(pixel(frame, 140, 45)).toEqual([0, 0, 0]); // ... of size 0 x 0
-        expect(await page.$eval('textarea', (t) => t.value)).toBe(fs.readFileSync(shader, 'utf8'));
+        expect(await editorText(page)).toBe(fs.readFileSync(shader, 'utf8'));
 
         await dropFiles(page, [image]);
         await page.waitForFunction(() => document.getElementById('toast').textContent.includes('orange.png'));

@@ -21,6 +21,7 @@
 //   setChannel(i, url|null)    Promise: an image into iChannel i (null: black again).
 //   loadShader(url)       Promise<{ok, error?}>: fetches and runs a shader as ?shader= does.
 //   shareUrl()            Promise<string>: the link "Copy link" copies (reproduces this view).
+//   editorSource()        the editor's text (what it holds, compiled or not).
 //   record({format, frames | duration, fps, width, height})  Promise<{format, frames, fps,
 //                         width, height, codec, mimeType, data}>: records the shader frame by
 //                         frame as the Record button does (recorder.js: 'webm' or 'png', a .zip
@@ -143,6 +144,7 @@ export function installAutomation(app, ready, ui) {
     },
 
     shareUrl: () => ui.shareUrl(),
+    editorSource: () => ui.editor.text,
 
     async record(request = {}) {
       await settled();
@@ -190,6 +192,7 @@ export function installFailedAutomation(error) {
     setChannel: fail,
     loadShader: fail,
     shareUrl: () => location.href,
+    editorSource: () => '',
     record: fail,
     cancelRecording() {},
     recording: () => ({ busy: false }),

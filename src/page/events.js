@@ -8,7 +8,7 @@
  * @property {[]} state the play state, time, speed, size settings, controls or channels changed
  * @property {[ms: number]} frame a frame was drawn while playing, `ms` after the one before
  * @property {[]} drawn a frame was drawn, just now (its pixels can still be read)
- * @property {[error: (Error & {report?: string}) | null, fileName: string]} compile the latest compile ended: null on
+ * @property {[error: (Error & {report?: string, messages?: Array<{severity: string, line: number | null, message: string}>}) | null, fileName: string]} compile the latest compile ended: null on
  *   success, else its error (app.renderer.hasProgram tells whether an older shader still runs)
  * @property {[]} source a new source was loaded (its controls read)
  * @property {[lost: boolean]} context the GPU context was lost (true) or restored (false)

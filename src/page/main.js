@@ -11,6 +11,8 @@ import { CHANNEL_PARAMS, parseUrlParams } from './url-params.js';
 import { fetchShader, shaderName } from './shader-loader.js';
 import { installUi } from './ui.js';
 import { sourceFromHash } from './share-link.js';
+import { sharedKey, showRestoredNote } from './kept-source.js';
+import { formatShaderMessages } from '../shadertoy/shader-errors.js';
 
 const BUILTIN_NAME = 'shaders/raytrace.glsl';
 
@@ -45,7 +47,9 @@ function showAppOnPage(app, overlay) {
   app.on('compile', (_, error, fileName) => {
     if (error) {
       const fallback = app.renderer.hasProgram ? ' (still showing the last version that compiled)' : '';
-      overlay.show(`${fileName} did not compile${fallback}`, error.report ?? error.message);
+      const title = `${fileName} did not compile${fallback}`;
+      if (error.messages?.length) overlay.showMessages(title, error.messages, (m) => formatShaderMessages([m], app.source, fileName));
+      else overlay.show(title, error.report ?? error.message);
       if (!app.renderer.hasProgram) root.error = 'shader-compile';
       return;
     }
@@ -104,6 +108,24 @@ async function initialSource(params) {
   }
 }
 
+/**
+ * Work is never lost (kept-source.js): edits kept for the page's shader (the ?shader= file, the
+ * built-in one, or the shader a link carries) come back, with a note that can discard them.
+ * @param {RaytracerApp} app
+ * @param {ReturnType<typeof installUi>} ui
+ * @param {string | undefined} shader the ?shader= parameter
+ * @param {{source: string, from: FirstSource['from']}} file what the page loaded
+ */
+function restoreKeptWork(app, ui, shader, { source, from }) {
+  const file = { name: from.name, source };
+  const kept = ui.kept.open(from.origin === 'editor' ? sharedKey(file) : (shader ?? BUILTIN_NAME), file);
+  if (!kept) return;
+  app.loadSource(kept.source, { name: kept.name, origin: 'editor' });
+  showRestoredNote(document.getElementById('stage'), kept.name, () => {
+    app.setSource(source, from).catch(() => {});
+  });
+}
+
 function start() {
   const canvas = /** @type {HTMLCanvasElement} */ (document.getElementById('view'));
   const overlay = new Overlay(document.getElementById('overlay'));
@@ -131,6 +153,7 @@ function start() {
   if (params.speed !== undefined) app.inputs.setSpeed(params.speed);
   if (params.mouse) app.inputs.setMouse(params.mouse);
   const ui = installUi(app);
+  overlay.onLine = (line) => ui.editor.goToLine(line);
   installAutomation(app, app.ready, ui);
 
   params.channels.forEach((url, i) => {
@@ -144,6 +167,7 @@ function start() {
   app.loading = initialSource(params).then(({ source, from, notice }) => {
     if (notice) noticeAfterCompile(notice);
     app.loadSource(source, from);
+    restoreKeptWork(app, ui, params.shader, { source, from });
     app.applyControls(params.controls, 'URL');
     app.compile().catch(() => {}); // shown on the page; `ready` rejects
     app.requestRender();

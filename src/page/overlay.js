@@ -6,6 +6,8 @@ export class Overlay {
   constructor(element) {
     this.element = element;
     this.element.setAttribute('role', 'alert');
+    /** Shows a line of the shader (set by the page once the editor exists). @type {((line: number) => void) | null} */
+    this.onLine = null;
     this.hide();
   }
 
@@ -20,6 +22,35 @@ export class Overlay {
       this.element.append(pre);
     }
     this.element.hidden = false;
+  }
+
+  /**
+   * Compile errors: one entry a message; a message at a line of the file is a button that calls
+   * `this.onLine(line)` (the page opens the editor there).
+   * @param {string} title
+   * @param {Array<{line: number | null}>} messages
+   * @param {(message: any) => string} format a message's text
+   */
+  showMessages(title, messages, format) {
+    const onLine = this.onLine;
+    this.show(title);
+    const list = document.createElement('pre');
+    for (const message of messages) {
+      const text = format(message);
+      if (message.line === null || !onLine) {
+        list.append(text, '\n');
+        continue;
+      }
+      const link = document.createElement('button');
+      link.type = 'button';
+      link.className = 'error-line';
+      link.title = `Show line ${message.line} in the editor`;
+      link.textContent = text;
+      const line = message.line;
+      link.addEventListener('click', () => onLine(line));
+      list.append(link, '\n');
+    }
+    this.element.append(list);
   }
 
   hide() {

@@ -3,6 +3,7 @@
 // .glsl file or an image on the page, and a status line for short confirmations.
 
 import { Editor } from './editor.js';
+import { KeptSource, fileStem } from './kept-source.js';
 import { Panel } from './panel.js';
 import { Toolbar } from './toolbar.js';
 import { installRecordDialog } from './record-dialog.js';
@@ -60,11 +61,8 @@ export function pngBlob({ width, height, data }) {
   );
 }
 
-/** A file name without its folders and extension. */
-function stem(name) {
-  const base = name.slice(name.lastIndexOf('/') + 1);
-  return base.replace(/\.[^.]*$/, '') || 'shader';
-}
+/** A file name without its folders and extension ("raytrace-edited" for an edited shader). */
+const stem = fileStem;
 
 /**
  * @param {import('./app.js').RaytracerApp} app
@@ -163,9 +161,12 @@ export function installUi(app) {
         },
       ),
   });
+  // an edited shader's name: "untitled" after a paste over everything, else "NAME (edited)"
+  const kept = new KeptSource();
   const editor = new Editor(document.getElementById('editor'), {
-    apply: (source) => app.setSource(source, { origin: 'editor' }).catch(() => {}),
+    apply: (source, pasted) => app.setSource(source, { origin: 'editor', name: kept.nameFor(source, pasted) }).catch(() => {}),
     onToggle: (open) => toolbar.setEditorOpen(open),
+    onChange: (source) => kept.save(source),
   });
 
   const showState = () => {
@@ -187,6 +188,7 @@ export function installUi(app) {
     }
   });
   app.on('source', () => {
+    if (app.origin !== 'editor') kept.loadedFile({ name: app.fileName, source: app.source });
     panel.setControls(app.controls, app.values);
     editor.setSource(app.source, app.fileName);
     document.title = `${app.fileName} · Shadertoy runner`;
@@ -247,5 +249,5 @@ export function installUi(app) {
     }
   });
 
-  return { toast, toolbar, panel, editor, actions, shareUrl, recording };
+  return { toast, toolbar, panel, editor, kept, actions, shareUrl, recording };
 }
