@@ -16,7 +16,7 @@
 // Shadertoy compiles this block as it stands; a host defines HOST_CONTROLS and declares the same
 // names itself (a #define is compile-time, a const becomes a uniform). Syntax: src/shadertoy/controls.js.
 #ifndef HOST_CONTROLS
-#define SAMPLES 16                                     // ui: Samples per pixel (per edge pixel when adaptive) | 1, 4, 9, 16
+#define SAMPLES 16                                     // ui: Samples per (edge) pixel | 1, 4, 9, 16
 #define ADAPTIVE_AA 1                                  // ui: Adaptive anti-aliasing | toggle
 #define SHOW_AA_PIXELS 0                               // ui: Show pixels with extra samples | toggle
 #define BOUNCES 3                                      // ui: Reflection bounce limit | 0 .. 4

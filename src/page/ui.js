@@ -82,6 +82,7 @@ export function installUi(app) {
 
   // ---- output --------------------------------------------------------------------------------
 
+  /** The link that reproduces this view (share-link.js). */
   const shareUrl = async () => (await shareLink(app)).url;
 
   const actions = {

@@ -1,20 +1,40 @@
-// The README's picture, rendered by the harness exactly as the tests render views: the page in
-// headless Chromium on SwiftShader, default controls at time 0, 4 samples per pixel.
+// The README's pictures, made by the harness in headless Chromium on SwiftShader:
+// - public/scene.png: the scene, rendered exactly as the tests render views (the default
+//   controls, adaptive anti-aliasing among them, at time 0);
+// - public/page.png: the page itself at 1280x800 (toolbar, canvas, the panel beside it, the
+//   editor open), as a person sees it.
 //
-//   npm run picture        writes public/scene.png
+//   npm run picture        writes both
 
 import path from 'node:path';
 import { REPO_ROOT, rel } from '../harness/config.js';
 import { assertNotBlank, writePng } from '../harness/images.js';
-import { renderView } from '../harness/page.js';
+import { harnessContext, openPage, renderView } from '../harness/page.js';
 import { withHarness } from '../harness/setup.js';
 
-const VIEW = { name: 'readme', params: { time: 0, SAMPLES: 4 }, size: [960, 540] };
+const VIEW = { name: 'readme', params: { time: 0 }, size: [960, 540] };
+const PAGE_VIEWPORT = { width: 1280, height: 800, deviceScaleFactor: 1 };
 
 await withHarness(async (context) => {
   const image = await renderView(VIEW);
   assertNotBlank(image, 'README picture');
-  const file = path.join(REPO_ROOT, 'public', 'scene.png');
-  writePng(file, image);
-  console.log(`wrote ${rel(file)} (${image.width}x${image.height}, ${context.environment.renderer})`);
+  const sceneFile = path.join(REPO_ROOT, 'public', 'scene.png');
+  writePng(sceneFile, image);
+  console.log(`wrote ${rel(sceneFile)} (${image.width}x${image.height}, ${context.environment.renderer})`);
+
+  const { page, errors } = await openPage();
+  try {
+    await page.setViewport(PAGE_VIEWPORT);
+    await page.goto(`${(await harnessContext()).baseUrl}/?time=0`, { waitUntil: 'load' });
+    await page.evaluate(() => window.raytracer.ready);
+    const edit = await page.$('::-p-aria([name="Edit shader"])');
+    if (edit) await edit.click();
+    await page.evaluate(() => window.raytracer.readPixels()); // one more frame, with the editor open
+    const pageFile = path.join(REPO_ROOT, 'public', 'page.png');
+    await page.screenshot({ path: pageFile });
+    if (errors.length) throw new Error(`the page logged errors:\n  ${errors.join('\n  ')}`);
+    console.log(`wrote ${rel(pageFile)} (${PAGE_VIEWPORT.width}x${PAGE_VIEWPORT.height})`);
+  } finally {
+    await page.close();
+  }
 });
