@@ -7,7 +7,6 @@ import { disconnect } from './harness/page.js';
 import {
   EDITOR,
   button,
-  cursorLine,
   editorText,
   errorMarkerLines,
   exampleSource,
@@ -17,6 +16,7 @@ import {
   pasteIntoEditor,
   solid,
   typeInEditor,
+  waitForCursorLine,
   withPage,
 } from './page-helpers.js';
 
@@ -132,12 +132,12 @@ describe('the editor', () => {
       await toLast[links.findIndex((l) => l.startsWith(`untitled:${last}:`))].click();
       await page.waitForSelector(EDITOR, { visible: true });
       expect(await editorFocused(page)).toBe(true);
-      expect(await cursorLine(page)).toBe(last);
+      expect(await waitForCursorLine(page, last)).toBe(last);
       expect(await errorMarkerLines(page)).toContain(last);
       expect(await underlined()).toContain('alsoUndeclared');
       const toFirst = await page.$$('#overlay .error-line');
       await toFirst[links.findIndex((l) => l.startsWith(`untitled:${first}:`))].click();
-      expect(await cursorLine(page)).toBe(first);
+      expect(await waitForCursorLine(page, first)).toBe(first);
       expect(await errorMarkerLines(page)).toContain(first);
       expect(await underlined()).toContain('notDeclaredAnywhere');
 

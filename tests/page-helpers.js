@@ -259,3 +259,18 @@ export async function errorMarkerLines(page) {
 export async function cursorLine(page) {
   return page.$eval('.cm-lineNumbers .cm-activeLineGutter', (e) => Number(e.textContent));
 }
+
+/**
+ * Waits until the editor's cursor is on `line` (the gutter marks the active line once the editor
+ * has scrolled there and drawn it, which may take an animation frame), and returns it.
+ */
+export async function waitForCursorLine(page, line) {
+  await page
+    .waitForFunction(
+      (n) => Number(document.querySelector('.cm-lineNumbers .cm-activeLineGutter')?.textContent) === n,
+      { polling: 50, timeout: 5000 },
+      line,
+    )
+    .catch(() => {});
+  return cursorLine(page);
+}
