@@ -457,18 +457,20 @@ vec3 radiance(Scene s, EyeRay eye, float coneSpread, out vec3 key, out vec3 keyN
     key = vec3(float(hit.id), 0.0, float(ID_NONE));
     keyNormal = hit.n;
     if (hit.id == ID_NONE) return skyColor(rd);
+    // Where the eye ray meets the ground, the parallelogram its differentials span on the plane:
+    // dp = t (dd - d (n.dd) / (n.d)) with n = +y. Once, before the loop: only the first hit uses it.
+    vec3 dpdx = hit.t * (eye.dirDx - rd * (eye.dirDx.y / rd.y));
+    vec3 dpdy = hit.t * (eye.dirDy - rd * (eye.dirDy.y / rd.y));
+    vec4 eyeFootprint = abs(vec4(dpdx.x, dpdy.x, dpdx.z, dpdy.z));
     for (int bounce = 0;; bounce++) {
         vec3 n = hit.n;
         int id = hit.id;
         bool inside = dot(rd, n) > 0.0;
         vec3 p = reprojectOnSurface(s, ro + hit.t * rd, n, id);
         coneWidth += coneSpread * hit.t;
-        // The ground's footprint: for the eye ray the parallelogram its differentials span on the
-        // plane, dp = t (dd - d (n.dd) / (n.d)) with n = +y; for a reflected ray its cone's.
-        vec3 dpdx = hit.t * (eye.dirDx - rd * (eye.dirDx.y / rd.y));
-        vec3 dpdy = hit.t * (eye.dirDy - rd * (eye.dirDy.y / rd.y));
+        // The ground's footprint: the eye ray's own (above), or for a reflected ray its cone's.
         vec2 cone = groundFootprint(rd, coneWidth);
-        vec4 footprint = bounce == 0 ? abs(vec4(dpdx.x, dpdy.x, dpdx.z, dpdy.z)) : vec4(cone.x, 0.0, cone.y, 0.0);
+        vec4 footprint = bounce == 0 ? eyeFootprint : vec4(cone.x, 0.0, cone.y, 0.0);
         vec3 ground = groundColor(mod(s.textureOrigin + p.xz, 2.0), footprint);
         vec3 albedo = mix(objectColor(id), ground, bvec3(id == ID_GROUND));
 
