@@ -63,6 +63,55 @@ describe('parseUrlParams warns about bad values and never throws', () => {
   });
 });
 
+describe('issue 12: cap=0, reserved names, repeated keys', () => {
+  test('cap=0 means no cap, as the panel\'s "No cap" (not a cap clamped up to 16 px)', () => {
+    for (const search of ['?cap=0', '?cap=0.0', '?cap=%200']) {
+      const params = parseUrlParams(search, BASE);
+      expect(params.warnings, search).toEqual([]);
+      expect(params.cap, search).toBe(0);
+    }
+    // a cap between 0 and the minimum is still a cap, clamped
+    expect(parseUrlParams('?cap=0.4', BASE)).toMatchObject({ cap: 16 });
+  });
+
+  test('__proto__= is warned about like any name that is no control, and sets no prototype', () => {
+    for (const key of ['__proto__', 'gl_FragCoord', 'A__B']) {
+      const params = parseUrlParams(`?${key}=1&BOUNCES=2`, BASE);
+      expect(params.warnings.length, key).toBe(1);
+      expect(params.warnings[0], key).toContain(`${key}=1 ignored`);
+      expect(Object.keys(params.controls), key).toEqual(['BOUNCES']);
+      expect(Object.getPrototypeOf(params.controls), key).not.toBe(1);
+    }
+    const params = parseUrlParams('?__proto__=1', BASE);
+    expect(params.warnings.length).toBe(1);
+    expect(Object.keys(params.controls)).toEqual([]);
+  });
+
+  test('control names that are Object.prototype members are plain controls', () => {
+    const params = parseUrlParams('?constructor=2&toString=3&hasOwnProperty=4', BASE);
+    expect(params.warnings).toEqual([]);
+    expect({ ...params.controls }).toEqual({ constructor: '2', toString: '3', hasOwnProperty: '4' });
+    // and a name that is not in the URL is not in the map, whatever Object.prototype holds
+    expect('valueOf' in params.controls).toBe(false);
+  });
+
+  test.each([
+    ['time', '?time=1&time=2', { time: 2 }],
+    ['a bad last value still wins: the earlier is not used', '?time=1&time=abc', {}],
+    ['a control', '?BOUNCES=1&BOUNCES=3', { controls: { BOUNCES: '3' } }],
+    ['shader', '?shader=a.glsl&shader=b.glsl', { shader: 'b.glsl' }],
+  ])('a repeated key is warned about and its last value is used: %s', (_, search, expected) => {
+    const params = parseUrlParams(search, BASE);
+    const key = search.slice(1, search.indexOf('='));
+    const repeated = params.warnings.filter((w) => w.includes('more than once'));
+    expect(repeated.length, params.warnings.join('\n')).toBe(1);
+    expect(repeated[0]).toContain(`${key}=`);
+    expect(repeated[0]).toContain(`the last one is used (${search.slice(search.lastIndexOf('&') + 1)})`);
+    expect(params).toMatchObject(expected);
+    if (!('time' in expected) && key === 'time') expect(params.time).toBeUndefined();
+  });
+});
+
 test('formatUrlParams writes what parseUrlParams reads', () => {
   const state = {
     shader: 'examples/raymarch.glsl',

@@ -7,12 +7,14 @@
 //   &mouse=x,y,z,w   iMouse in device pixels (until the first click); x,y alone means z = w = 0
 //   &size=WxH        drawing buffer of W×H device pixels (CSS size W/dpr × H/dpr; no scaling)
 //   &scale=s         resolution scale, 0.25 .. 1 of device pixels (ignored with size)
-//   &cap=N           cap on the drawing buffer's longer side, in device pixels (ignored with size)
+//   &cap=N           cap on the drawing buffer's longer side, in device pixels; 0: no cap (ignored
+//                    with size)
 //   &speed=s         time speed, 0 .. 16 (1 is real time)
 //   &iChannel0=URL   an image for iChannel0 (likewise iChannel1..3), same origin as the page
 //   &NAME=value      any shader control; vectors as comma lists (LIGHT_POSITION=1,2,3)
 //
-// Anything unreadable is reported in `warnings` and ignored, anything out of range is clamped and
+// A key given more than once is read once, from its last occurrence, and the others are warned
+// about. Anything unreadable is reported in `warnings` and ignored, anything out of range is clamped and
 // reported; the page never fails on a URL. Control values are returned as written: the app checks
 // them against the shader's controls (coerceControlValue), as it does for the panel and the
 // automation hook. formatUrlParams writes the same contract back (the "Copy link" button).
@@ -22,6 +24,7 @@ export const MAX_SCALE = 1;
 export const MAX_SIZE = 16384;
 /** Beyond 8K UHD a drawing buffer is not a view but a way to exhaust memory. */
 export const MAX_PIXELS = 7680 * 4320;
+/** The smallest cap= that caps; cap=0 means no cap, as the panel's "No cap". */
 export const MIN_CAP = 16;
 export const MAX_SPEED = 16;
 export const MAX_TIME = 1e6;
@@ -64,6 +67,13 @@ export function clampSize({ width, height }, maxSide = MAX_SIZE, maxPixels = MAX
 }
 
 /**
+ * A name GLSL ES 3.00 keeps for itself (section 3.7: `gl_` prefixes, and any name with two
+ * underscores in a row), so no shader control can have it. `__proto__` is one of them: as a key
+ * of a plain object it would set the object's prototype instead of naming a control.
+ */
+const RESERVED_NAME = /^gl_|__/;
+
+/**
  * @param {string} search location.search
  * @param {string} [base] the page's address (resolves `shader` and `iChannelN` URLs)
  * @returns {{shader?: string, time?: number, mouse?: number[], size?: {width:number, height:number},
@@ -71,7 +81,9 @@ export function clampSize({ width, height }, maxSide = MAX_SIZE, maxPixels = MAX
  *   controls: Record<string, string>, warnings: string[], refusedShader?: {url: string, why: string}}}
  */
 export function parseUrlParams(search, base = 'http://localhost/') {
-  const out = { controls: {}, channels: [], warnings: [] };
+  /** @type {Record<string, string>} no prototype: any name is just a key (`constructor`, `toString`) */
+  const controls = Object.create(null);
+  const out = { controls, channels: [], warnings: [] };
   const warn = (key, value, why) => out.warnings.push(`URL parameter ${key}=${value} ignored: ${why}`);
   const clamped = (key, value, used) => out.warnings.push(`URL parameter ${key}=${value} is out of range: using ${used}`);
   const number = (key, value, min, max, what) => {
@@ -85,7 +97,13 @@ export function parseUrlParams(search, base = 'http://localhost/') {
     return v;
   };
 
-  for (const [key, value] of new URLSearchParams(search)) {
+  const entries = [...new URLSearchParams(search)];
+  const last = new Map(entries.map(([key, value], i) => [key, { value, i }]));
+  for (const [i, [key, value]] of entries.entries()) {
+    if (last.get(key).i !== i) {
+      warn(key, value, `${key} is given more than once; the last one is used (${key}=${last.get(key).value})`);
+      continue;
+    }
     if (key === 'time') {
       const t = number(key, value, 0, MAX_TIME, 'a number of seconds');
       if (t !== undefined) out.time = t;
@@ -108,7 +126,9 @@ export function parseUrlParams(search, base = 'http://localhost/') {
       const s = number(key, value, MIN_SCALE, MAX_SCALE, `a number in ${MIN_SCALE} .. ${MAX_SCALE}`);
       if (s !== undefined) out.scale = s;
     } else if (key === 'cap') {
-      const c = number(key, value, MIN_CAP, MAX_SIZE, `a whole number of device pixels, ${MIN_CAP} .. ${MAX_SIZE}`);
+      // 0 is "no cap" (the panel's choice too), not a cap clamped up to MIN_CAP
+      const noCap = value.trim() !== '' && Number(value) === 0;
+      const c = noCap ? 0 : number(key, value, MIN_CAP, MAX_SIZE, `0 (no cap) or whole device pixels, ${MIN_CAP} .. ${MAX_SIZE}`);
       if (c !== undefined) out.cap = Math.round(c);
     } else if (key === 'speed') {
       const s = number(key, value, 0, MAX_SPEED, `a number in 0 .. ${MAX_SPEED}`);
@@ -123,8 +143,10 @@ export function parseUrlParams(search, base = 'http://localhost/') {
       else out.channels[CHANNEL_PARAMS.indexOf(key)] = value.trim();
     } else if (!/^[A-Za-z_]\w*$/.test(key)) {
       warn(key, value, 'not a page parameter or a shader control name');
+    } else if (RESERVED_NAME.test(key)) {
+      warn(key, value, 'not a page parameter, and GLSL reserves the name (gl_ prefix or two underscores), so no shader control has it');
     } else {
-      out.controls[key] = value;
+      controls[key] = value;
     }
   }
   return out;
