@@ -3,6 +3,17 @@
 // tests/harness/setup.js starts that page server itself.
 import { fileURLToPath } from 'node:url';
 import { defineConfig } from 'vitest/config';
+import { findChrome } from './harness/chrome-path.js';
+
+// No Chromium, no test can run: say so and how to install one before vitest prints anything
+// (its banner, then "No test files found" and a stack, if the global setup were left to fail).
+// The config is read before vitest's first line; setup.js checks again for scripts.
+try {
+  findChrome();
+} catch (error) {
+  console.error(error.message);
+  process.exit(1);
+}
 
 export default defineConfig({
   root: fileURLToPath(new URL('..', import.meta.url)),
