@@ -7,12 +7,16 @@
 //   shader's image is arithmetic error alone (with adaptive anti-aliasing, which pixels took extra
 //   samples is the shader's decision, read from its "Show pixels with extra samples" view);
 // - 'converged': many stratified, jittered samples per pixel and the texture point-sampled, so
-//   the difference is the shader's total error, aliasing included.
+//   the difference is the shader's total error, aliasing included;
+// - 'progressive': the first N samples of the progressive raytracer's own sequence
+//   (progressiveJitter of src/shadertoy/progressive.js), point-sampled as 'converged' is, so N
+//   still frames of the progressive shader compare with it sample for sample.
 
 import { parseControls, parseConstants, controlDefaults, coerceControlValue } from '../shadertoy/controls.js';
 import { intersectPlane, intersectSphere, intersectBox, intersectCone } from './intersectors.js';
 import { add, sub, scale, addScaled, dot, length, normalize, reflect, mix } from './vec3.js';
 import { PATTERNS, filteredPattern, groundFootprint } from './texture.js';
+import { progressiveJitter } from '../shadertoy/progressive.js';
 
 const DEG = Math.PI / 180;
 const ID_NONE = -1;
@@ -186,21 +190,23 @@ function jitter(x, y, i, axis) {
  * Renders the scene in float64.
  * @param {string} shaderSource the text of shaders/raytrace.glsl (controls and constants)
  * @param {object} view { width, height, time, mouse, controls: {NAME: value} }
- * @param {{mode?: 'same-rays'|'converged', samplesPerAxis?: number, rows?: [number, number], extraSamples?: Uint8Array}} [options]
+ * @param {{mode?: 'same-rays'|'converged'|'progressive', samplesPerAxis?: number, samples?: number, rows?: [number, number], extraSamples?: Uint8Array}} [options]
  *   converged mode takes samplesPerAxis^2 jittered stratified samples per pixel (default 8: 64
- *   samples); rows = [first, end) renders only those rows (to split an image over threads);
+ *   samples); progressive mode the first `samples` (default 64) of the progressive shader's
+ *   sequence; rows = [first, end) renders only those rows (to split an image over threads);
  *   extraSamples (same-rays mode, adaptive anti-aliasing on): one byte a pixel, rows top to
  *   bottom, non-zero where the shader took the extra samples (its "Show pixels with extra
  *   samples" view)
  * @returns {{width, height, rgb: Float64Array}} display values in [0, 1], 3 per pixel, rows
  *   top to bottom (as the page's readPixels returns them)
  */
-export function renderReference(shaderSource, view, { mode = 'same-rays', samplesPerAxis = 8, rows, extraSamples } = {}) {
+export function renderReference(shaderSource, view, { mode = 'same-rays', samplesPerAxis = 8, samples = 64, rows, extraSamples } = {}) {
   const { width, height } = view;
   const s = referenceSettings(shaderSource, view.controls);
   const camera = referenceCamera(s, view);
   const { radiance } = makeScene(s);
-  const converged = mode === 'converged';
+  const progressive = mode === 'progressive';
+  const converged = mode === 'converged' || progressive;
   if (!converged && mode !== 'same-rays') throw new Error(`reference: unknown mode ${mode}`);
   const gridPerAxis = converged ? samplesPerAxis : Math.round(Math.sqrt(s.SAMPLES));
   const adaptive = !converged && s.ADAPTIVE_AA === 1 && gridPerAxis > 1;
@@ -228,6 +234,14 @@ export function renderReference(shaderSource, view, { mode = 'same-rays', sample
     const fy = height - 1 - row + 0.5; // fragCoord.y counts from the bottom
     for (let x = 0; x < width; x++) {
       const fx = x + 0.5;
+      if (progressive) {
+        const k = ((row - firstRow) * width + x) * 3;
+        averageProgressive(rgb, k, samples, (i) => {
+          const [jx, jy] = progressiveJitter(x, height - 1 - row, i);
+          return sample(x + jx, height - 1 - row + jy, 1);
+        });
+        continue;
+      }
       const grid = !adaptive || extraSamples[row * width + x] !== 0;
       const perAxis = grid ? gridPerAxis : 1;
       const sum = [0, 0, 0];
@@ -244,4 +258,19 @@ export function renderReference(shaderSource, view, { mode = 'same-rays', sample
     }
   }
   return { width, height, rgb };
+}
+
+/**
+ * Writes the clamped mean of n samples (sample(i) for i = 0..n-1) at rgb[k..k+2]: the progressive
+ * shader's Image tab clamps the mean of its sums the same way.
+ */
+function averageProgressive(rgb, k, n, sample) {
+  const sum = [0, 0, 0];
+  for (let i = 0; i < n; i++) {
+    const c = sample(i);
+    sum[0] += c[0];
+    sum[1] += c[1];
+    sum[2] += c[2];
+  }
+  for (let ch = 0; ch < 3; ch++) rgb[k + ch] = Math.min(Math.max(sum[ch] / n, 0), 1);
 }

@@ -159,3 +159,75 @@ export function composeImageShader(source, { hostBlock = '' } = {}) {
     firstSourceLine: countNewlines(before) + 1,
   };
 }
+
+// ---- multipass (issue 13) -------------------------------------------------------------------
+// The site compiles every pass as header + Common + "\n" + the pass's tab + main, joined as
+// plain strings (https://www.shadertoy.com/js/effect.js, EffectPass.NewShader: `fsSource +=
+// commonShaderCodes[i] + '\n'`). A buffer pass's main stores the colour as it is, alpha
+// included (EffectPass.MakeHeader_Buffer: `outColor = color`, no `color.w = 1.0`): buffers hold
+// data. A channel bound to a cubemap is declared `samplerCube`, a volume `sampler3D`
+// (MakeHeader_Image/Buffer).
+
+/** Shadertoy's `main` for a buffer pass: the colour stored as mainImage left it, alpha included. */
+export const SHADERTOY_BUFFER_FOOTER = `
+void main(void) {
+    vec4 color = vec4(1e20);
+    mainImage(color, gl_FragCoord.xy);
+    shadertoy_out_color = color;
+}
+`;
+
+const SAMPLER_DECLARATIONS = Object.freeze({ '2D': 'sampler2D', Cube: 'samplerCube', '3D': 'sampler3D' });
+
+/**
+ * One part of a composed pass, in lines counted from the first line of user text (1 = the
+ * composed shader's line `firstSourceLine`).
+ * @typedef {{name: string, firstLine: number, lineCount: number}} PassSection
+ */
+
+/**
+ * The full fragment shader of one pass of a multipass shader: Shadertoy's header (with each
+ * channel's sampler type), the host block, the Common tab, a line break, the pass's tab, and the
+ * Image or buffer `main`. With no Common, no channel types and kind 'image' it is exactly
+ * composeImageShader(code, {hostBlock}).
+ * @param {string} code the pass's tab text
+ * @param {{common?: string | null, hostBlock?: string, kind?: 'image' | 'buffer', name?: string,
+ *   channelTypes?: Array<'2D' | 'Cube' | '3D'>}} [options] name: the pass's name in error
+ *   messages (default "Image", or "Buffer" for a buffer)
+ * @returns {{code: string, firstSourceLine: number, sections: PassSection[]}} the code; the
+ *   1-based line of `code` where the user's text (Common, or the tab when there is none) starts;
+ *   and where Common and the tab lie, for mapping compiler messages (pass-errors.js)
+ */
+export function composePassShader(code, { common = null, hostBlock = '', kind = 'image', name, channelTypes } = {}) {
+  let header = SHADERTOY_HEADER;
+  (channelTypes ?? []).forEach((type, i) => {
+    const declaration = SAMPLER_DECLARATIONS[type];
+    if (!declaration) throw new Error(`composePassShader: unknown sampler type ${JSON.stringify(type)} for iChannel${i}`);
+    header = header.replace(`uniform sampler2D iChannel${i};`, `uniform ${declaration} iChannel${i};`);
+  });
+  const before = header + hostBlock;
+  const commonText = common === null ? '' : common + '\n';
+  const footer = kind === 'buffer' ? SHADERTOY_BUFFER_FOOTER : SHADERTOY_FOOTER;
+  const passName = name ?? (kind === 'buffer' ? 'Buffer' : 'Image');
+  /** @type {PassSection[]} */
+  const sections = [];
+  if (common !== null) sections.push({ name: 'Common', firstLine: 1, lineCount: countNewlines(common) + 1 });
+  sections.push({ name: passName, firstLine: countNewlines(commonText) + 1, lineCount: countNewlines(code) + 1 });
+  return {
+    code: before + commonText + code + (code.endsWith('\n') ? '' : '\n') + footer,
+    firstSourceLine: countNewlines(before) + 1,
+    sections,
+  };
+}
+
+/**
+ * The section and the line in it of a line of user text (1-based, counted as PassSection's), or
+ * null for a line outside every section.
+ * @param {PassSection[]} sections
+ * @param {number} line
+ * @returns {{name: string, line: number} | null}
+ */
+export function locatePassLine(sections, line) {
+  const section = sections.find((s) => line >= s.firstLine && line < s.firstLine + s.lineCount);
+  return section ? { name: section.name, line: line - section.firstLine + 1 } : null;
+}
