@@ -1,6 +1,8 @@
 // Getting a shader's text: from a URL the page's own server serves (?shader=, and a reload when
 // the dev server says the file changed), or from a file dropped on the page. And an image for a
-// channel, from a URL or a file.
+// channel, from a URL or a file. A URL is of the page's own server, never another origin (not
+// even through a redirect), and a load that gets no answer ends after LOAD_TIMEOUT_MS with a
+// message rather than waiting for ever.
 
 /** The name a shader goes by in messages and downloads: its URL's last path segment. */
 export function shaderName(url) {
@@ -13,45 +15,101 @@ export function shaderName(url) {
 }
 
 /**
- * Fetches a shader's text from the page's own server. Rejects with a readable reason: another
- * origin, a network failure, an HTTP error, or an HTML page (a dev server answers a missing file
- * with its index page).
+ * How long a load from the page's server (a ?shader= file, an image for a channel) may take
+ * before the page gives up and says so. A file of the page's own server arrives in well under a
+ * second (the dev server transforms neither shaders nor images); 15 s leaves room for a slow
+ * network or a server waking up, and ends what would otherwise be a black page, with no message,
+ * for as long as the server keeps the request open.
  */
-export async function fetchShader(url) {
+export const LOAD_TIMEOUT_MS = 15_000;
+
+/**
+ * @typedef {object} LoadOptions
+ * @property {number} [timeoutMs] give up after this long (default LOAD_TIMEOUT_MS; tests shorten it)
+ */
+
+const ownOrigin = () => `only files served by this page's server (${location.origin}) can be loaded`;
+
+/**
+ * Fetches a file of the page's own server and reads its body, within `timeoutMs` for the whole
+ * (headers and body). Refuses another origin up front, and one reached by a redirect.
+ * @template T
+ * @param {string} url
+ * @param {{accept: string, timeoutMs: number}} options
+ * @param {(response: Response) => Promise<T>} read
+ * @returns {Promise<{response: Response, body: T}>}
+ */
+async function fetchOwn(url, { accept, timeoutMs }, read) {
   const resolved = new URL(url, location.href);
-  if (resolved.origin !== location.origin) throw new Error(`only files served by this page's server (${location.origin}) can be loaded`);
-  let response;
+  if (resolved.origin !== location.origin) throw new Error(ownOrigin());
+  const signal = AbortSignal.timeout(timeoutMs);
   try {
-    response = await fetch(resolved, { cache: 'no-cache', headers: { Accept: 'text/plain, */*;q=0.1' } });
+    // mode 'no-cors': a redirect to another origin then ends in an opaque response, refused
+    // below without a sound. A 'cors' or 'same-origin' request would fail on it with a console
+    // error ("blocked by CORS policy", "Unsafe attempt to load URL"), indistinguishable from a
+    // network failure; an <img> would load it and leave the texture upload to fail. Same-origin
+    // responses (and same-origin redirects) are read as usual.
+    const response = await fetch(resolved, { mode: 'no-cors', cache: 'no-cache', headers: { Accept: accept }, signal });
+    if (response.type === 'opaque' || new URL(response.url).origin !== location.origin) {
+      throw new Error(`the server redirected it to another origin; ${ownOrigin()}`);
+    }
+    if (!response.ok) throw new Error(`the server answered HTTP ${response.status}${response.statusText ? ` ${response.statusText}` : ''}`);
+    return { response, body: await read(response) };
   } catch (error) {
-    throw new Error(`the request failed (${error.message})`, { cause: error });
+    if (signal.aborted) throw new Error(`the server did not answer within ${timeoutMs / 1000} s`, { cause: error });
+    if (error instanceof TypeError) throw new Error(`the request failed (${error.message})`, { cause: error });
+    throw error;
   }
-  if (!response.ok) throw new Error(`the server answered HTTP ${response.status}${response.statusText ? ` ${response.statusText}` : ''}`);
-  const text = await response.text();
-  const type = response.headers.get('content-type') ?? '';
-  if (/text\/html/i.test(type) || /^\s*<!doctype html/i.test(text)) throw new Error('no such file (the server answered with a web page)');
-  return text;
+}
+
+const isWebPage = (response, text = '') =>
+  /text\/html/i.test(response.headers.get('content-type') ?? '') || /^\s*<!doctype html/i.test(text);
+/** A dev server answers a missing file with its index page. */
+const NO_SUCH_FILE = 'no such file (the server answered with a web page)';
+
+/**
+ * Fetches a shader's text from the page's own server. Rejects with a readable reason: another
+ * origin (asked for, or reached by a redirect), a network failure, no answer within
+ * LOAD_TIMEOUT_MS, an HTTP error, or an HTML page.
+ * @param {string} url
+ * @param {LoadOptions} [options]
+ * @returns {Promise<string>}
+ */
+export async function fetchShader(url, { timeoutMs = LOAD_TIMEOUT_MS } = {}) {
+  const { response, body } = await fetchOwn(url, { accept: 'text/plain, */*;q=0.1', timeoutMs }, (r) => r.text());
+  if (isWebPage(response, body)) throw new Error(NO_SUCH_FILE);
+  return body;
 }
 
 /**
- * Loads and decodes an image for a channel.
+ * Loads and decodes an image for a channel, as the pixels of the file: no colour-space
+ * conversion, no premultiplied alpha (a channel holds data as much as pictures). The result is
+ * an ImageBitmap, so it can be transferred to a worker. Its rows are flipped (bottom row
+ * first), as Shadertoy uploads a channel: texture(iChannelN, vec2(u, 1)) is the image's top.
+ * WebGL ignores UNPACK_FLIP_Y_WEBGL for an ImageBitmap, and three.js skips texture.flipY for
+ * one, so the flip has to be in the bitmap.
+ * A URL must be of the page's own server, and not redirect elsewhere; it gets LOAD_TIMEOUT_MS.
  * @param {string | Blob} source a URL, or a File or Blob (a dropped or chosen file)
- * @returns {Promise<HTMLImageElement>} rejects with a readable reason when it is not an image
+ * @param {LoadOptions} [options]
+ * @returns {Promise<ImageBitmap>} rejects with a readable reason when it cannot be had or is not an image
  */
-export async function loadImage(source) {
-  const isUrl = typeof source === 'string';
-  const url = isUrl ? source : URL.createObjectURL(source);
+export async function loadImage(source, { timeoutMs = LOAD_TIMEOUT_MS } = {}) {
+  const name = typeof source === 'string' ? source : 'name' in source ? source.name : 'the image';
+  let blob = source;
+  if (typeof source === 'string') {
+    const { response, body } = await fetchOwn(source, { accept: 'image/*, */*;q=0.1', timeoutMs }, (r) => r.blob());
+    if (isWebPage(response)) throw new Error(NO_SUCH_FILE);
+    blob = body;
+  }
   try {
-    const image = new Image();
-    image.src = url;
-    await image.decode().catch(() => {
-      throw new Error(`cannot load ${isUrl ? source : 'name' in source ? source.name : 'the image'} as an image`);
-    });
-    return image;
-  } finally {
-    if (!isUrl) setTimeout(() => URL.revokeObjectURL(url), 0);
+    return await createImageBitmap(/** @type {Blob} */ (blob), IMAGE_DECODING);
+  } catch (error) {
+    throw new Error(`cannot load ${name} as an image`, { cause: error });
   }
 }
+
+/** @type {ImageBitmapOptions} */
+export const IMAGE_DECODING = { imageOrientation: 'flipY', colorSpaceConversion: 'none', premultiplyAlpha: 'none' };
 
 const SHADER_EXTENSIONS = /\.(glsl|frag|fs|fsh|txt|shader)$/i;
 

@@ -16,6 +16,7 @@ import puppeteer from 'puppeteer-core';
 import { ENVIRONMENT_FILE, GOLDEN_DIR, PAGE_TIMEOUT_MS, REPO_ROOT, UPDATING } from './config.js';
 import { findChrome } from './chrome-path.js';
 import { disconnect, useHarness } from './page.js';
+import { harnessRoutes } from './routes.js';
 
 export const CHROME_ARGS = [
   '--no-sandbox',
@@ -89,6 +90,8 @@ async function startPageServer({ watch = false } = {}) {
     logLevel: 'warn',
     clearScreen: false,
     server: { host: '127.0.0.1', port, strictPort: true, open: false, ...(watch ? {} : { watch: null }) },
+    // answers that are hard to get otherwise: a request that hangs, a redirect (routes.js)
+    plugins: [harnessRoutes()],
   });
   const close = () => server.close();
   try {
