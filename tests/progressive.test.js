@@ -157,4 +157,53 @@ describe('progressive raytracer on SwiftShader', () => {
     expect(afterError.rmse).toBeLessThan(2e-3);
     expect(afterError.over2).toBeLessThan(1e-3);
   });
+
+  test('restarts on a time change, a resize and a Restart (iFrame 0), and keeps counting otherwise', async () => {
+    const t1 = { iTime: 1 };
+    const frames = [
+      { capture: true }, // 1 sample
+      {},
+      { capture: true }, // 3
+      { uniforms: t1, capture: true }, // the time moved: 1
+      { uniforms: t1 },
+      { uniforms: t1, capture: true }, // 3
+      { uniforms: t1, resize: [12, 6], capture: true }, // resized: 1
+      { uniforms: { ...t1, iFrame: 0 }, capture: true }, // Restart: 1
+      { uniforms: { ...t1, iFrame: 1 }, capture: true }, // 2
+    ];
+    const result = await runPasses(composeModel(tabs.model), { width: 16, height: 8, frames });
+    expect(result.error, `${result.error}\n${result.log ?? ''}`).toBeUndefined();
+    expect(result.captures.map((c) => counts(c.buffers.A, c.width, c.height))).toEqual([[1], [3], [1], [3], [1], [1], [2]]);
+  });
+
+  test('SHOW_SAMPLE_COUNT draws the count at the top left and nothing else', async () => {
+    const run = async (show) => {
+      const passes = composeModel(tabs.model, { hostBlock: hostControlBlock(tabs.controls, { SHOW_SAMPLE_COUNT: show }) });
+      const result = await runPasses(passes, {
+        width: 64,
+        height: 36,
+        frames: Array.from({ length: 12 }, (_, i) => ({ capture: i === 11 })),
+      });
+      expect(result.error, `${result.error}\n${result.log ?? ''}`).toBeUndefined();
+      return decodeRgba(result.captures[0].screen, 64, 36, 'image');
+    };
+    const [plain, labelled] = [await run(0), await run(1)];
+    // "12" in 3-pixel cells after a one-cell margin: rows 0..20, columns 0..26 (two digits and a gap).
+    let inside = 0;
+    let outside = 0;
+    for (let row = 0; row < 36; row++) {
+      for (let x = 0; x < 64; x++) {
+        const i = (row * 64 + x) * 4;
+        const differs = [0, 1, 2].some((c) => plain[i + c] !== labelled[i + c]);
+        if (row < 21 && x < 27) inside += differs ? 1 : 0;
+        else outside += differs ? 1 : 0;
+      }
+    }
+    expect(outside).toBe(0);
+    expect(inside).toBeGreaterThan(100);
+    // The "1" of "12": its middle column (cells x = 1, at pixels 6..8 after the margin) is white.
+    const at = (x, row) => [...labelled.subarray((row * 64 + x) * 4, (row * 64 + x) * 4 + 3)];
+    expect(at(7, 10)).toEqual([255, 255, 255]);
+    expect(at(4, 10)).toEqual([0, 0, 0]);
+  });
 });
