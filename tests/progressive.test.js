@@ -160,6 +160,7 @@ describe('progressive raytracer on SwiftShader', () => {
 
   test('restarts on a time change, a resize and a Restart (iFrame 0), and keeps counting otherwise', async () => {
     const t1 = { iTime: 1 };
+    /** @type {Array<{uniforms?: object, capture?: boolean, resize?: [number, number]}>} */
     const frames = [
       { capture: true }, // 1 sample
       {},
