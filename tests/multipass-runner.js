@@ -41,7 +41,7 @@ export function composeModel(model, { hostBlock = '' } = {}) {
  * and iTime 0 unless its `uniforms` say otherwise. A frame with `capture: true` is read back:
  * the screen (RGBA8, rows top to bottom) and every buffer's last written texture (RGBA floats,
  * row 0 = bottom, as GL reads it).
- * @param {ReturnType<typeof composeModel>} passes
+ * @param {Array<{name: string, target: string, code: string, bindings: Array<{buffer: string, filter: string, wrap: string} | null>}>} passes
  * @param {{width: number, height: number, frames: Array<{uniforms?: object, capture?: boolean, resize?: [number, number]}>}} run
  * @returns {Promise<{error?: string, log?: string, pass?: string, captures?: Array<{frame: number, width: number, height: number, screen: string, buffers: Record<string, number[]>}>}>}
  */

@@ -6,8 +6,14 @@
 import fs from 'node:fs';
 import { afterAll, describe, expect, test } from 'vitest';
 import { parseControls } from '../src/shadertoy/controls.js';
-import { hostControlBlock } from '../src/shadertoy/header.js';
-import { MAX_SAMPLES, fingerprintInputs, progressiveJitter, progressiveTabs } from '../src/shadertoy/progressive.js';
+import { composeCommonShader, hostControlBlock } from '../src/shadertoy/header.js';
+import {
+  MAX_SAMPLES,
+  RAYTRACE_FIRST_BUFFER_LINE,
+  fingerprintInputs,
+  progressiveJitter,
+  progressiveTabs,
+} from '../src/shadertoy/progressive.js';
 import { imageError, formatImageError } from '../src/reference/error.js';
 import { renderReference } from '../src/reference/render.js';
 import { SHADER_FILE } from './harness/config.js';
@@ -20,11 +26,12 @@ const source = fs.readFileSync(SHADER_FILE, 'utf8');
 const tabs = progressiveTabs(source);
 
 describe('progressive tabs, built from raytrace.glsl', () => {
-  test('Common holds the file verbatim, its mainImage renamed by a macro', () => {
-    expect(tabs.common.startsWith('#define mainImage raytraceMainImage\n' + source)).toBe(true);
-    expect(tabs.common).toContain('#undef mainImage');
+  test('Buffer A holds the file verbatim, its mainImage renamed by a macro; Common reads no uniform', () => {
+    expect(tabs.bufferA.startsWith('#define mainImage raytraceMainImage\n' + source + '#undef mainImage\n')).toBe(true);
+    expect(tabs.bufferA.split('\n')[RAYTRACE_FIRST_BUFFER_LINE - 1]).toBe(source.split('\n')[0]);
     expect(tabs.bufferA).toMatch(/void mainImage\(out vec4 fragColor, in vec2 fragCoord\)/);
     expect(tabs.image).toMatch(/void mainImage\(out vec4 fragColor, in vec2 fragCoord\)/);
+    expect(tabs.common).not.toMatch(/\bi(Time|Resolution|Mouse|Frame|Channel\d)\b/);
   });
 
   test('the fingerprint hashes iResolution, iMouse, iTime and every component of every control', () => {
@@ -37,11 +44,11 @@ describe('progressive tabs, built from raytrace.glsl', () => {
     for (const c of controls) {
       const mine = inputs.filter((e) => new RegExp(`\\b${c.name}\\b`).test(e));
       expect(mine.length, `${c.name} (${c.type}) in the fingerprint`).toBe(size[c.type]);
-      for (const e of mine) expect(tabs.common, `${e} hashed in Common`).toContain(`h = progressiveMix(h, ${e});`);
+      for (const e of mine) expect(tabs.bufferA, `${e} hashed in Buffer A`).toContain(`h = progressiveMix(h, ${e});`);
     }
     // One source of truth: a control added to the block is in the fingerprint with no other edit.
     const added = source.replace('#endif', 'const vec2  NEW_KNOB = vec2(1.0); // ui: New knob | 0 .. 2\n#endif');
-    expect(progressiveTabs(added).common).toContain('h = progressiveMix(h, NEW_KNOB.y);');
+    expect(progressiveTabs(added).bufferA).toContain('h = progressiveMix(h, NEW_KNOB.y);');
   });
 
   test('the controls are the raytracer’s and the sample-count switch', () => {
@@ -120,6 +127,19 @@ describe('progressive raytracer on SwiftShader', () => {
       const result = await runPasses(passes, { width: 4, height: 4, frames: [{ capture: true }] });
       expect(result.error, `${result.error}\n${result.log ?? ''}`).toBeUndefined();
     }
+  });
+
+  test('its Common tab compiles on its own as the site checks it (raytrace.glsl there would not: it reads iTime)', async () => {
+    const alone = (code) =>
+      runPasses([{ name: 'Common', target: 'screen', code: composeCommonShader(code).code, bindings: [null, null, null, null] }], {
+        width: 1,
+        height: 1,
+        frames: [{}],
+      });
+    expect((await alone(tabs.common)).error).toBeUndefined();
+    const raytracer = await alone(source);
+    expect(raytracer.error).toMatch(/Common failed to compile/);
+    expect(raytracer.log).toMatch(/iTime/);
   });
 
   test(`${FRAMES} still frames converge to the float64 reference with ${FRAMES} samples of the same sequence; a camera change restarts from one`, async () => {

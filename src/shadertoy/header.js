@@ -231,3 +231,23 @@ export function locatePassLine(sections, line) {
   const section = sections.find((s) => line >= s.firstLine && line < s.firstLine + s.lineCount);
   return section ? { name: section.name, line: line - section.firstLine + 1 } : null;
 }
+
+/**
+ * The Common tab as the site also compiles it on its own, to report its errors: only iDate and
+ * iSampleRate are declared there (EffectPass.MakeHeader_Common), so a Common tab that reads any
+ * other uniform (iTime, iResolution, iMouse, iChannel0, ...) fails on the site even though every
+ * pass that includes it would compile.
+ * @param {string} common
+ * @returns {{code: string, firstSourceLine: number}}
+ */
+export function composeCommonShader(common) {
+  const before = [
+    ...SHADERTOY_HEADER.split('\n').slice(0, 4),
+    'uniform vec4 iDate;',
+    'uniform float iSampleRate;',
+    'out vec4 shadertoy_out_color;',
+    'void main(void) { shadertoy_out_color = vec4(0.0); }',
+    '',
+  ].join('\n');
+  return { code: before + common + (common.endsWith('\n') ? '' : '\n'), firstSourceLine: countNewlines(before) + 1 };
+}
