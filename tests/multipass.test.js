@@ -5,7 +5,7 @@
 // texture: keyboard.test.js.
 import { afterAll, describe, expect, test } from 'vitest';
 import { composeImageShader, composePassShader, countNewlines, locatePassLine } from '../src/shadertoy/header.js';
-import { frameSchedule, renderOrder, singlePass } from '../src/shadertoy/multipass.js';
+import { buffersNeedingMipmaps, frameSchedule, renderOrder, singlePass } from '../src/shadertoy/multipass.js';
 import { formatPassMessages, parsePassShaderLog } from '../src/shadertoy/pass-errors.js';
 import { userLineOffset } from '../src/shadertoy/shader-errors.js';
 import { disconnect } from './harness/page.js';
@@ -53,6 +53,12 @@ describe('render order and frame lag', () => {
     const step = frameSchedule(/** @type {any} */ (model)).find((s) => s.pass.name === name);
     expect(step.bindings[channel]).toMatchObject({ source: 'buffer', buffer, frame, resolution: 'canvas', samplerType: '2D' });
     expect(step.target).toBe(name === 'Image' ? 'screen' : name.slice(-1));
+  });
+  test('buffers read with the mipmap filter get their mipmaps regenerated', () => {
+    const m = structuredClone(model);
+    m.passes[0].channels[1].sampler.filter = 'mipmap';
+    expect([...buffersNeedingMipmaps(/** @type {any} */ (m))]).toEqual(['A']);
+    expect(buffersNeedingMipmaps(/** @type {any} */ (model)).size).toBe(0);
   });
   test('empty channels are nothing, with zero resolution; the keyboard is 256 x 3', () => {
     const m = singlePass(MAIN);

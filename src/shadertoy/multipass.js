@@ -5,7 +5,9 @@
 // How the site runs the passes (its own player, https://www.shadertoy.com/js/effect.js, read in
 // Effect.prototype.Paint, EffectPass.prototype.Paint and Effect.prototype.ResizeBuffer):
 // - every frame the buffer passes paint first, then the Image pass (the Common tab is not a pass:
-//   its text is prepended to every other pass's code, EffectPass.NewShader);
+//   its text is prepended to every other pass's code, EffectPass.NewShader; the site also
+//   compiles it alone with only iDate and iSampleRate declared, to report its errors:
+//   composeCommonShader in header.js);
 // - each buffer is two RGBA32F textures (TEXFMT.C4F32, created nearest/clamp) used in turn: a
 //   pass renders into the one it did not render last, then flips `mLastRenderDone`; every input
 //   reads `mTexture[mLastRenderDone]`. So a pass reading itself sees its previous frame, a pass
@@ -189,6 +191,20 @@ export function frameSchedule(model) {
       };
     }),
   }));
+}
+
+/**
+ * The buffers some pass reads with the "mipmap" filter: the renderer regenerates their mipmaps
+ * after they paint (Effect.Paint's `needMipMaps`). RGBA32F is filterable (linear, mipmap) only
+ * where the context offers OES_texture_float_linear.
+ * @param {MultipassShader} model
+ * @returns {Set<BufferName>}
+ */
+export function buffersNeedingMipmaps(model) {
+  const out = new Set();
+  for (const pass of model.passes)
+    for (const c of pass.channels) if (c?.kind === 'buffer' && c.sampler.filter === 'mipmap') out.add(c.buffer);
+  return out;
 }
 
 /**
