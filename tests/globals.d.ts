@@ -35,6 +35,10 @@ export interface RaytracerInfo {
   /** successful compiles so far */
   compiled: number;
   liveControls: 'constants' | 'uniforms';
+  /** the watchdog's verdict: a frame has gone HANG_AFTER_MS without finishing a band */
+  hung: boolean;
+  /** how far the frame being drawn has got (rows done, bands drawn); null when none is */
+  progress: { y: number; height: number; bands: number } | null;
   /** Only on a page that could not start (installFailedAutomation), which reports nothing else. */
   error?: string;
 }
@@ -70,6 +74,9 @@ export interface RaytracerHook {
   setMouse(mouse: number[]): void;
   /** The next frame the page draws by itself, and its iFrame. Asks for no frame. */
   nextFrame(): Promise<Base64Frame & { iFrame: number }>;
+  /** The render worker's WebGL context lost / restored through WEBGL_lose_context. */
+  loseContext(): void;
+  restoreContext(): void;
   /** The last frame drawn again off screen at that size (default: the canvas's). */
   capture(size?: { width: number; height: number } | null): Promise<Base64Frame>;
   /** An image into iChannel `index` (null: black again). */
@@ -119,7 +126,6 @@ declare global {
     /** Set by page-helpers.js's nextFrame(): the frame it waits for. */
     __nextFrame: ReturnType<RaytracerHook['nextFrame']>;
     /** Set by the lost-context test (tests/page-lifecycle.test.js). */
-    __loseContext: WEBGL_lose_context;
     /** Set by the file-watching tests (tests/page-lifecycle.test.js): still true if the page did not reload. */
     __sameDocument: boolean;
     /** Set by the pointer test (tests/page-shaders.test.js): the last pointer event's position. */

@@ -36,17 +36,13 @@ describe('errors', () => {
     await withPage(async ({ page, goto }) => {
       await goto(PATTERN);
       const before = await readPixels(page);
-      await page.evaluate(() => {
-        window.__loseContext = /** @type {HTMLCanvasElement} */ (document.getElementById('view'))
-          .getContext('webgl2')
-          .getExtension('WEBGL_lose_context');
-        window.__loseContext.loseContext();
-      });
+      // the context is the render worker's (WEBGL_lose_context there, through the hook)
+      await page.evaluate(() => window.raytracer.loseContext());
       await page.waitForFunction(
         () => window.raytracer.info().contextLost && !(/** @type {HTMLElement} */ (document.querySelector('[role="alert"]')).hidden),
       );
       expect(await overlayText(page)).toContain('GPU context was lost');
-      await page.evaluate(() => window.__loseContext.restoreContext());
+      await page.evaluate(() => window.raytracer.restoreContext());
       await page.waitForFunction(
         () => !window.raytracer.info().contextLost && /** @type {HTMLElement} */ (document.querySelector('[role="alert"]')).hidden,
       );
@@ -72,11 +68,20 @@ describe('errors', () => {
         expect(rejected).toMatch(/WebGL2/);
       },
       {
+        // The page draws in a worker: every worker it starts gets an OffscreenCanvas with no
+        // WebGL2 (a module wrapping the real one), as a browser without WebGL2 has.
         beforeLoad: (page) =>
           page.evaluateOnNewDocument(() => {
-            const getContext = HTMLCanvasElement.prototype.getContext;
-            HTMLCanvasElement.prototype.getContext = function (type, ...rest) {
-              return type === 'webgl2' ? null : getContext.call(this, type, ...rest);
+            const RealWorker = window.Worker;
+            window.Worker = class extends RealWorker {
+              constructor(url, options) {
+                const stub = [
+                  'const getContext = OffscreenCanvas.prototype.getContext;',
+                  "OffscreenCanvas.prototype.getContext = function (type, ...rest) { return type === 'webgl2' ? null : getContext.call(this, type, ...rest); };",
+                  `import ${JSON.stringify(new URL(url, location.href).href)};`,
+                ].join('\n');
+                super(URL.createObjectURL(new Blob([stub], { type: 'text/javascript' })), options);
+              }
             };
           }),
       },

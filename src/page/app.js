@@ -1,6 +1,10 @@
 // The page's state and frame loop: one shader source, its control values, the Shadertoy inputs,
-// the canvas size, and when to draw. While playing it draws every animation frame; while paused
-// it draws on demand (a control change, a resize, the mouse), once per request.
+// the canvas size, and when to draw. The drawing itself is done by the render worker
+// (render-client.js, render-worker.js): the app asks for one frame at a time, and asks for the
+// next only when that one is done, so frames never queue up behind a heavy one; while playing it
+// asks again at the next animation frame, while paused only on demand (a control change, a
+// resize, the mouse). A change made while a frame is being drawn reaches the worker at once and
+// applies from its next band.
 //
 // The app touches no part of the page but its canvas: what it has to tell (a change of state, a
 // compile's outcome, a lost context, each frame drawn) it emits as events (events.js), and the
@@ -9,7 +13,7 @@
 
 import { parseControls } from '../shadertoy/controls.js';
 import { hostControlBlock } from '../shadertoy/header.js';
-import { ShaderRenderer } from './renderer.js';
+import { RenderClient } from './render-client.js';
 import { ShadertoyInputs } from './shadertoy-inputs.js';
 import { CanvasSize, fitGpu } from './canvas-size.js';
 import { carriedOverValues, changedValues, readControlChanges } from './control-values.js';
@@ -19,25 +23,31 @@ import { loadImage } from './shader-loader.js';
 
 /** @typedef {import('../shadertoy/controls.js').Control} Control */
 /** @typedef {import('./events.js').AppEvents} AppEvents */
+/** @typedef {{source: string, name: string, origin: RaytracerApp['origin'], url: string | null}} ShaderVersion */
 
 /** @extends {Emitter<AppEvents>} */
 export class RaytracerApp extends Emitter {
   /**
+   * Use RaytracerApp.start (the render worker starts first).
    * @param {object} options
+   * @param {RenderClient} options.renderer a started render worker
    * @param {HTMLCanvasElement} options.canvas
    * @param {string} options.fileName the shader's name in error messages
    * @param {{width:number, height:number} | null} [options.size] fixed drawing-buffer size (device px)
    * @param {number} [options.scale] resolution scale of the device pixels (without a fixed size)
    * @param {number} [options.cap] cap on the drawing buffer's longer side (device px; 0: none)
    * @param {boolean} [options.playing]
-   * Throws WebGL2UnavailableError when there is no WebGL2.
    */
-  constructor({ canvas, fileName, size = null, scale = 1, cap = 0, playing = true }) {
+  constructor({ renderer, canvas, fileName, size = null, scale = 1, cap = 0, playing = true }) {
     super();
     this.canvas = canvas;
+    /** Shows the frames the worker draws. */
+    this.screen = /** @type {ImageBitmapRenderingContext} */ (canvas.getContext('bitmaprenderer'));
     /** The shader's name in messages and downloads. */
     this.fileName = fileName;
-    this.renderer = new ShaderRenderer(canvas);
+    this.renderer = renderer;
+    renderer.onPicture = (bitmap) => this._show(bitmap);
+    renderer.onHang = (seconds) => this.emit('hang', seconds);
     this.inputs = new ShadertoyInputs();
     this.inputs.playing = playing;
     this.inputs.attach(canvas);
@@ -72,6 +82,18 @@ export class RaytracerApp extends Emitter {
     this._raf = 0;
     /** @type {number | null} */
     this._lastFrameAt = null;
+    /** The frame the worker is drawing. @type {Promise<unknown> | null} */
+    this._drawing = null;
+    /** Something changed since the frame under way was asked for: another one is due. */
+    this._dirty = false;
+    /** Whether the next frame the page draws by itself is read back (the 'drawn' event's pixels). */
+    this.readBackNext = false;
+    /** The images in iChannel0..3, as loaded (a new worker gets them again). @type {Array<ImageBitmap | null>} */
+    this.channelImages = [null, null, null, null];
+    /** The shader on screen, once it has compiled. @type {ShaderVersion | null} */
+    this._running = null;
+    /** The last shader a frame was finished with (the watchdog goes back to it). @type {ShaderVersion | null} */
+    this.lastFinished = null;
 
     /** Resolves after the first frame is drawn; rejects if the first compile fails. @type {Promise<void>} */
     this.ready = new Promise((resolve, reject) => {
@@ -84,6 +106,15 @@ export class RaytracerApp extends Emitter {
 
     this.canvasSize.watch(() => this.requestRender());
     this._watchContext();
+  }
+
+  /**
+   * Starts the render worker, then the app. Rejects with WebGL2UnavailableError when there is no
+   * WebGL2.
+   * @param {Omit<ConstructorParameters<typeof RaytracerApp>[0], 'renderer'>} options
+   */
+  static async start(options) {
+    return new RaytracerApp({ ...options, renderer: await RenderClient.start() });
   }
 
   // ---- source and controls ---------------------------------------------------------------------
@@ -186,8 +217,11 @@ export class RaytracerApp extends Emitter {
     }
     const hostBlock = this.notice ? '' : hostControlBlock(this.controls, this.values, this.liveForm.asConstants ? this.values : null);
     const fileName = this.fileName;
+    /** @type {ShaderVersion} */
+    const version = { source: this.source, name: fileName, origin: this.origin, url: this.shaderUrl };
     const job = this.renderer.compile(this.source, hostBlock, fileName).then(
       () => {
+        this._running = version;
         if (job !== this._latestCompile) return;
         this.compileErrors = [];
         this.compiled++;
@@ -280,78 +314,126 @@ export class RaytracerApp extends Emitter {
   // ---- the GPU context -------------------------------------------------------------------------
 
   _watchContext() {
-    this.canvas.addEventListener('webglcontextlost', (event) => {
-      event.preventDefault(); // tells the browser we want it back (three.js does too)
-      this.emit('context', true);
-      this.emit('state');
-    });
-    this.canvas.addEventListener('webglcontextrestored', () => {
-      this.renderer.forgetCompiled();
-      // three.js has rebuilt its state; programs and textures are made again from our objects.
+    this.renderer.onContext = (lost) => {
+      if (lost) {
+        this.emit('context', true);
+        this.emit('state');
+        return;
+      }
+      // the worker's state went with the context: programs are compiled again from ours
+      this._resend();
       this.compile().catch(() => {}); // shown on the page
       this.emit('context', false); // after the compile started: the compiles asked for meanwhile end with it
       this.emit('state');
       this.requestRender();
-    });
+    };
+  }
+
+  /** Gives the worker the control uniforms and the channels again (a new worker, a new context). */
+  _resend() {
+    this.renderer.setControlUniforms(this.controls, this.values);
+    this.channelImages.forEach((image, i) => image && this.renderer.setChannel(i, image));
+  }
+
+  /**
+   * The watchdog's way out: stops the render worker (and the draw that would not end) and runs
+   * the last shader a frame was finished with, in a new one. On a real GPU that draws at once
+   * (the browser resets a GPU held too long); on SwiftShader the endless draw keeps the GPU
+   * process busy, and the new worker waits with it.
+   */
+  async goBack() {
+    const back = this.lastFinished;
+    await this.renderer.respawn();
+    this._drawing = null;
+    if (back) this.loadSource(back.source, back);
+    this._resend();
+    this.compile().catch(() => {});
+    this.requestRender();
   }
 
   // ---- drawing ---------------------------------------------------------------------------------
 
-  /** Draws at the next animation frame (once, however often it is asked). */
+  /** Draws at the next animation frame (once, however often it is asked, and never while a frame is under way). */
   requestRender() {
-    if (!this._raf) this._raf = requestAnimationFrame((now) => this._tick(now));
+    this._dirty = true;
+    if (!this._raf && !this._drawing) this._raf = requestAnimationFrame((now) => this._tick(now));
   }
 
   /** @param {number} now */
   _tick(now) {
     this._raf = 0;
-    const drawn = this.renderNow(now);
-    if (drawn && this.inputs.playing) {
-      // the clock when the frame was drawn, not `now` (when it was due): on a slow GPU the
-      // animation frames' timestamps run ahead of the drawing (frame-timer.js)
+    if (this._drawing || !(this._dirty || this.inputs.playing)) return;
+    const readBack = this.readBackNext;
+    this.readBackNext = false;
+    this.drawFrame(now, readBack).catch(() => {}); // a lost context: the page says so
+  }
+
+  /**
+   * Draws one frame (after the one under way, if any), and resolves once it is on the canvas:
+   * with its pixels (RGBA8, rows top to bottom) when `readBack`, null when no shader runs or the
+   * context is lost.
+   * @param {number} [now] timestamp in ms (performance.now() or a rAF time)
+   * @param {boolean} [readBack]
+   * @returns {Promise<{pixels: Uint8Array | null, width: number, height: number, frame: number} | null>}
+   */
+  async drawFrame(now = performance.now(), readBack = false) {
+    while (this._drawing) await this._drawing.catch(() => {});
+    if (this.renderer.contextLost || !this.renderer.hasProgram) return null;
+    const { width, height } = this.canvasSize.target();
+    this._dirty = false;
+    const inputs = this.inputs.beginFrame(width, height, now);
+    const running = this._running;
+    const drawing = this.renderer.drawFrame(inputs, readBack);
+    this._drawing = drawing;
+    let drawn;
+    try {
+      drawn = await drawing;
+    } finally {
+      if (this._drawing === drawing) this._drawing = null;
+    }
+    this.inputs.endFrame();
+    this.framesRendered++;
+    this.lastFinished = running;
+    if (this.inputs.playing) {
+      // the clock when the frame was drawn, not when it was due: on a slow GPU the animation
+      // frames' timestamps run ahead of the drawing (frame-timer.js)
       const drawnAt = performance.now();
       if (this._lastFrameAt !== null) this.emit('frame', drawnAt - this._lastFrameAt);
       this._lastFrameAt = drawnAt;
     } else {
       this._lastFrameAt = null;
     }
-    if (this.inputs.playing) this.requestRender();
+    const result = { pixels: drawn.pixels, width, height, frame: inputs.frame };
+    this.emit('drawn', result);
+    if (this.inputs.playing || this._dirty) this.requestRender();
+    return result;
   }
 
-  /**
-   * Draws one frame now (synchronously). Returns false when no shader has compiled yet or the
-   * context is lost.
-   * @param {number} now timestamp in ms (performance.now() or a rAF time)
-   */
-  renderNow(now = performance.now()) {
-    if (this.renderer.contextLost) return false;
-    const { width, height } = this.canvasSize.target();
-    this.renderer.setSize(width, height);
-    if (!this.renderer.hasProgram) return false;
-    this.inputs.beginFrame(this.renderer.uniforms, this.renderer.width, this.renderer.height, now);
-    this.renderer.render();
-    this.inputs.endFrame();
-    this.framesRendered++;
-    this.emit('drawn');
-    return true;
+  /** Puts a bitmap from the worker on the canvas (sized to it: the mouse maps through that size). */
+  _show(bitmap) {
+    if (this.canvas.width !== bitmap.width || this.canvas.height !== bitmap.height) {
+      this.canvas.width = bitmap.width;
+      this.canvas.height = bitmap.height;
+    }
+    this.screen.transferFromImageBitmap(bitmap);
   }
 
   // ---- output ----------------------------------------------------------------------------------
 
   /**
-   * The last drawn frame drawn again at width × height (default: the canvas size), with the same
+   * The last drawn frame drawn again at width × height (default: its own size), with the same
    * iTime, iFrame, iDate, and iMouse scaled to the new size. Rows top to bottom.
    * @param {{width: number, height: number} | null} [size]
-   * @returns {{width:number, height:number, data:Uint8Array}}
+   * @returns {Promise<{width:number, height:number, data:Uint8Array}>}
    */
-  capture(size = null) {
+  async capture(size = null) {
     if (!this.renderer.hasProgram || this.renderer.contextLost) throw new Error('nothing to capture: no shader is running');
-    if (!this.inputs.last) this.renderNow();
-    const last = this.inputs.last;
+    if (!this.inputs.last) await this.drawFrame();
+    const last = /** @type {import('./shadertoy-inputs.js').FrameInputs} */ (this.inputs.last);
     const wanted = size ?? { width: last.width, height: last.height };
     const rounded = { width: Math.max(1, Math.round(wanted.width)), height: Math.max(1, Math.round(wanted.height)) };
     const { width, height } = fitGpu(rounded, this.renderer.maxSize, 'screenshot size');
-    return { width, height, data: this.renderer.redraw(last, width, height) };
+    return { width, height, data: await this.renderer.redraw(last, width, height) };
   }
 
   /**
@@ -361,7 +443,9 @@ export class RaytracerApp extends Emitter {
    */
   async setChannel(index, source) {
     if (!(index >= 0 && index <= 3)) throw new Error(`no channel ${index}: iChannel0..3`);
-    this.renderer.setChannel(index, source === null ? null : await loadImage(source));
+    const image = source === null ? null : await loadImage(source);
+    await this.renderer.setChannel(index, image);
+    this.channelImages[index] = image;
     this.channelUrls[index] = typeof source === 'string' ? source : null;
     this.emit('state');
     this.requestRender();

@@ -2,19 +2,22 @@
 //
 //   ready                 Promise: resolves after the first frame has been drawn; rejects with
 //                         the error when WebGL2 is missing or the first compile fails.
-//   readPixels()          Promise<{width, height, data}>: draws one frame and reads it back in
-//                         the same task (no preserveDrawingBuffer needed). `data` is base64 of
-//                         RGBA8 pixels, rows top to bottom.
-//   renderFrames(n)       Promise<{median, times}>: draws n frames back to back, each followed by
-//                         a 1-pixel gl.readPixels so the GPU has finished; `times` are the n
-//                         per-frame times in ms, `median` their median.
+//   readPixels()          Promise<{width, height, data}>: draws one frame and reads it back (the
+//                         render worker keeps each frame in a render target). `data` is base64
+//                         of RGBA8 pixels, rows top to bottom, alpha 255 (as the canvas shows).
+//   renderFrames(n)       Promise<{median, times}>: the render worker draws n whole frames back
+//                         to back, each a single draw followed by a 1-pixel readPixels so the
+//                         GPU has finished; `times` are the n per-frame times in ms, `median`
+//                         their median.
 //   setControls({NAME: value})   Promise: sets shader controls (as the URL does: coerced into
 //                         range, unknown names warned about); resolves once compiled.
 //   setSource(glsl)       Promise<{ok, error?}>: compiles another Image-tab source.
 //   play(), pause(), togglePlay(), restart(), setTime(seconds), setSpeed(s), setMouse([x, y, z, w])
 //   nextFrame()           Promise<{width, height, data, iFrame}>: the next frame the page draws by
-//                         itself (after a click, a key, a play tick), read in the same task; rows
-//                         top to bottom. Asks for no frame.
+//                         itself (after a click, a key, a play tick), read back; rows top to
+//                         bottom. Asks for no frame.
+//   loseContext(), restoreContext()   the render worker's context lost or restored through
+//                         WEBGL_lose_context (the tests of a lost context).
 //   capture({width, height}?)  Promise<{width, height, data}>: the last frame drawn again off
 //                         screen at that size (default: the canvas's), as the Screenshot button
 //                         saves it.
@@ -34,13 +37,15 @@
 //                         controls: {NAME: value}, fileName, shaderUrl, origin, contextLost,
 //                         compiled (successful compiles so far), liveControls ('constants' while
 //                         the shader on screen has the live controls compiled in, 'uniforms'
-//                         while they move: see live-controls.js)}
+//                         while they move: see live-controls.js), hung (the watchdog's verdict:
+//                         a frame has gone HANG_AFTER_MS without progress), progress ({y,
+//                         height, bands}: how far the frame being drawn has got; null if none)}
 //
 // Every method waits for `ready` and for any compile under way, so a call right after
 // setControls() sees the new values.
 
 import { fetchShader, shaderName } from './shader-loader.js';
-import { flipRows, toBase64 } from './pixels.js';
+import { toBase64 } from './pixels.js';
 import { median } from './stats.js';
 
 /** The window, with the hook. @type {Window & {raytracer?: object}} */
@@ -53,10 +58,12 @@ const hooked = window;
 export function installAutomation(app, ready, ui) {
   // the first source may still be on its way (?shader= is fetched): calls wait for it
   const loaded = () => (app.loading ?? Promise.resolve()).catch(() => {});
+  // A first compile that failed rejects `ready` for good; once another shader has compiled,
+  // that old error no longer stands in the way.
   const settled = async () => {
     await loaded();
-    await ready;
     await app.whenCompiled();
+    if (!app.renderer.hasProgram) await ready;
   };
 
   hooked.raytracer = {
@@ -64,21 +71,16 @@ export function installAutomation(app, ready, ui) {
 
     async readPixels() {
       await settled();
-      app.renderNow();
-      const { width, height } = app.renderer;
-      const pixels = app.renderer.readPixels();
-      return { width, height, data: toBase64(flipRows(pixels, width, height)) };
+      const drawn = await app.drawFrame(performance.now(), true);
+      if (!drawn?.pixels) throw new Error(app.renderer.contextLost ? 'the GPU context is lost' : 'no shader is running');
+      return { width: drawn.width, height: drawn.height, data: toBase64(drawn.pixels) };
     },
 
     async renderFrames(n = 1) {
       await settled();
-      const times = [];
-      for (let i = 0; i < n; i++) {
-        const start = performance.now();
-        app.renderNow();
-        app.renderer.readPixels(0, 0, 1, 1);
-        times.push(performance.now() - start);
-      }
+      await app.drawFrame(); // sizes the worker's frame, as the page draws it
+      const last = app.inputs.last;
+      const times = await app.renderer.bench(last, n);
       return { median: median(times), times };
     },
 
@@ -109,22 +111,20 @@ export function installAutomation(app, ready, ui) {
 
     // read in the same task as the frame was drawn (no preserveDrawingBuffer)
     async nextFrame() {
-      const { width, height, pixels, iFrame } = await new Promise((resolve) =>
-        app.once('drawn', () =>
-          resolve({
-            width: app.renderer.width,
-            height: app.renderer.height,
-            pixels: app.renderer.readPixels(),
-            iFrame: app.inputs.last.frame,
-          }),
-        ),
-      );
-      return { width, height, iFrame, data: toBase64(flipRows(pixels, width, height)) };
+      app.readBackNext = true;
+      const drawn = await new Promise((resolve) => {
+        const wait = (_, frame) => (frame.pixels ? resolve(frame) : app.once('drawn', wait));
+        app.once('drawn', wait);
+      });
+      return { width: drawn.width, height: drawn.height, iFrame: drawn.frame, data: toBase64(drawn.pixels) };
     },
+
+    loseContext: () => app.renderer.simulateContextLoss(true),
+    restoreContext: () => app.renderer.simulateContextLoss(false),
 
     async capture(size = null) {
       await settled();
-      const { width, height, data } = app.capture(size);
+      const { width, height, data } = await app.capture(size);
       return { width, height, data: toBase64(data) };
     },
 
@@ -171,6 +171,8 @@ export function installAutomation(app, ready, ui) {
         contextLost: app.renderer.contextLost,
         compiled: app.compiled,
         liveControls: app.liveForm.asConstants ? 'constants' : 'uniforms',
+        hung: app.renderer.hung,
+        progress: app.renderer.progress,
       };
     },
   };
@@ -188,6 +190,8 @@ export function installFailedAutomation(error) {
     setControls: fail,
     setSource: fail,
     nextFrame: fail,
+    loseContext() {},
+    restoreContext() {},
     capture: fail,
     setChannel: fail,
     loadShader: fail,

@@ -7,11 +7,14 @@
  * @typedef {object} AppEvents
  * @property {[]} state the play state, time, speed, size settings, controls or channels changed
  * @property {[ms: number]} frame a frame was drawn while playing, `ms` after the one before
- * @property {[]} drawn a frame was drawn, just now (its pixels can still be read)
+ * @property {[frame: {pixels: Uint8Array | null, width: number, height: number, frame: number}]} drawn a frame
+ *   was drawn and shown (`pixels`, rows top to bottom, when it was asked for with readBackNext)
  * @property {[error: (Error & {report?: string, messages?: Array<{severity: string, line: number | null, message: string}>}) | null, fileName: string]} compile the latest compile ended: null on
  *   success, else its error (app.renderer.hasProgram tells whether an older shader still runs)
  * @property {[]} source a new source was loaded (its controls read)
  * @property {[lost: boolean]} context the GPU context was lost (true) or restored (false)
+ * @property {[seconds: number | null]} hang a frame has gone that long without finishing a band
+ *   (render-client.js's watchdog); null when drawing goes on again
  */
 
 /**

@@ -71,7 +71,41 @@ function showAppOnPage(app, overlay) {
     }
   });
   app.on('drawn', () => (app.canvas.dataset.frame = String(app.framesRendered)));
+  showWatchdog(app, overlay);
   return (notice) => (pending = notice);
+}
+
+/**
+ * The watchdog's message (render-client.js): a frame that has gone seconds without progress may
+ * never finish. It offers to go back to the last shader that finished a frame; it goes away by
+ * itself when the drawing goes on. data-hung="true" on <html> while it shows.
+ * @param {RaytracerApp} app
+ * @param {Overlay} overlay
+ */
+function showWatchdog(app, overlay) {
+  const root = document.documentElement.dataset;
+  app.on('hang', (_, seconds) => {
+    if (seconds === null) {
+      if (root.hung) overlay.hide();
+      delete root.hung;
+      return;
+    }
+    const first = !root.hung;
+    root.hung = 'true';
+    if (!first) return; // the message stays as it is; the seconds are in its text from the start
+    const back = app.lastFinished;
+    const detail = [
+      `${app.fileName} has been drawing one frame for ${Math.round(seconds)} s without finishing a band of it: it may never finish (an endless loop, or far too much work per pixel).`,
+      'On a real GPU the browser resets the GPU after several seconds of this, and the page comes back with the last shader that finished a frame. SwiftShader (the CPU renderer) has no such reset: the draw goes on until the browser is closed.',
+      back ? `Going back runs ${back.name} again; the text that hung stays in the editor's undo history (Ctrl+Z).` : '',
+    ]
+      .filter(Boolean)
+      .join('\n');
+    const actions = back
+      ? [{ label: `Go back to ${back.name}`, run: () => app.goBack().catch((error) => console.warn(error.message)) }]
+      : [];
+    overlay.showActions(`${app.fileName} may never finish`, detail, actions);
+  });
 }
 
 /**
@@ -126,15 +160,16 @@ function restoreKeptWork(app, ui, shader, { source, from }) {
   });
 }
 
-function start() {
+async function start() {
   const canvas = /** @type {HTMLCanvasElement} */ (document.getElementById('view'));
   const overlay = new Overlay(document.getElementById('overlay'));
   const params = parseUrlParams(location.search, location.href);
   for (const warning of params.warnings) console.warn(warning);
 
+  const first = initialSource(params); // fetched while the render worker starts
   let app;
   try {
-    app = new RaytracerApp({
+    app = await RaytracerApp.start({
       canvas,
       fileName: params.shader ? shaderName(params.shader) : BUILTIN_NAME,
       size: params.size ?? null,
@@ -164,7 +199,7 @@ function start() {
     });
   });
 
-  app.loading = initialSource(params).then(({ source, from, notice }) => {
+  app.loading = first.then(({ source, from, notice }) => {
     if (notice) noticeAfterCompile(notice);
     app.loadSource(source, from);
     restoreKeptWork(app, ui, params.shader, { source, from });
@@ -175,7 +210,9 @@ function start() {
   return app;
 }
 
-const app = start();
+/** @type {RaytracerApp | null} */
+let app = null;
+start().then((started) => (app = started));
 
 // Under `npm run dev`, editing a shader recompiles it in place (errors go to the overlay): the
 // built-in one through its `?raw` import, a ?shader= file through the dev server's

@@ -25,6 +25,25 @@ export class Overlay {
   }
 
   /**
+   * A message with buttons under it.
+   * @param {string} title
+   * @param {string} detail
+   * @param {Array<{label: string, run: () => void}>} actions
+   */
+  showActions(title, detail, actions) {
+    this.show(title, detail);
+    const row = document.createElement('p');
+    for (const { label, run } of actions) {
+      const button = document.createElement('button');
+      button.type = 'button';
+      button.textContent = label;
+      button.addEventListener('click', run);
+      row.append(button);
+    }
+    this.element.append(row);
+  }
+
+  /**
    * Compile errors: one entry a message; a message at a line of the file is a button that calls
    * `this.onLine(line)` (the page opens the editor there).
    * @param {string} title

@@ -216,7 +216,7 @@ export class Recorder {
         for (let i = 0; i < settings.frames; i++) {
           if (abort.signal.aborted) throw new RecordingCancelled();
           if (app.renderer.contextLost) throw new Error('the GPU context was lost while recording');
-          const rgba = opaque(app.renderer.redraw(frame(i), settings.width, settings.height));
+          const rgba = opaque(await app.renderer.redraw(frame(i), settings.width, settings.height));
           await writer.add(rgba, i);
           onProgress(i + 1, settings.frames);
           await nextTask();

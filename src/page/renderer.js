@@ -1,31 +1,18 @@
 // Draws a Shadertoy Image pass: one fullscreen triangle with a RawShaderMaterial on a three.js
-// WebGLRenderer (WebGL2). Compiling is done off to the side, so a shader that fails to compile
-// never replaces the last one that worked.
+// WebGLRenderer (WebGL2), inside the render worker (render-worker.js) on an OffscreenCanvas of
+// its own. Compiling is done off to the side, so a shader that fails to compile never replaces
+// the last one that worked.
+//
+// Frames are drawn into a render target that keeps them (the frame target), in bands of rows
+// (drawRows: one scissored draw each, so a heavy frame is many short draws), and copied to the
+// canvas only to be shown (present: the canvas's drawing buffer is handed to the page as an
+// ImageBitmap, which leaves the canvas blank).
 
 import { GpuTimer } from './frame-timer.js';
 import * as THREE from 'three';
 import { FIRST_FRAME_UNIFORMS, SHADERTOY_UNIFORMS, composeImageShader } from '../shadertoy/header.js';
 import { formatShaderMessages, parseShaderLog, userLineOffset } from '../shadertoy/shader-errors.js';
-import { flipRows } from './pixels.js';
-import { writeUniforms } from './shadertoy-inputs.js';
-
-export class WebGL2UnavailableError extends Error {
-  constructor() {
-    super(
-      'This browser or GPU provides no WebGL2 context, which the raytracer needs. Try a current Chrome, Firefox or Safari with hardware acceleration switched on.',
-    );
-    this.name = 'WebGL2UnavailableError';
-  }
-}
-
-export class ShaderCompileError extends Error {
-  constructor(report, messages) {
-    super(`Shader failed to compile:\n${report}`);
-    this.name = 'ShaderCompileError';
-    this.report = report;
-    this.messages = messages;
-  }
-}
+import { ShaderCompileError, WebGL2UnavailableError } from './renderer-errors.js';
 
 /** Compiled materials kept for switching back without a compile: a uniform form, a constant form, and one spare. */
 const MATERIALS_KEPT = 3;
@@ -34,6 +21,16 @@ const VERTEX_SHADER = `
 in vec3 position;
 void main() {
     gl_Position = vec4(position.xy, 0.0, 1.0);
+}
+`;
+
+/** Copies the frame target to the canvas pixel for pixel (texelFetch: no filtering, no flip). */
+const COPY_SHADER = `
+precision highp float;
+uniform highp sampler2D frame;
+out vec4 color;
+void main() {
+    color = texelFetch(frame, ivec2(gl_FragCoord.xy), 0);
 }
 `;
 
@@ -78,7 +75,7 @@ function shadertoyUniforms() {
 }
 
 export class ShaderRenderer {
-  /** @param {HTMLCanvasElement} canvas */
+  /** @param {OffscreenCanvas} canvas the worker's own canvas */
   constructor(canvas) {
     /** @type {WebGLContextAttributes} */
     const attributes = {
@@ -115,6 +112,23 @@ export class ShaderRenderer {
     this.stagingMesh = new THREE.Mesh(geometry, null);
     this.stagingMesh.frustumCulled = false;
     this.stagingScene.add(this.stagingMesh);
+
+    /** Where frames are drawn and kept (RGBA8, as the page's canvas): the page shows copies of it. */
+    this.frameTarget = this._target(1, 1);
+    this.copyScene = new THREE.Scene();
+    const copy = new THREE.Mesh(
+      geometry,
+      new THREE.RawShaderMaterial({
+        glslVersion: THREE.GLSL3,
+        vertexShader: VERTEX_SHADER,
+        fragmentShader: COPY_SHADER,
+        uniforms: { frame: { value: this.frameTarget.texture } },
+        depthTest: false,
+        depthWrite: false,
+      }),
+    );
+    copy.frustumCulled = false;
+    this.copyScene.add(copy);
 
     this._black = this.uniforms.iChannel0.value;
     this._channels = [null, null, null, null]; // textures loaded into iChannel0..3
@@ -261,17 +275,20 @@ export class ShaderRenderer {
 
   /**
    * Puts an image into iChannel0..3 (null: back to the 1×1 black texture). Sampled as Shadertoy
-   * samples an image by default: mipmapped, repeating, rows flipped so that uv (0,0) is the
-   * image's bottom-left corner, no colour-space conversion.
+   * samples an image by default: mipmapped, repeating, uv (0,0) at the image's bottom-left
+   * corner, no colour-space conversion. WebGL ignores its flip and premultiply flags for an
+   * ImageBitmap, so the page decodes the bitmap with its rows already flipped and alpha not
+   * premultiplied (shader-loader.js).
    * @param {number} index 0..3
-   * @param {HTMLImageElement|HTMLCanvasElement|ImageBitmap|null} image
+   * @param {ImageBitmap|null} image
    */
   setChannel(index, image) {
     this._channels[index]?.dispose();
     let texture = null;
     if (image) {
       texture = new THREE.Texture(image);
-      texture.flipY = true;
+      texture.flipY = false;
+      texture.premultiplyAlpha = false;
       texture.wrapS = THREE.RepeatWrapping;
       texture.wrapT = THREE.RepeatWrapping;
       texture.minFilter = THREE.LinearMipmapLinearFilter;
@@ -283,83 +300,77 @@ export class ShaderRenderer {
     this._channels[index] = texture;
     this.uniforms[`iChannel${index}`].value = texture ?? this._black;
     const resolution = this.uniforms.iChannelResolution.value;
-    const width = image ? ('naturalWidth' in image ? image.naturalWidth : image.width) : 0;
-    const height = image ? ('naturalHeight' in image ? image.naturalHeight : image.height) : 0;
-    resolution.splice(index * 3, 3, width, height, image ? 1 : 0);
+    resolution.splice(index * 3, 3, image?.width ?? 0, image?.height ?? 0, image ? 1 : 0);
   }
 
-  /** [width, height] of the image in each channel (0, 0 when empty). */
-  /** Whether iChannel `index` holds an image (not the black default). @param {number} index */
-  channelInUse(index) {
-    return Boolean(this._channels[index]);
+  /** @param {number} width @param {number} height */
+  _target(width, height) {
+    return new THREE.WebGLRenderTarget(width, height, { depthBuffer: false, stencilBuffer: false, generateMipmaps: false });
   }
 
-  channelSizes() {
-    const r = this.uniforms.iChannelResolution.value;
-    return [0, 1, 2, 3].map((i) => [r[i * 3], r[i * 3 + 1]]);
+  /** A render target of its own, for drawing a frame at another size (a screenshot, a recording). */
+  makeTarget(width, height) {
+    return this._target(width, height);
   }
 
-  /**
-   * Draws the current shader into an off-screen width × height target and reads it back
-   * (RGBA8, rows bottom to top). The caller writes the uniforms for that size first.
-   */
-  renderOffscreen(width, height) {
-    const target = new THREE.WebGLRenderTarget(width, height, { depthBuffer: false, stencilBuffer: false, generateMipmaps: false });
-    try {
-      this.three.setRenderTarget(target);
-      this.three.render(this.scene, this.camera);
-      const pixels = new Uint8Array(width * height * 4);
-      this.three.readRenderTargetPixels(target, 0, 0, width, height, pixels);
-      return pixels;
-    } finally {
-      this.three.setRenderTarget(null);
-      target.dispose();
-    }
-  }
-
-  /**
-   * A drawn frame drawn again off screen at width × height: its uniforms written for that size
-   * (iMouse scaled with it), and put back after.
-   * @param {import('./shadertoy-inputs.js').FrameInputs} frame
-   * @param {number} width
-   * @param {number} height
-   * @returns {Uint8Array} RGBA8, rows top to bottom
-   */
-  redraw(frame, width, height) {
-    writeUniforms(this.uniforms, frame, { width, height });
-    try {
-      return flipRows(this.renderOffscreen(width, height), width, height);
-    } finally {
-      writeUniforms(this.uniforms, frame);
-    }
-  }
-
-  /** Sizes the drawing buffer in device pixels (the CSS size is the page's business). */
+  /** Sizes the frame target and the canvas, in device pixels; what is in the target is lost on a change. */
   setSize(width, height) {
-    if (this.canvas.width !== width || this.canvas.height !== height) this.three.setSize(width, height, false);
+    if (this.frameTarget.width === width && this.frameTarget.height === height) return;
+    this.frameTarget.setSize(width, height);
+    this.three.setSize(width, height, false);
   }
 
   get width() {
-    return this.gl.drawingBufferWidth;
+    return this.frameTarget.width;
   }
 
   get height() {
-    return this.gl.drawingBufferHeight;
+    return this.frameTarget.height;
   }
 
-  /** Draws the current shader; false if none has compiled yet. */
-  render() {
+  /**
+   * Draws rows [y0, y1) of the current shader into `target` (default: the frame target): one
+   * draw, scissored to those rows. The caller writes the uniforms first.
+   * @param {number} y0 first row, from the bottom
+   * @param {number} y1 one past the last row
+   * @param {THREE.WebGLRenderTarget} [target]
+   */
+  drawRows(y0, y1, target = this.frameTarget) {
     if (!this.hasProgram) return false;
-    this.gpuTimer.begin();
-    this.three.render(this.scene, this.camera);
-    this.gpuTimer.end();
+    target.scissor.set(0, y0, target.width, y1 - y0);
+    target.scissorTest = y0 > 0 || y1 < target.height;
+    this.three.setRenderTarget(target);
+    try {
+      this.three.render(this.scene, this.camera);
+    } finally {
+      this.three.setRenderTarget(null);
+    }
     return true;
   }
 
-  /** Reads the drawing buffer (call in the same task as render()). Rows are bottom-to-top. */
-  readPixels(x = 0, y = 0, width = this.width, height = this.height) {
+  /** Draws the whole frame at once (the benchmark's way: one draw, nothing else). */
+  render() {
+    return this.drawRows(0, this.height);
+  }
+
+  /**
+   * The frame target as the page shows it: copied to the canvas, whose drawing buffer is handed
+   * over as an ImageBitmap (the canvas starts blank after).
+   * @returns {ImageBitmap}
+   */
+  present() {
+    this.three.setRenderTarget(null);
+    this.three.render(this.copyScene, this.camera);
+    return /** @type {OffscreenCanvas} */ (this.canvas).transferToImageBitmap();
+  }
+
+  /**
+   * Reads a render target (default: the frame target): RGBA8, rows bottom to top. It waits for
+   * the GPU: call it once the draws are done (render-worker.js polls a fence first).
+   */
+  readTarget(target = this.frameTarget, x = 0, y = 0, width = target.width, height = target.height) {
     const pixels = new Uint8Array(width * height * 4);
-    this.gl.readPixels(x, y, width, height, this.gl.RGBA, this.gl.UNSIGNED_BYTE, pixels);
+    this.three.readRenderTargetPixels(target, x, y, width, height, pixels);
     return pixels;
   }
 

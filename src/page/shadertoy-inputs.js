@@ -131,14 +131,15 @@ export class ShadertoyInputs {
   }
 
   /**
-   * Advances the clock to `now` (ms, performance.now()) and writes every Shadertoy uniform for a
-   * drawing buffer of width × height. Call endFrame() after drawing.
-   * @param {Record<string, {value: any}>} uniforms
+   * Advances the clock to `now` (ms, performance.now()) and returns the inputs of a frame of
+   * width × height (the render worker writes them into the uniforms: writeUniforms). Call
+   * endFrame() once it is drawn.
    * @param {number} width
    * @param {number} height
    * @param {number} now
+   * @returns {FrameInputs}
    */
-  beginFrame(uniforms, width, height, now) {
+  beginFrame(width, height, now) {
     if (this.playing) {
       if (this._lastNow !== null) {
         const real = Math.max(0, (now - this._lastNow) / 1000);
@@ -167,7 +168,7 @@ export class ShadertoyInputs {
       mouse: this.mouse(),
       date: [date.getFullYear(), date.getMonth(), date.getDate(), (date.getTime() - midnight.getTime()) / 1000],
     };
-    writeUniforms(uniforms, this.last);
+    return this.last;
   }
 
   endFrame() {

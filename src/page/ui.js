@@ -114,7 +114,7 @@ export function installUi(app) {
     /** A PNG of the current frame, at the size chosen in the panel (canvas size by default). */
     async screenshot(size = null) {
       try {
-        const image = app.capture(size ?? panel.screenshotSize(app.renderer.width, app.renderer.height));
+        const image = await app.capture(size ?? panel.screenshotSize(app.renderer.width, app.renderer.height));
         const name = `${stem(app.fileName)}-t${app.inputs.last.time.toFixed(2)}-${image.width}x${image.height}.png`;
         saveBlob(await pngBlob(image), name);
         toast(`Saved ${name}`);
