@@ -142,7 +142,7 @@ describe('images and shaders of another origin are refused up front', () => {
       await withPage(async ({ page, goto }) => {
         await goto(`?shader=${base}/channel.glsl&${SIZE}&iChannel0=${base}/top-red.png`);
         await page.waitForFunction(
-          () => window.raytracer.info().fileName && document.querySelector('.lil-gui')?.textContent.includes('(1×2)'),
+          () => window.raytracer.info().fileName === 'channel.glsl' && document.querySelector('.lil-gui')?.textContent.includes('(1×2)'),
         );
         const frame = await readPixels(page);
         expect(pixel(frame, 10, 5)).toEqual(TOP.slice(0, 3)); // top of the canvas: the image's top

@@ -1,11 +1,12 @@
 // Opening the page and rendering views, in the test workers (one at a time: fileParallelism is
 // off). Every test file that renders connects to the browser setup.js started, opens pages with
-// the deterministic injection, and calls `disconnect` from its afterAll.
+// the deterministic injection, and calls `disconnect` from its afterAll. Every wait on a page
+// has its own timeout and fails at once on a crash, saying what the page was doing (watch.js).
 
 import fs from 'node:fs';
 import puppeteer from 'puppeteer-core';
 import { fromBase64 } from '../../src/page/pixels.js';
-import { PAGE_TIMEOUT_MS } from './config.js';
+import { CLOSE_TIMEOUT_MS, SCRIPT_WAIT_TIMEOUT_MS, WAIT_TIMEOUT_MS, closeBrowser, watchPage, withTimeout } from './watch.js';
 import { PAGE_PARAMS, viewQuery, viewSize } from '../views.js';
 
 const INJECTION_SOURCE = fs.readFileSync(new URL('./deterministic-injection.js', import.meta.url), 'utf8');
@@ -31,15 +32,35 @@ export async function harnessContext() {
   return context;
 }
 
+/**
+ * The browser this worker talks to: the run's own (setup.js), or, once that one is gone (it
+ * crashed), one launched here for the rest of this test file, so that the next test still gets
+ * a fresh page.
+ * @returns {Promise<{browser: import('puppeteer-core').Browser, context: any, own: boolean}>}
+ */
 async function connect() {
-  if (!connection) {
-    connection = (async () => {
-      const context = await harnessContext();
-      const browser = await puppeteer.connect({ browserWSEndpoint: context.wsEndpoint, defaultViewport: null });
-      return { browser, context };
-    })();
+  if (connection) {
+    const current = await connection.catch(() => null);
+    if (current?.browser.connected) return current;
+    connection = undefined;
   }
-  return connection;
+  const pending = (async () => {
+    const context = await harnessContext();
+    try {
+      const browser = await withTimeout(
+        `connecting to Chromium at ${context.wsEndpoint}`,
+        puppeteer.connect({ browserWSEndpoint: context.wsEndpoint, defaultViewport: null }),
+        WAIT_TIMEOUT_MS,
+      );
+      return { browser, context, own: false };
+    } catch (error) {
+      const { launchBrowser } = await import('./setup.js');
+      console.warn(`The test run's Chromium is gone (${error.message}); launching another for the rest of this test file.`);
+      return { browser: await launchBrowser(), context, own: true };
+    }
+  })();
+  connection = pending;
+  return pending;
 }
 
 /** Call from afterAll in every test file that renders. */
@@ -47,27 +68,32 @@ export async function disconnect() {
   if (!connection) return;
   const pending = connection;
   connection = undefined;
-  const { browser } = await pending.catch(() => ({}));
-  if (browser?.connected) await browser.disconnect();
+  const { browser, own } = await pending.catch(() => ({ browser: undefined, own: false }));
+  if (own) await closeBrowser(browser);
+  else if (browser?.connected) await withTimeout('disconnecting from Chromium', browser.disconnect(), CLOSE_TIMEOUT_MS).catch(() => {});
 }
 
 /**
  * A fresh page with the deterministic injection (unless `deterministic: false`), collecting
- * console errors and page errors.
+ * console errors and page errors. Every wait on it (evaluate, waitForFunction, goto, ...) ends
+ * within `waitTimeoutMs` (WAIT_TIMEOUT_MS in tests, SCRIPT_WAIT_TIMEOUT_MS in scripts), and at
+ * once when the page or the browser crashes, with what the page was doing in the message; its
+ * close() gives up after a while (watch.js).
+ * @param {{deterministic?: boolean, waitTimeoutMs?: number}} [options]
  * @returns {Promise<{page: import('puppeteer-core').Page, errors: string[], context: object}>}
  */
-export async function openPage({ deterministic = true } = {}) {
+export async function openPage({ deterministic = true, waitTimeoutMs = scriptContext ? SCRIPT_WAIT_TIMEOUT_MS : WAIT_TIMEOUT_MS } = {}) {
   const { browser, context } = await connect();
-  const page = await browser.newPage();
+  const page = await withTimeout('opening a page', browser.newPage(), waitTimeoutMs);
+  watchPage(page, browser, { waitTimeoutMs });
   const errors = [];
   page.on('console', (message) => {
     if (message.type() !== 'error') return;
     const { url, lineNumber } = message.location() ?? {};
     errors.push(`console.error: ${message.text()}${url ? ` (${url}${lineNumber !== undefined ? `:${lineNumber + 1}` : ''})` : ''}`);
   });
-  page.on('pageerror', (error) => errors.push(`page error: ${error?.message ?? error}`));
+  page.on('pageerror', (error) => errors.push(`page error: ${/** @type {Error} */ (error)?.message ?? error}`));
   page.on('error', (error) => errors.push(`page crashed: ${error?.message ?? error}`));
-  page.setDefaultTimeout(PAGE_TIMEOUT_MS);
   await page.setViewport({ width: 800, height: 600, deviceScaleFactor: 1 });
   // Every page loads fresh from the server: no 304s, nothing left over from an earlier test.
   await page.setCacheEnabled(false);
@@ -123,8 +149,8 @@ async function renderViewOnce(view) {
     if (!response || (!response.ok() && response.status() !== 304)) throw fail(`the page answered HTTP ${response?.status()}`);
     await page
       .waitForFunction(() => window.raytracer || document.documentElement.dataset.error, { polling: 100 })
-      .catch(() => {
-        throw fail('window.raytracer never appeared');
+      .catch((error) => {
+        throw fail(`window.raytracer never appeared (${error.message})`);
       });
     const result = await page
       .evaluate(async () => {

@@ -13,10 +13,11 @@ import os from 'node:os';
 import path from 'node:path';
 import net from 'node:net';
 import puppeteer from 'puppeteer-core';
-import { ENVIRONMENT_FILE, GOLDEN_DIR, PAGE_TIMEOUT_MS, REPO_ROOT, UPDATING } from './config.js';
+import { ENVIRONMENT_FILE, GOLDEN_DIR, REPO_ROOT, UPDATING } from './config.js';
 import { findChrome } from './chrome-path.js';
 import { disconnect, useHarness } from './page.js';
 import { harnessRoutes } from './routes.js';
+import { CLOSE_TIMEOUT_MS, WAIT_TIMEOUT_MS, closeBrowser, watchPage, withTimeout } from './watch.js';
 
 export const CHROME_ARGS = [
   '--no-sandbox',
@@ -133,15 +134,17 @@ async function probeWebGL(browser) {
  * page mid-test. Best effort: a page that fails here fails, with a message, in the tests.
  */
 async function warmUp(browser, baseUrl) {
-  const page = await browser.newPage();
+  const page = await withTimeout('opening a page', browser.newPage(), WAIT_TIMEOUT_MS);
+  watchPage(page, browser); // each wait below ends (a `ready` that never settles hung the run here)
   try {
-    await page.goto(`${baseUrl}/?size=32x18&time=0`, { waitUntil: 'load', timeout: PAGE_TIMEOUT_MS });
-    await page.waitForFunction(() => window.raytracer || document.documentElement.dataset.error, { timeout: PAGE_TIMEOUT_MS });
+    await page.goto(`${baseUrl}/?size=32x18&time=0`, { waitUntil: 'load' });
+    await page.waitForFunction(() => window.raytracer || document.documentElement.dataset.error);
     await page.evaluate(() => window.raytracer?.ready.catch(() => {}));
-  } catch {
-    // reported by the tests themselves
+  } catch (error) {
+    // the tests report it for themselves; this says why they may start slowly
+    console.warn(`harness warm-up: ${error.message.split('\n')[0]}`);
   } finally {
-    await page.close().catch(() => {});
+    await page.close();
   }
 }
 
@@ -171,6 +174,24 @@ async function launchOnGpu(launch, executablePath, userDataDir) {
 }
 
 /**
+ * Launches headless Chromium with the harness's flags (CHROME_ARGS unless `args`), in UTC. Used
+ * by startHarness, and by page.js when the run's browser is gone (crashed) and a test file needs
+ * another. Without `userDataDir`, puppeteer makes a temporary profile and removes it on close.
+ * @param {{args?: string[], userDataDir?: string, executablePath?: string}} [options]
+ */
+export function launchBrowser({ args = CHROME_ARGS, userDataDir, executablePath = findChrome() } = {}) {
+  return puppeteer.launch({
+    executablePath,
+    headless: true,
+    userDataDir,
+    args: [...args], // a copy: puppeteer moves --enable-features out of the array it is given
+    // iDate uses local time; UTC makes the frozen date the same everywhere.
+    env: { ...process.env, TZ: 'UTC' },
+    defaultViewport: null,
+  });
+}
+
+/**
  * Starts Chromium (checked to be SwiftShader WebGL2) and the page server. Used once per run by
  * vitest's globalSetup below, and by scripts through withHarness.
  * With { gpu: true }, Chromium runs on the machine's own GPU instead (launchOnGpu: checked to be
@@ -191,18 +212,10 @@ export async function startHarness({ gpu = false } = {}) {
     }
   };
   try {
-    const launch = (args, dataDir) =>
-      puppeteer.launch({
-        executablePath,
-        headless: true,
-        userDataDir: dataDir,
-        args: [...args], // a copy: puppeteer moves --enable-features out of the array it is given
-        // iDate uses local time; UTC makes the frozen date the same everywhere.
-        env: { ...process.env, TZ: 'UTC' },
-        defaultViewport: null,
-      });
+    const launch = (args, dataDir) => launchBrowser({ args, userDataDir: dataDir, executablePath });
     const browser = gpu ? await launchOnGpu(launch, executablePath, userDataDir) : await launch(CHROME_ARGS, userDataDir);
-    cleanups.push(() => browser.close());
+    // closed, or killed if it does not answer: a hung browser must not keep the run alive
+    cleanups.push(() => closeBrowser(browser));
 
     const chromium = await browser.version();
     const webgl = await probeWebGL(browser);
@@ -222,7 +235,7 @@ export async function startHarness({ gpu = false } = {}) {
     const environment = { chromium, renderer: webgl.renderer, webglVersion: webgl.version };
 
     const server = await startPageServer();
-    cleanups.push(server.close);
+    cleanups.push(() => withTimeout('closing the page server', server.close(), CLOSE_TIMEOUT_MS));
     await warmUp(browser, server.baseUrl);
     return { context: { wsEndpoint: browser.wsEndpoint(), baseUrl: server.baseUrl, environment }, close };
   } catch (error) {
