@@ -117,6 +117,8 @@ declare global {
   interface Window {
     /** The page's automation hook (src/page/automation.js). */
     raytracer: RaytracerHook;
+    /** The longest gap between 10 ms timer ticks (tests/page-heavy.test.js). */
+    __longestGap: number;
     /** The raw WebGL2 page's functions (tests/harness/raw-webgl-page.js). */
     __rawWebGL: import('./harness/raw-webgl-page.js').RawWebGL;
     /** Set by the deterministic injection (tests/harness/deterministic-injection.js). */

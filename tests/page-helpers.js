@@ -44,10 +44,12 @@ export async function withServedDir(prefix, body) {
  * Runs `body({page, errors, warnings, context, goto})` on a fresh page and closes it. The test
  * fails if the page logged a console error or threw, even when `body` passed.
  * @param {(p: PageSession) => Promise<void>} body
- * @param {{viewport?: import('puppeteer-core').Viewport, beforeLoad?: (page: import('puppeteer-core').Page) => Promise<unknown>}} [options]
+ * `deterministic: false` leaves the page's clocks real (the watchdog's tests need time to pass
+ * while no animation frame is asked for).
+ * @param {{viewport?: import('puppeteer-core').Viewport, beforeLoad?: (page: import('puppeteer-core').Page) => Promise<unknown>, deterministic?: boolean}} [options]
  */
-export async function withPage(body, { viewport, beforeLoad } = {}) {
-  const { page, errors, context } = await openPage();
+export async function withPage(body, { viewport, beforeLoad, deterministic = true } = {}) {
+  const { page, errors, context } = await openPage({ deterministic });
   const warnings = [];
   page.on('console', (message) => {
     if (message.type() === 'warn') warnings.push(message.text());

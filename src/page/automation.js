@@ -85,8 +85,7 @@ export function installAutomation(app, ready, ui) {
     },
 
     async setControls(changes) {
-      await loaded();
-      await ready.catch(() => {});
+      await loaded(); // the shader's controls are known; its first frame need not be drawn yet
       await app.setControls(changes);
     },
 

@@ -3,16 +3,17 @@
 // the drawing size, the GPU's limits, each channel's size) is kept here as the worker reports it,
 // so asking never waits for the worker.
 //
-// It is also the page's watchdog: while a frame is being drawn the worker reports every band it
-// finishes. When none has come for HANG_AFTER_MS, the shader may never finish (an endless loop,
-// or far too much work for one band): `onHang(seconds)` is called, and `onHang(null)` if the
-// bands come again.
+// It is also the page's watchdog: the worker says when it hands a band to the GPU and when the
+// GPU has finished it. A band still unfinished after HANG_AFTER_MS means the shader may never
+// finish (an endless loop, or far too much work for one band): `onHang(seconds)` is called, and
+// `onHang(null)` once the band ends after all. (A compile is not watched: it is the worker's own
+// work, and one waiting for the GPU waits behind a band, which is.)
 
 import { ShaderCompileError, WebGL2UnavailableError } from './renderer-errors.js';
 
-/** No band for this long while a frame is being drawn: the shader may never finish. A band is
- * sized to take ~0.1 s (band-planner.js); only a shader far heavier than its first band, or one
- * that never ends, goes quiet this long. */
+/** A band unfinished for this long: the shader may never finish. A band is sized to take ~0.1 s
+ * (band-planner.js); only a shader far heavier than its first band, or one that never ends,
+ * holds the GPU this long. */
 export const HANG_AFTER_MS = 5000;
 /** A worker that has not said whether it has a context by then has failed to start (a script
  * that did not load, a browser that cannot run module workers). */
@@ -70,12 +71,10 @@ export class RenderClient {
     this._serial = 0;
     /** @type {Map<number, {resolve: (value: any) => void, reject: (error: Error) => void}>} */
     this._pending = new Map();
-    /** performance.now() of the last sign of life from a frame under way; null when none is. @type {number | null} */
-    this._drawingSince = null;
+    /** performance.now() when the band the GPU is drawing was handed to it; null when none is. @type {number | null} */
+    this._bandSince = null;
     this._hung = false;
     this._watch = 0;
-    /** Compiles under way: a compile holds the worker (and the frame waiting for it) up, and is not a hang. */
-    this._compiling = 0;
   }
 
   async _spawn() {
@@ -113,8 +112,7 @@ export class RenderClient {
     for (const { reject } of this._pending.values()) reject(new Error('the render worker was restarted'));
     this._pending.clear();
     this.hasProgram = false;
-    this._compiling = 0;
-    this._drawingSince = null;
+    this._bandSince = null;
     if (this._hung) this.onHang(null);
     this._hung = false;
     await this._spawn();
@@ -133,18 +131,20 @@ export class RenderClient {
       case 'context':
         this.contextLost = data.lost;
         if (!data.lost) this.hasProgram = false; // programs died with the context: compiled again
-        this._drawingSince = null;
+        this._bandEnded();
         this.onContext(data.lost);
         return;
+      case 'bandStarted':
+        this._bandSince = performance.now();
+        return;
       case 'band':
-        this._alive();
+        this._bandEnded();
         this.progress = { y: data.y, height: data.height, bands: (this.progress?.bands ?? 0) + 1 };
         if (data.bitmap) this.onPicture(data.bitmap);
         return;
       case 'drawn':
-        this._drawingSince = null;
         this.progress = null;
-        this._recover();
+        this._bandEnded();
         this.width = data.bitmap.width;
         this.height = data.bitmap.height;
         this._gpuTimes.push(...data.gpuTimes);
@@ -152,8 +152,7 @@ export class RenderClient {
         this._settle(data.id, { pixels: data.pixels });
         return;
       case 'captured':
-        this._drawingSince = null;
-        this._recover();
+        this._bandEnded();
         this._settle(data.id, data.pixels);
         return;
       case 'compiled':
@@ -171,7 +170,7 @@ export class RenderClient {
         this._settle(data.id, data.times);
         return;
       case 'jobFailed':
-        this._drawingSince = null;
+        this._bandEnded();
         this._settle(data.id, null, new Error(data.message));
         return;
       default:
@@ -198,8 +197,9 @@ export class RenderClient {
 
   // ---- the watchdog ----------------------------------------------------------------------------
 
-  _alive() {
-    if (this._drawingSince !== null) this._drawingSince = performance.now();
+  /** A band has ended (or the context went with it). */
+  _bandEnded() {
+    this._bandSince = null;
     this._recover();
   }
 
@@ -210,14 +210,14 @@ export class RenderClient {
   }
 
   _checkHang() {
-    if (this._drawingSince === null || this.contextLost || this._compiling > 0) return;
-    const quiet = performance.now() - this._drawingSince;
+    if (this._bandSince === null || this.contextLost) return;
+    const quiet = performance.now() - this._bandSince;
     if (quiet < HANG_AFTER_MS) return;
     this._hung = true;
     this.onHang(quiet / 1000);
   }
 
-  /** Whether a frame has gone without a band for HANG_AFTER_MS. */
+  /** Whether a band has been drawing for HANG_AFTER_MS. */
   get hung() {
     return this._hung;
   }
@@ -228,14 +228,8 @@ export class RenderClient {
    * Compiles a Shadertoy Image source with `hostBlock` after the header. Resolves when it runs;
    * rejects with a ShaderCompileError (the last shader that compiled keeps running).
    */
-  async compile(source, hostBlock, fileName) {
-    this._compiling++;
-    try {
-      await this._ask({ type: 'compile', source, hostBlock, fileName });
-    } finally {
-      this._compiling--;
-      this._alive();
-    }
+  compile(source, hostBlock, fileName) {
+    return this._ask({ type: 'compile', source, hostBlock, fileName });
   }
 
   setControlUniforms(controls, values) {
@@ -277,7 +271,6 @@ export class RenderClient {
    * @returns {Promise<{pixels: Uint8Array | null}>}
    */
   drawFrame(inputs, readBack = false) {
-    this._drawingSince ??= performance.now();
     this.progress = { y: 0, height: inputs.height, bands: 0 };
     return this._ask({ type: 'frame', inputs, readBack });
   }
@@ -291,7 +284,6 @@ export class RenderClient {
    * @returns {Promise<Uint8Array>}
    */
   redraw(inputs, width, height) {
-    this._drawingSince ??= performance.now();
     return this._ask({ type: 'capture', inputs, width, height });
   }
 

@@ -11,7 +11,8 @@
 //   compile {id, source, hostBlock, fileName}  → compiled {id, error?}
 //   controlUniforms {controls, values}, controlUniform {name, value}, channel {index, image}
 //   frame {id, inputs, readBack}     a frame for the page, drawn band by band:
-//                             → band {id, y, height, bitmap?} after each band (a bitmap now and
+//                             → bandStarted when a band goes to the GPU, band {id, y, height,
+//                               bitmap?} when the GPU has finished it (a bitmap now and
 //                               then: the frame building up), then drawn {id, bitmap, pixels?,
 //                               gpuTimes}; pixels (readBack) are RGBA8, rows top to bottom
 //   capture {id, inputs, width, height}   the same frame at another size, off screen
@@ -88,8 +89,10 @@ function start() {
   post({ type: 'ready', maxSize: renderer.maxSize, info: renderer.info() });
 }
 
-/** Something the picture depends on changed: the frame under way starts again. */
+/** Something the picture depends on changed: the frame under way starts again, and its cost is
+ * learnt again (a control can make a shader far heavier). */
 function changed() {
+  planner.forget();
   if (!job) return;
   job.y = 0;
   job.redo = Boolean(band); // the band in flight has the old state
@@ -120,6 +123,7 @@ function pump() {
   const sync = gl.fenceSync(gl.SYNC_GPU_COMMANDS_COMPLETE, 0);
   gl.flush();
   band = { sync, rows, started: performance.now() };
+  post({ type: 'bandStarted' });
   setTimeout(poll, POLL_MS);
 }
 
@@ -182,7 +186,6 @@ const handlers = {
   async compile({ id, source, hostBlock, fileName }) {
     try {
       await renderer.compile(source, hostBlock, fileName);
-      planner.forget();
       changed();
       post({ type: 'compiled', id });
     } catch (error) {

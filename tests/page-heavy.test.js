@@ -1,0 +1,184 @@
+// The page never freezes (issue 12): heavy frames are drawn in bands by the render worker, the
+// page's own script keeps answering while they draw, a change applies after the band in flight,
+// and a frame that stops making progress puts up the watchdog's message. Test shaders are
+// written here: their cost per pixel is a loop whose length is a control.
+
+import { describe, expect, test } from 'vitest';
+import puppeteer from 'puppeteer-core';
+import { CHROME_ARGS } from './harness/setup.js';
+import { findChrome } from './harness/chrome-path.js';
+import { harnessContext } from './harness/page.js';
+import { info, nextFrame, pixel, withPage, withServedDir } from './page-helpers.js';
+import { HANG_AFTER_MS } from '../src/page/render-client.js';
+import fs from 'node:fs';
+import path from 'node:path';
+
+/**
+ * A shader whose pixels cost WORK loop trips each (rows below HEAVY_ROWS only, when that is
+ * set), painted red SHADE. The loop's sum is kept alive in the colour, at a weight too small to
+ * show.
+ */
+const HEAVY_SHADER = `
+#ifndef HOST_CONTROLS
+const int WORK = 0;            // ui: Loop trips per pixel | 0 .. 100000000 step 1
+const int HEAVY_ROWS = 100000; // ui: Rows that loop | 0 .. 100000 step 1
+const float SHADE = 0.0;       // ui: Red | 0 .. 1 step 0.01
+#endif
+void mainImage(out vec4 fragColor, in vec2 fragCoord) {
+    float sum = 0.0;
+    int trips = fragCoord.y < float(HEAVY_ROWS) ? WORK : 0;
+    for (int i = 0; i < trips; i++) sum += sin(float(i) * 1e-3 + fragCoord.x);
+    fragColor = vec4(SHADE + 1e-30 * sum, 0.5, 0.0, 1.0);
+}
+`;
+
+/** A shader that never finishes: the loop's exit depends on a sum that never gets there. */
+const ENDLESS_SHADER = `
+void mainImage(out vec4 fragColor, in vec2 fragCoord) {
+    float sum = 0.0;
+    for (int i = 0; ; i++) {
+        sum += abs(sin(float(i) + fragCoord.x));
+        if (sum < -1.0) break;
+    }
+    fragColor = vec4(sum, 0.0, 0.0, 1.0);
+}
+`;
+
+const SIZE = 'size=128x72';
+/** Trips per pixel that make one 128×72 frame take several seconds on SwiftShader (measured:
+ * 60000 trips take 0.45 s a frame, so this is ~9 s; bands of 2 rows ~0.25 s). */
+const HEAVY_WORK = 1_200_000;
+/** Trips per pixel that make a band of 8 rows (1024 pixels) outlast the watchdog (measured:
+ * 6e6 trips take 5–9 s a band, 12e6 ~13 s). */
+const HANGING_WORK = 12_000_000;
+/** The timers and the watchdog need time to pass while no animation frame is asked for: these
+ * pages keep the real clocks (the deterministic injection advances performance.now() per frame). */
+const REAL_CLOCKS = { deterministic: false };
+/** The page's script answers a click within this (issue 12). */
+const CLICK_ANSWER_MS = 100;
+
+/** Runs `body(base)` with heavy.glsl served by the page's server under `base`. */
+async function withHeavyShader(body) {
+  await withServedDir('test-heavy', async (dir, base) => {
+    fs.writeFileSync(path.join(dir, 'heavy.glsl'), HEAVY_SHADER);
+    fs.writeFileSync(path.join(dir, 'endless.glsl'), ENDLESS_SHADER);
+    await body(base);
+  });
+}
+
+/** Waits until the page is in the middle of drawing a frame (a band done, more to come). */
+async function midFrame(page) {
+  await page.waitForFunction(
+    () => {
+      const progress = window.raytracer.info().progress;
+      return progress && progress.bands >= 1 && progress.y < progress.height;
+    },
+    { polling: 50, timeout: 60_000 },
+  );
+}
+
+describe('heavy frames are drawn in bands, and the page keeps answering', () => {
+  test('while a frame of several seconds draws, a click on Pause is answered within 100 ms and a control change shows within a few bands', async () => {
+    await withHeavyShader(async (base) => {
+      await withPage(async ({ page, goto }) => {
+        await goto(`?shader=${base}/heavy.glsl&${SIZE}&WORK=${HEAVY_WORK}`, { expectReady: false });
+        await midFrame(page);
+        const frameStarted = Date.now();
+
+        // the page's script answers: nothing holds its event loop up for as long as 100 ms
+        // while the frame draws (a timer every 10 ms records the longest gap), and a click on
+        // Pause changes the button's state
+        await page.evaluate(() => {
+          window.__longestGap = 0;
+          let last = performance.now();
+          const timer = setInterval(() => {
+            const now = performance.now();
+            window.__longestGap = Math.max(window.__longestGap, now - last);
+            last = now;
+          }, 10);
+          setTimeout(() => clearInterval(timer), 2000);
+        });
+        await page.click('#toolbar button.play');
+        expect(await page.$eval('#toolbar button.play', (b) => b.getAttribute('aria-label'))).toBe('Play');
+        await new Promise((resolve) => setTimeout(resolve, 2100));
+        const answeredMs = await page.evaluate(() => window.__longestGap);
+        expect(answeredMs, `the page's script was held up for ${answeredMs} ms`).toBeLessThan(CLICK_ANSWER_MS);
+
+        // the frame under way is still far from done seconds later: a heavy frame takes many bands
+        const during = await info(page);
+        expect(during.progress.y).toBeLessThan(during.progress.height / 2);
+
+        // a change applies from the next band: the next frame has it, long before the heavy one
+        // would have finished
+        const changed = Date.now();
+        const light = await nextFrame(page);
+        await page.evaluate(() => window.raytracer.setControls({ WORK: 0, SHADE: 1 }));
+        const image = await light();
+        const appliedMs = Date.now() - changed;
+        expect(pixel(image, 0, 0)).toEqual([255, 128, 0]);
+        expect(pixel(image, 127, 71)).toEqual([255, 128, 0]);
+        // the heavy frame had drawn only part of its rows in this time (measured: ~10 s a frame)
+        expect(appliedMs, `the change took ${appliedMs} ms to show`).toBeLessThan(3000);
+        console.log(
+          `heavy frame under way for ${changed - frameStarted} ms; longest wait of the page's script ${answeredMs.toFixed(0)} ms; change shown after ${appliedMs} ms`,
+        );
+      }, REAL_CLOCKS);
+    });
+  });
+
+  test('a band that outlasts the watchdog puts up its message, which goes when the drawing goes on', async () => {
+    await withHeavyShader(async (base) => {
+      await withPage(async ({ page, goto }) => {
+        // the first band (8 rows) alone takes longer than HANG_AFTER_MS
+        await goto(`?shader=${base}/heavy.glsl&${SIZE}&WORK=0`);
+        await page.evaluate((work) => window.raytracer.setControls({ WORK: work, HEAVY_ROWS: 8 }), HANGING_WORK);
+        await page.waitForFunction(() => document.documentElement.dataset.hung === 'true', {
+          polling: 100,
+          timeout: HANG_AFTER_MS + 30_000,
+        });
+        const alert = await page.$eval('[role="alert"]', (e) => e.textContent);
+        expect(alert).toContain('heavy.glsl may never finish');
+        expect(alert).toContain('Go back to heavy.glsl');
+        expect((await info(page)).hung).toBe(true);
+        // the band ends after all: the message goes
+        await page.waitForFunction(() => !document.documentElement.dataset.hung, { polling: 100, timeout: 90_000 });
+        expect(await page.$eval('[role="alert"]', (e) => /** @type {HTMLElement} */ (e).hidden)).toBe(true);
+      }, REAL_CLOCKS);
+    });
+  });
+});
+
+describe('a shader that never finishes', () => {
+  test('the page keeps answering and puts up the watchdog message (in a browser of its own: SwiftShader never gets over it)', async () => {
+    const { baseUrl } = await harnessContext();
+    await withHeavyShader(async (base) => {
+      const browser = await puppeteer.launch({ executablePath: findChrome(), args: CHROME_ARGS, headless: true });
+      try {
+        const page = await browser.newPage();
+        await page.goto(`${baseUrl}/?shader=${base}/heavy.glsl&${SIZE}&WORK=0`, { waitUntil: 'load' });
+        await page.waitForFunction(() => window.raytracer, { polling: 50 });
+        await page.evaluate(() => window.raytracer.ready);
+        const outcome = await page.evaluate((url) => window.raytracer.loadShader(url), `${base}/endless.glsl`);
+        expect(outcome, 'it compiles; it is drawing it that never ends').toEqual({ ok: true });
+        await page.waitForFunction(() => document.documentElement.dataset.hung === 'true', {
+          polling: 100,
+          timeout: HANG_AFTER_MS + 20_000,
+        });
+        const alert = await page.$eval('[role="alert"]', (e) => e.textContent);
+        expect(alert).toContain('endless.glsl may never finish');
+        expect(alert).toContain('Go back to heavy.glsl');
+        // the page's script still answers, however long the draw goes on
+        const asked = Date.now();
+        const playing = await page.evaluate(() => {
+          /** @type {HTMLButtonElement} */ (document.querySelector('#toolbar button.play')).click();
+          return window.raytracer.info().playing;
+        });
+        expect(Date.now() - asked).toBeLessThan(1000);
+        expect(playing).toBe(false);
+      } finally {
+        browser.process()?.kill('SIGKILL'); // its GPU process is stuck in the draw for good
+        await browser.disconnect().catch(() => {});
+      }
+    });
+  });
+});
