@@ -64,6 +64,8 @@ export interface RaytracerHook {
   /** Sets shader controls as the URL does; resolves once compiled. */
   setControls(changes: Record<string, unknown>): Promise<void>;
   setSource(source: string): Promise<CompileOutcome>;
+  /** Runs a multipass shader given as Shadertoy's JSON export. */
+  setProject(json: object | string): Promise<CompileOutcome & { notes: string[] }>;
   play(): void;
   pause(): void;
   togglePlay(): void;

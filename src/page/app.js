@@ -20,10 +20,13 @@ import { carriedOverValues, changedValues, readControlChanges } from './control-
 import { Emitter } from './events.js';
 import { LiveControlForm } from './live-controls.js';
 import { loadImage } from './shader-loader.js';
+import { KeyboardState, keyCodeOf } from '../shadertoy/keyboard.js';
+import { frameSchedule, singlePass } from '../shadertoy/multipass.js';
 
 /** @typedef {import('../shadertoy/controls.js').Control} Control */
 /** @typedef {import('./events.js').AppEvents} AppEvents */
-/** @typedef {{source: string, name: string, origin: RaytracerApp['origin'], url: string | null}} ShaderVersion */
+/** @typedef {import('../shadertoy/multipass.js').MultipassShader} MultipassShader */
+/** @typedef {{project: MultipassShader, info: object | null, name: string, origin: RaytracerApp['origin'], url: string | null}} ShaderVersion */
 
 /** @extends {Emitter<AppEvents>} */
 export class RaytracerApp extends Emitter {
@@ -55,7 +58,14 @@ export class RaytracerApp extends Emitter {
     /** The drawing buffer's size: fixed, or the layout's with scale and cap. */
     this.canvasSize = new CanvasSize(canvas, { maxSide: () => this.renderer.maxSize, fixed: size, scale, cap });
 
-    this.source = '';
+    /** The shader: its tabs (a plain file is one Image tab). @type {MultipassShader} */
+    this.project = singlePass('');
+    /** The JSON `info` the shader came with (kept for an export), null for a plain file. @type {object | null} */
+    this.projectInfo = null;
+    /** What the page cannot give the shader (media a JSON names: black channels). @type {string[]} */
+    this.notes = [];
+    /** Shadertoy's keyboard texture, for the passes that read it. */
+    this.keyboard = new KeyboardState();
     /** Where the source came from. @type {'builtin' | 'url' | 'editor' | 'file'} */
     this.origin = 'builtin';
     /** The shader's URL as the page was given it, when it came from one (for a shared link). @type {string | null} */
@@ -106,6 +116,29 @@ export class RaytracerApp extends Emitter {
 
     this.canvasSize.watch(() => this.requestRender());
     this._watchContext();
+    this._watchKeyboard();
+  }
+
+  /**
+   * Keys into Shadertoy's keyboard texture (keyboard.js), for shaders that read it: keys typed into
+   * the editor or a field of the panel are the page's, not the shader's.
+   */
+  _watchKeyboard() {
+    const typing = (/** @type {KeyboardEvent} */ event) => {
+      const target = /** @type {HTMLElement | null} */ (event.target instanceof HTMLElement ? event.target : null);
+      return Boolean(target?.closest('input, textarea, select, [contenteditable="true"], .cm-editor'));
+    };
+    window.addEventListener('keydown', (event) => {
+      if (!typing(event) && this.keyboard.keyDown(keyCodeOf(event))) this.requestRender();
+    });
+    window.addEventListener('keyup', (event) => {
+      if (this.keyboard.keyUp(keyCodeOf(event))) this.requestRender();
+    });
+    window.addEventListener('blur', () => {
+      // keys released in another window never come back up here; toggles stay
+      for (let key = 0; key < 256; key++) this.keyboard.keyUp(key);
+      this.requestRender();
+    });
   }
 
   /**
@@ -119,23 +152,45 @@ export class RaytracerApp extends Emitter {
 
   // ---- source and controls ---------------------------------------------------------------------
 
+  /** The Image tab's text (the whole shader, for a plain file). */
+  get source() {
+    return this.project.passes.find((pass) => pass.kind === 'image')?.code ?? '';
+  }
+
+  /** Whether the shader has a Common tab or a buffer. */
+  get isMultipass() {
+    return this.project.common !== null || this.project.passes.length > 1;
+  }
+
   /**
-   * Takes a new shader source: reads its control block (keeping current values of controls that
-   * survive); the page rebuilds its panel on the 'source' event. Call compile() after.
+   * Takes a new shader source (one Image tab): see loadProject.
    * @param {string} source
    * @param {{name?: string, origin?: RaytracerApp['origin'], url?: string|null}} [from] where it came from
    */
   loadSource(source, from = {}) {
+    this.loadProject(singlePass(source), from);
+  }
+
+  /**
+   * Takes a new shader: reads its control blocks (one per tab at most; keeping current values of
+   * controls that survive); the page rebuilds its panel on the 'source' event. Call compile() after.
+   * @param {MultipassShader} project
+   * @param {{name?: string, origin?: RaytracerApp['origin'], url?: string|null, info?: object | null}} [from] where it came from
+   */
+  loadProject(project, from = {}) {
     /** @type {Control[]} */
-    let controls = [];
+    const controls = [];
     this.notice = null;
     try {
-      controls = parseControls(source);
+      for (const text of [project.common ?? '', ...project.passes.map((pass) => pass.code)])
+        for (const control of parseControls(text)) if (!controls.some((c) => c.name === control.name)) controls.push(control);
     } catch (error) {
       this.notice = `${error.message}\nThe shader runs with its own defaults and no panel controls.`;
     }
     const values = carriedOverValues(controls, this.controls, this.values);
-    this.source = source;
+    this.project = project;
+    this.projectInfo = from.info ?? null;
+    this.notes = frameSchedule(project).flatMap((step) => step.bindings.flatMap((binding) => (binding.note ? [binding.note] : [])));
     this.liveForm.reset();
     if (from.name) this.fileName = from.name;
     if (from.origin) {
@@ -155,6 +210,16 @@ export class RaytracerApp extends Emitter {
    */
   setSource(source, from = {}) {
     this.loadSource(source, from);
+    return this.compile();
+  }
+
+  /**
+   * loadProject + compile: resolves on success, rejects with the compile error.
+   * @param {MultipassShader} project
+   * @param {{name?: string, origin?: RaytracerApp['origin'], url?: string|null, info?: object | null}} [from]
+   */
+  setProject(project, from = {}) {
+    this.loadProject(project, from);
     return this.compile();
   }
 
@@ -218,8 +283,8 @@ export class RaytracerApp extends Emitter {
     const hostBlock = this.notice ? '' : hostControlBlock(this.controls, this.values, this.liveForm.asConstants ? this.values : null);
     const fileName = this.fileName;
     /** @type {ShaderVersion} */
-    const version = { source: this.source, name: fileName, origin: this.origin, url: this.shaderUrl };
-    const job = this.renderer.compile(this.source, hostBlock, fileName).then(
+    const version = { project: this.project, info: this.projectInfo, name: fileName, origin: this.origin, url: this.shaderUrl };
+    const job = this.renderer.compile(this.project, hostBlock, fileName).then(
       () => {
         this._running = version;
         if (job !== this._latestCompile) return;
@@ -272,6 +337,7 @@ export class RaytracerApp extends Emitter {
   /** iTime and iFrame back to 0; draws that frame even while paused. */
   restart() {
     this.inputs.restart();
+    this.renderer.clearBuffers(); // Shadertoy's rewind clears every buffer too
     this.emit('state');
     this.requestRender();
   }
@@ -345,7 +411,7 @@ export class RaytracerApp extends Emitter {
     const back = this.lastFinished;
     await this.renderer.respawn();
     this._drawing = null;
-    if (back) this.loadSource(back.source, back);
+    if (back) this.loadProject(back.project, back);
     this._resend();
     this.compile().catch(() => {});
     this.requestRender();
@@ -381,7 +447,7 @@ export class RaytracerApp extends Emitter {
     if (this.renderer.contextLost || !this.renderer.hasProgram) return null;
     const { width, height } = this.canvasSize.target();
     this._dirty = false;
-    const inputs = this.inputs.beginFrame(width, height, now);
+    const inputs = { ...this.inputs.beginFrame(width, height, now), keyboard: this.keyboard.data.slice() };
     const running = this._running;
     const drawing = this.renderer.drawFrame(inputs, readBack);
     this._drawing = drawing;
@@ -392,6 +458,7 @@ export class RaytracerApp extends Emitter {
       if (this._drawing === drawing) this._drawing = null;
     }
     this.inputs.endFrame();
+    if (this.keyboard.endFrame()) this.requestRender(); // "pressed this frame" is over
     this.framesRendered++;
     this.lastFinished = running;
     if (this.inputs.playing) {

@@ -12,6 +12,8 @@
 //   setControls({NAME: value})   Promise: sets shader controls (as the URL does: coerced into
 //                         range, unknown names warned about); resolves once compiled.
 //   setSource(glsl)       Promise<{ok, error?}>: compiles another Image-tab source.
+//   setProject(json)      Promise<{ok, error?, notes}>: runs a multipass shader given as
+//                         Shadertoy's JSON export (an object or its text).
 //   play(), pause(), togglePlay(), restart(), setTime(seconds), setSpeed(s), setMouse([x, y, z, w])
 //   nextFrame()           Promise<{width, height, data, iFrame}>: the next frame the page draws by
 //                         itself (after a click, a key, a play tick), read back; rows top to
@@ -47,6 +49,7 @@
 import { fetchShader, shaderName } from './shader-loader.js';
 import { toBase64 } from './pixels.js';
 import { median } from './stats.js';
+import { fromShadertoyJson } from '../shadertoy/multipass-json.js';
 
 /** The window, with the hook. @type {Window & {raytracer?: object}} */
 const hooked = window;
@@ -97,6 +100,18 @@ export function installAutomation(app, ready, ui) {
         return { ok: true };
       } catch (error) {
         return { ok: false, error: error.report ?? error.message };
+      }
+    },
+
+    async setProject(json) {
+      await loaded();
+      try {
+        const { model, info, notes } = fromShadertoyJson(json);
+        app.loadProject(model, { origin: 'editor', info });
+        await app.compile();
+        return { ok: true, notes: [...notes, ...app.notes] };
+      } catch (error) {
+        return { ok: false, error: error.report ?? error.message, notes: [] };
       }
     },
 
@@ -188,6 +203,7 @@ export function installFailedAutomation(error) {
     renderFrames: fail,
     setControls: fail,
     setSource: fail,
+    setProject: fail,
     nextFrame: fail,
     loseContext() {},
     restoreContext() {},

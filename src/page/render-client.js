@@ -225,11 +225,19 @@ export class RenderClient {
   // ---- what the app asks -----------------------------------------------------------------------
 
   /**
-   * Compiles a Shadertoy Image source with `hostBlock` after the header. Resolves when it runs;
+   * Compiles every pass of a shader with `hostBlock` after the header. Resolves when it runs;
    * rejects with a ShaderCompileError (the last shader that compiled keeps running).
+   * @param {import('../shadertoy/multipass.js').MultipassShader} project
+   * @param {string} hostBlock
+   * @param {string} fileName
    */
-  compile(source, hostBlock, fileName) {
-    return this._ask({ type: 'compile', source, hostBlock, fileName });
+  compile(project, hostBlock, fileName) {
+    return this._ask({ type: 'compile', project, hostBlock, fileName });
+  }
+
+  /** Clears every buffer of a multipass shader (Shadertoy's rewind). */
+  clearBuffers() {
+    this.worker.postMessage({ type: 'clearBuffers' });
   }
 
   setControlUniforms(controls, values) {

@@ -8,7 +8,8 @@
 //
 // Messages from the page (render-client.js), each {type, ...}:
 //   init                      → ready {maxSize, info} | failed {name, message}
-//   compile {id, source, hostBlock, fileName}  → compiled {id, error?}
+//   compile {id, project, hostBlock, fileName}  → compiled {id, error?}: every pass of a shader
+//   clearBuffers              Restart: every buffer of a multipass shader to 0
 //   controlUniforms {controls, values}, controlUniform {name, value}, channel {index, image}
 //   frame {id, inputs, readBack}     a frame for the page, drawn band by band:
 //                             → bandStarted when a band goes to the GPU, band {id, y, height,
@@ -47,7 +48,9 @@ const post = (message, transfer = []) => /** @type {any} */ (self).postMessage(m
  * @property {number} height
  * @property {boolean} readBack
  * @property {any} target the render target drawn into
- * @property {number} y rows done
+ * @property {number} step the pass being drawn (an index into renderer.steps; a capture draws
+ *   only the last, the Image pass, over the buffers as they are)
+ * @property {number} y rows of it done
  * @property {boolean} redo something changed while a band was being drawn: it starts again
  */
 
@@ -115,11 +118,20 @@ function pump() {
     return pump();
   }
   const gl = renderer.gl;
-  if (job.y === 0 && job.kind === 'frame') renderer.gpuTimer.begin();
+  const steps = renderer.steps;
+  if (job.kind === 'capture' || job.step >= steps.length) job.step = steps.length - 1; // a new shader meanwhile
+  const step = steps[job.step];
+  const first = job.step === 0 && job.y === 0;
+  const last = job.step === steps.length - 1;
+  if (first && job.kind === 'frame') {
+    renderer.gpuTimer.begin();
+    if (job.inputs.keyboard) renderer.setKeyboard(job.inputs.keyboard);
+  }
   const rows = planner.rows(job.width, job.height - job.y);
   writeUniforms(renderer.uniforms, job.inputs, { width: job.width, height: job.height });
-  renderer.drawRows(job.y, job.y + rows, job.target);
-  if (job.y + rows >= job.height && job.kind === 'frame') renderer.gpuTimer.end();
+  const target = renderer.beginStep(step, job.width, job.height) ?? job.target;
+  renderer.drawRows(job.y, job.y + rows, target);
+  if (last && job.y + rows >= job.height && job.kind === 'frame') renderer.gpuTimer.end();
   const sync = gl.fenceSync(gl.SYNC_GPU_COMMANDS_COMPLETE, 0);
   gl.flush();
   band = { sync, rows, started: performance.now() };
@@ -147,6 +159,11 @@ function bandDone(rows, ms) {
   planner.measured(job.width, rows, ms);
   if (job.redo) job.redo = false;
   else job.y += rows;
+  if (job.y >= job.height && job.step < renderer.steps.length - 1) {
+    renderer.endStep(renderer.steps[job.step]); // a buffer is done: the next pass reads it
+    job.step++;
+    job.y = 0;
+  }
   const done = job.y >= job.height;
   const now = performance.now();
   if (!done) {
@@ -183,15 +200,20 @@ function readOpaque(target, width, height) {
 const handlers = {
   init: start,
 
-  async compile({ id, source, hostBlock, fileName }) {
+  async compile({ id, project, hostBlock, fileName }) {
     try {
-      await renderer.compile(source, hostBlock, fileName);
+      await renderer.compile(project, hostBlock, fileName);
       changed();
       post({ type: 'compiled', id });
     } catch (error) {
       post({ type: 'compiled', id, error: { name: error.name, message: error.message, report: error.report, messages: error.messages } });
     }
     pump();
+  },
+
+  clearBuffers() {
+    renderer.buffers.clear();
+    changed();
   },
 
   controlUniforms({ controls, values }) {
@@ -214,7 +236,7 @@ const handlers = {
     const stale = waiting.findIndex((queued) => queued.kind === 'frame');
     if (stale >= 0) post({ type: 'jobFailed', id: waiting.splice(stale, 1)[0].id, message: 'replaced by a newer frame' });
     const { width, height } = inputs;
-    waiting.push({ id, kind: 'frame', inputs, width, height, readBack, target: renderer.frameTarget, y: 0, redo: false });
+    waiting.push({ id, kind: 'frame', inputs, width, height, readBack, target: renderer.frameTarget, step: 0, y: 0, redo: false });
     pump();
   },
 
@@ -227,6 +249,7 @@ const handlers = {
       height,
       readBack: true,
       target: renderer.makeTarget(width, height),
+      step: 0,
       y: 0,
       redo: false,
     });

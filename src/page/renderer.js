@@ -10,12 +10,17 @@
 
 import { GpuTimer } from './frame-timer.js';
 import * as THREE from 'three';
-import { FIRST_FRAME_UNIFORMS, SHADERTOY_UNIFORMS, composeImageShader } from '../shadertoy/header.js';
+import { FIRST_FRAME_UNIFORMS, SHADERTOY_UNIFORMS, composePassShader } from '../shadertoy/header.js';
 import { formatShaderMessages, parseShaderLog, userLineOffset } from '../shadertoy/shader-errors.js';
+import { formatPassMessages, parsePassShaderLog } from '../shadertoy/pass-errors.js';
+import { channelTypes, frameSchedule } from '../shadertoy/multipass.js';
+import { PassBuffers } from './pass-buffers.js';
 import { ShaderCompileError, WebGL2UnavailableError } from './renderer-errors.js';
 
-/** Compiled materials kept for switching back without a compile: a uniform form, a constant form, and one spare. */
-const MATERIALS_KEPT = 3;
+/** Compiled materials kept for switching back without a compile: a uniform form, a constant form, and one spare, for each of up to five passes. */
+const MATERIALS_KEPT = 15;
+
+/** @typedef {ReturnType<typeof frameSchedule>[number] & {material: THREE.RawShaderMaterial}} Step */
 
 const VERTEX_SHADER = `
 in vec3 position;
@@ -129,9 +134,22 @@ export class ShaderRenderer {
     );
     copy.frustumCulled = false;
     this.copyScene.add(copy);
+    this._copySource = /** @type {THREE.RawShaderMaterial} */ (copy.material).uniforms.frame;
 
     this._black = this.uniforms.iChannel0.value;
     this._channels = [null, null, null, null]; // textures loaded into iChannel0..3
+
+    /** The passes of a frame, in order, with their compiled materials (the last is Image). @type {Step[]} */
+    this.steps = [];
+    /** Buffer A–D of a multipass shader. */
+    this.buffers = new PassBuffers(this.three, (source, target, width, height) => this._copy(source, target, width, height));
+    /** Shadertoy's keyboard texture: 256 × 3 bytes, nearest (keyboard.js). */
+    this.keyboard = new THREE.DataTexture(new Uint8Array(256 * 3), 256, 3, THREE.RedFormat, THREE.UnsignedByteType);
+    this.keyboard.needsUpdate = true;
+    /** Sampler objects for the pass being drawn, by unit (_samplersOf). @type {Array<{unit: number, sampler: WebGLSampler}>} */
+    this._samplers = [];
+    /** @type {Map<string, WebGLSampler>} */
+    this._samplerObjects = new Map();
 
     this._compiling = null; // set while three.js checks a program, read by _onShaderError
     this._serial = 0; // compiles started
@@ -147,7 +165,7 @@ export class ShaderRenderer {
 
   /** True once some shader has compiled (render() draws nothing before). */
   get hasProgram() {
-    return this.mesh.material !== null;
+    return this.steps.length > 0;
   }
 
   /**
@@ -170,32 +188,81 @@ export class ShaderRenderer {
   }
 
   /**
-   * Compiles `source` (a Shadertoy Image file) with `hostBlock` between header and file.
-   * Resolves once it is compiled: on success it becomes the drawn shader; on failure it
-   * rejects with a ShaderCompileError and the previous shader stays.
+   * Compiles every pass of `project` (a Shadertoy shader: Common, buffers, Image) with
+   * `hostBlock` between header and Common. Resolves once all are compiled: then they become the
+   * drawn shader; if any fails it rejects with a ShaderCompileError naming each message's tab
+   * (for a plain file: its lines), and the previous shader stays.
+   * @param {import('../shadertoy/multipass.js').MultipassShader} project
+   * @param {string} hostBlock
+   * @param {string} [fileName]
    */
-  async compile(source, hostBlock, fileName = 'shader') {
-    const { code, firstSourceLine } = composeImageShader(source, { hostBlock });
+  async compile(project, hostBlock, fileName = 'shader') {
+    const schedule = frameSchedule(project);
+    const multipass = project.common !== null || schedule.length > 1;
+    const serial = ++this._serial;
+    const sources = Object.fromEntries([['Common', project.common ?? ''], ...project.passes.map((pass) => [pass.name, pass.code])]);
+    const messages = [];
+    /** @type {Step[]} */
+    const steps = [];
+    for (const step of schedule) {
+      const { pass } = step;
+      const composed = composePassShader(pass.code, {
+        common: project.common,
+        hostBlock,
+        kind: pass.kind,
+        name: pass.name,
+        channelTypes: channelTypes(pass),
+      });
+      const check = {
+        userText: (project.common === null ? '' : project.common + '\n') + pass.code,
+        sections: multipass ? composed.sections : null,
+      };
+      try {
+        steps.push({ ...step, material: await this._compileMaterial(composed, check) });
+      } catch (error) {
+        if (!error.messages) throw error;
+        messages.push(...error.messages);
+      }
+    }
+    if (messages.length) {
+      for (const step of steps) this._remember(step.material.fragmentShader, step.material);
+      const report = multipass ? formatPassMessages(messages, sources) : formatShaderMessages(messages, project.passes[0].code, fileName);
+      throw new ShaderCompileError(report, messages);
+    }
+    for (const step of steps) this._remember(step.material.fragmentShader, step.material);
+    if (serial < this._installed) return; // a newer compile got in first
+    this._installed = serial;
+    this.steps = steps;
+    this.mesh.material = steps[steps.length - 1].material;
+    /** @type {Map<string, import('../shadertoy/multipass.js').Sampler>} */
+    const wanted = new Map();
+    for (const step of steps) if (step.target !== 'screen') wanted.set(step.target, { filter: 'nearest', wrap: 'clamp', vflip: false });
+    for (const step of steps)
+      for (const binding of step.bindings)
+        if (binding.source === 'buffer' && binding.sampler?.filter === 'mipmap')
+          wanted.set(binding.buffer, { filter: 'mipmap', wrap: 'clamp', vflip: false });
+    this.buffers.use(wanted);
+  }
+
+  /**
+   * One pass's material, compiled (or the one kept from before for the same code).
+   * @param {{code: string, firstSourceLine: number}} composed
+   * @param {{userText: string, sections: import('../shadertoy/header.js').PassSection[] | null}} check
+   */
+  async _compileMaterial({ code, firstSourceLine }, { userText, sections }) {
     // three.js writes `#version` itself (glslVersion), ahead of its own #defines
     const body = code.slice(code.indexOf('\n') + 1);
     const cached = this._compiled.get(body);
-    if (cached) {
-      this._installed = ++this._serial;
-      this._remember(body, cached);
-      this.mesh.material = cached;
-      return;
-    }
+    if (cached) return cached;
     const material = new THREE.RawShaderMaterial({
       glslVersion: THREE.GLSL3,
       vertexShader: VERTEX_SHADER,
       fragmentShader: body,
-      uniforms: this.uniforms,
+      uniforms: this._passUniforms(),
       depthTest: false,
       depthWrite: false,
       toneMapped: false,
     });
-
-    const serial = ++this._serial;
     this.stagingMesh.material = material;
     // compile() creates the program now; compileAsync then waits for it without blocking, where
     // the driver can (KHR_parallel_shader_compile; asking three.js for it would warn otherwise)
@@ -207,21 +274,123 @@ export class ShaderRenderer {
 
     // Asking for the uniforms makes three.js check the program, calling onShaderError on failure.
     const program = /** @type {{currentProgram: {getUniforms: () => unknown}}} */ (this.three.properties.get(material)).currentProgram;
-    const check = { source, body, firstBodyLine: firstSourceLine - 1, fileName, error: null };
+    const check = { userText, sections, body, firstBodyLine: firstSourceLine - 1, error: null };
     this._compiling = check;
     try {
       program.getUniforms();
     } finally {
       this._compiling = null;
     }
-    if (check.error || serial < this._installed) {
-      material.dispose(); // broken, or a newer compile got in first
-      if (check.error) throw check.error;
-      return;
+    if (check.error) {
+      material.dispose();
+      throw check.error;
     }
-    this._installed = serial;
-    this.mesh.material = material;
-    this._remember(body, material);
+    return material;
+  }
+
+  /**
+   * A pass's uniforms: Shadertoy's and the controls', shared by every pass (one write reaches them
+   * all), but its own channels and their resolutions.
+   */
+  _passUniforms() {
+    const own = {
+      iChannel0: { value: this._black },
+      iChannel1: { value: this._black },
+      iChannel2: { value: this._black },
+      iChannel3: { value: this._black },
+      iChannelResolution: { value: new Array(12).fill(0) },
+    };
+    return { ...this.uniforms, ...own };
+  }
+
+  /**
+   * Binds what a pass reads, for a frame of width × height, and returns where it draws: a
+   * buffer's target, or null for the Image pass (the caller's target).
+   * @param {Step} step
+   * @param {number} width
+   * @param {number} height
+   */
+  beginStep(step, width, height) {
+    const uniforms = step.material.uniforms;
+    for (const name of Object.keys(this.uniforms)) if (!(name in uniforms)) uniforms[name] = this.uniforms[name]; // controls added later
+    const resolution = uniforms.iChannelResolution.value;
+    for (const binding of step.bindings) {
+      const i = binding.channel;
+      let texture = null;
+      let size = binding.resolution === 'canvas' ? [width, height, 1] : binding.resolution;
+      if (binding.source === 'buffer') texture = this.buffers.read(/** @type {string} */ (binding.buffer));
+      else if (binding.source === 'keyboard') texture = this.keyboard;
+      else if (binding.source === 'none' && step.target === 'screen' && this._channels[i]) {
+        texture = this._channels[i]; // an image the page put into this channel
+        size = [texture.image.width, texture.image.height, 1];
+      } else if (binding.samplerType === '2D') texture = this._black;
+      // else null: three.js binds an empty cube or 3D texture for a samplerCube / sampler3D
+      uniforms[`iChannel${i}`].value = texture;
+      resolution.splice(i * 3, 3, ...size);
+    }
+    this.mesh.material = step.material;
+    step.material.uniformsNeedUpdate = true; // the same material drawn again may read other textures
+    this._samplers = this._samplersOf(step);
+    return step.target === 'screen' ? null : this.buffers.writeTarget(step.target);
+  }
+
+  /**
+   * The WebGL sampler objects a pass's buffer channels are read with, by texture unit. A buffer's
+   * texture has one filter and wrap of its own, but Shadertoy sets them per channel (two passes,
+   * or two channels of one pass, may read one buffer differently); a sampler object bound to a
+   * unit overrides the texture's own. three.js hands out units in the order of the program's
+   * active uniforms, samplers only (WebGLUniforms.upload → allocateTextureUnit), so iChannel i's
+   * unit is its place among them.
+   * @param {Step} step
+   * @returns {Array<{unit: number, sampler: WebGLSampler}>}
+   */
+  _samplersOf(step) {
+    const program = /** @type {{currentProgram?: {getUniforms: () => {seq: Array<{id: string, type: number}>}}}} */ (
+      this.three.properties.get(step.material)
+    ).currentProgram;
+    if (!program) return [];
+    const gl = this.gl;
+    /** @type {number[]} */
+    const samplerTypes = [gl.SAMPLER_2D, gl.SAMPLER_CUBE, gl.SAMPLER_3D, gl.SAMPLER_2D_ARRAY, gl.SAMPLER_2D_SHADOW];
+    const units = new Map();
+    let unit = 0;
+    for (const uniform of program.getUniforms().seq) {
+      if (!samplerTypes.includes(uniform.type)) continue;
+      const channel = /^iChannel([0-3])$/.exec(uniform.id);
+      if (channel) units.set(Number(channel[1]), unit);
+      unit++;
+    }
+    return step.bindings
+      .filter((binding) => (binding.source === 'buffer' || binding.source === 'keyboard') && binding.sampler && units.has(binding.channel))
+      .map((binding) => ({ unit: units.get(binding.channel), sampler: this._samplerObject(/** @type {any} */ (binding.sampler)) }));
+  }
+
+  /** @param {import('../shadertoy/multipass.js').Sampler} sampler */
+  _samplerObject({ filter, wrap }) {
+    const key = `${filter} ${wrap}`;
+    let object = this._samplerObjects.get(key);
+    if (object) return object;
+    const gl = this.gl;
+    object = /** @type {WebGLSampler} */ (gl.createSampler());
+    const min = { nearest: gl.NEAREST, linear: gl.LINEAR, mipmap: gl.LINEAR_MIPMAP_LINEAR }[filter] ?? gl.LINEAR;
+    gl.samplerParameteri(object, gl.TEXTURE_MIN_FILTER, min);
+    gl.samplerParameteri(object, gl.TEXTURE_MAG_FILTER, filter === 'nearest' ? gl.NEAREST : gl.LINEAR);
+    const mode = wrap === 'repeat' ? gl.REPEAT : gl.CLAMP_TO_EDGE;
+    gl.samplerParameteri(object, gl.TEXTURE_WRAP_S, mode);
+    gl.samplerParameteri(object, gl.TEXTURE_WRAP_T, mode);
+    this._samplerObjects.set(key, object);
+    return object;
+  }
+
+  /** A pass has drawn all of its rows. @param {Step} step */
+  endStep(step) {
+    if (step.target !== 'screen') this.buffers.swap(step.target);
+  }
+
+  /** The keyboard texture's bytes for the next frame (Shadertoy's 256 × 3: keyboard.js). @param {Uint8Array} data */
+  setKeyboard(data) {
+    this.keyboard.image.data.set(data);
+    this.keyboard.needsUpdate = true;
   }
 
   /** Keeps the most recent compiled materials (MATERIALS_KEPT); disposes the ones that fall out. */
@@ -231,13 +400,13 @@ export class ShaderRenderer {
     for (const [key, old] of this._compiled) {
       if (this._compiled.size <= MATERIALS_KEPT) break;
       this._compiled.delete(key);
-      if (old !== this.mesh.material) old.dispose();
+      if (!this.steps.some((step) => step.material === old)) old.dispose();
     }
   }
 
   /** Forgets the compiled materials but the one on screen (their programs died with a lost context). */
   forgetCompiled() {
-    for (const material of this._compiled.values()) if (material !== this.mesh.material) material.dispose();
+    for (const material of this._compiled.values()) if (!this.steps.some((step) => step.material === material)) material.dispose();
     this._compiled.clear();
   }
 
@@ -245,16 +414,23 @@ export class ShaderRenderer {
   _onShaderError(gl, program, vertexShader, fragmentShader) {
     const check = this._compiling;
     if (!check) return;
-    const offset = userLineOffset(gl.getShaderSource(fragmentShader) ?? '', check.body, check.firstBodyLine, check.source);
-    const userLines = check.source.split('\n').length;
+    const offset = userLineOffset(gl.getShaderSource(fragmentShader) ?? '', check.body, check.firstBodyLine, check.userText);
+    const log = gl.getShaderInfoLog(fragmentShader) ?? '';
+    const fragment = check.sections
+      ? parsePassShaderLog(log, offset, check.sections)
+      : parseShaderLog(log, offset, check.userText.split('\n').length).map((m) => ({ ...m, pass: null }));
     const messages = [
-      ...parseShaderLog(gl.getShaderInfoLog(fragmentShader) ?? '', offset, userLines),
-      ...parseShaderLog(gl.getShaderInfoLog(vertexShader) ?? '', null, 0).map((m) => ({ ...m, message: `vertex shader: ${m.message}` })),
+      ...fragment,
+      ...parseShaderLog(gl.getShaderInfoLog(vertexShader) ?? '', null, 0).map((m) => ({
+        ...m,
+        pass: null,
+        message: `vertex shader: ${m.message}`,
+      })),
     ];
     if (messages.length === 0) {
-      messages.push(...parseShaderLog(gl.getProgramInfoLog(program) ?? 'link failed', null, 0));
+      messages.push(...parseShaderLog(gl.getProgramInfoLog(program) ?? 'link failed', null, 0).map((m) => ({ ...m, pass: null })));
     }
-    check.error = new ShaderCompileError(formatShaderMessages(messages, check.source, check.fileName), messages);
+    check.error = new ShaderCompileError('', messages);
   }
 
   /** True between webglcontextlost and webglcontextrestored. */
@@ -318,6 +494,27 @@ export class ShaderRenderer {
     if (this.frameTarget.width === width && this.frameTarget.height === height) return;
     this.frameTarget.setSize(width, height);
     this.three.setSize(width, height, false);
+    this.buffers.resize(width, height);
+  }
+
+  /**
+   * Draws `source` into `target` texel for texel over width × height from the lower left.
+   * @param {THREE.Texture} source
+   * @param {THREE.WebGLRenderTarget} target
+   * @param {number} width
+   * @param {number} height
+   */
+  _copy(source, target, width, height) {
+    this._copySource.value = source;
+    target.scissor.set(0, 0, width, height);
+    target.scissorTest = true;
+    this.three.setRenderTarget(target);
+    try {
+      this.three.render(this.copyScene, this.camera);
+    } finally {
+      this.three.setRenderTarget(null);
+      this._copySource.value = this.frameTarget.texture;
+    }
   }
 
   get width() {
@@ -340,17 +537,24 @@ export class ShaderRenderer {
     target.scissor.set(0, y0, target.width, y1 - y0);
     target.scissorTest = y0 > 0 || y1 < target.height;
     this.three.setRenderTarget(target);
+    for (const { unit, sampler } of this._samplers) this.gl.bindSampler(unit, sampler);
     try {
       this.three.render(this.scene, this.camera);
     } finally {
+      // unbound again: a sampler left on a unit would override every texture drawn there later
+      for (const { unit } of this._samplers) this.gl.bindSampler(unit, null);
       this.three.setRenderTarget(null);
     }
     return true;
   }
 
-  /** Draws the whole frame at once (the benchmark's way: one draw, nothing else). */
+  /** Draws the whole frame at once, each pass in one draw (the benchmark's way). */
   render() {
-    return this.drawRows(0, this.height);
+    for (const step of this.steps) {
+      this.drawRows(0, this.height, this.beginStep(step, this.width, this.height) ?? this.frameTarget);
+      this.endStep(step);
+    }
+    return this.hasProgram;
   }
 
   /**

@@ -29,6 +29,7 @@ const NOMINAL_RATE = FIRST_FRAME_UNIFORMS.iFrameRate;
  * @property {number} frame iFrame
  * @property {number[]} mouse iMouse: [x, y, z, w]
  * @property {number[]} date iDate: [year, month (0-based), day, seconds since midnight]
+ * @property {Uint8Array} [keyboard] Shadertoy's keyboard texture (keyboard.js), for the passes that read it
  */
 
 export class ShadertoyInputs {
