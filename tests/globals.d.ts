@@ -39,6 +39,10 @@ export interface RaytracerInfo {
   hung: boolean;
   /** how far the frame being drawn has got (rows done, bands drawn); null when none is */
   progress: { y: number; height: number; bands: number } | null;
+  /** "Converge when still" is on */
+  converging: boolean;
+  /** frames drawn since the last change */
+  stillFrames: number;
   /** Only on a page that could not start (installFailedAutomation), which reports nothing else. */
   error?: string;
 }
@@ -66,6 +70,8 @@ export interface RaytracerHook {
   setSource(source: string): Promise<CompileOutcome>;
   /** Runs a multipass shader given as Shadertoy's JSON export. */
   setProject(json: object | string): Promise<CompileOutcome & { notes: string[] }>;
+  /** "Converge when still" on or off; `frames`: still frames to draw. */
+  setConverging(on: boolean, options?: { frames?: number }): Promise<void>;
   play(): void;
   pause(): void;
   togglePlay(): void;

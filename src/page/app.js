@@ -22,6 +22,7 @@ import { LiveControlForm } from './live-controls.js';
 import { loadImage } from './shader-loader.js';
 import { KeyboardState, keyCodeOf } from '../shadertoy/keyboard.js';
 import { frameSchedule, singlePass } from '../shadertoy/multipass.js';
+import { MAX_SAMPLES, progressiveTabs } from '../shadertoy/progressive.js';
 
 /** @typedef {import('../shadertoy/controls.js').Control} Control */
 /** @typedef {import('./events.js').AppEvents} AppEvents */
@@ -66,6 +67,14 @@ export class RaytracerApp extends Emitter {
     this.notes = [];
     /** Shadertoy's keyboard texture, for the passes that read it. */
     this.keyboard = new KeyboardState();
+    /** "Converge when still": the shader runs as its progressive form (setConverging). */
+    this.converging = false;
+    /** Frames drawn since the last change (a converging shader adds one sample per frame). */
+    this.stillFrames = 0;
+    /** Frames a converging shader is drawn while the view is still: then its buffer sums no more. */
+    this.convergeFrames = MAX_SAMPLES;
+    /** The single-pass shader that converges (setConverging(false) goes back to it). @type {ShaderVersion | null} */
+    this._beforeConverging = null;
     /** Where the source came from. @type {'builtin' | 'url' | 'editor' | 'file'} */
     this.origin = 'builtin';
     /** The shader's URL as the page was given it, when it came from one (for a shared link). @type {string | null} */
@@ -175,7 +184,8 @@ export class RaytracerApp extends Emitter {
    * Takes a new shader: reads its control blocks (one per tab at most; keeping current values of
    * controls that survive); the page rebuilds its panel on the 'source' event. Call compile() after.
    * @param {MultipassShader} project
-   * @param {{name?: string, origin?: RaytracerApp['origin'], url?: string|null, info?: object | null}} [from] where it came from
+   * @param {{name?: string, origin?: RaytracerApp['origin'], url?: string|null, info?: object | null, converging?: boolean}} [from]
+   *   where it came from (converging: the progressive form setConverging makes)
    */
   loadProject(project, from = {}) {
     /** @type {Control[]} */
@@ -192,6 +202,7 @@ export class RaytracerApp extends Emitter {
     this.projectInfo = from.info ?? null;
     this.notes = frameSchedule(project).flatMap((step) => step.bindings.flatMap((binding) => (binding.note ? [binding.note] : [])));
     this.liveForm.reset();
+    if (!from.converging) this.converging = false;
     if (from.name) this.fileName = from.name;
     if (from.origin) {
       this.origin = from.origin;
@@ -210,6 +221,40 @@ export class RaytracerApp extends Emitter {
    */
   setSource(source, from = {}) {
     this.loadSource(source, from);
+    return this.compile();
+  }
+
+  /**
+   * "Converge when still": runs a single-pass shader (the built-in raytracer) as its progressive
+   * multipass form (progressive.js: Buffer A adds one jittered sample per pixel per frame while
+   * nothing changes; Image shows the mean and the sample count), pausing the clock so that the
+   * view is still; off, the shader as it was. Frames keep coming while the view is still, up to
+   * `frames` (MAX_SAMPLES by default), and start again from one sample after any change.
+   * @param {boolean} on
+   * @param {{frames?: number}} [options]
+   */
+  async setConverging(on, { frames = MAX_SAMPLES } = {}) {
+    this.convergeFrames = Math.max(1, Math.min(MAX_SAMPLES, Math.round(frames)));
+    if (on === this.converging) return this.requestRender();
+    if (!on) {
+      const back = /** @type {ShaderVersion} */ (this._beforeConverging);
+      this.converging = false;
+      this._beforeConverging = null;
+      return this.setProject(back.project, back);
+    }
+    if (this.isMultipass) throw new Error('only a single-pass shader converges: this one has buffers of its own');
+    this._beforeConverging = {
+      project: this.project,
+      info: this.projectInfo,
+      name: this.fileName,
+      origin: this.origin,
+      url: this.shaderUrl,
+    };
+    const tabs = progressiveTabs(this.source);
+    this.pause();
+    this.converging = true;
+    this.loadProject(tabs.model, { converging: true, name: this.fileName, origin: this.origin, url: this.shaderUrl });
+    this.applyControls({ SHOW_SAMPLE_COUNT: 1 }, 'Converge when still');
     return this.compile();
   }
 
@@ -422,13 +467,23 @@ export class RaytracerApp extends Emitter {
   /** Draws at the next animation frame (once, however often it is asked, and never while a frame is under way). */
   requestRender() {
     this._dirty = true;
+    this.stillFrames = 0;
+    this._schedule();
+  }
+
+  _schedule() {
     if (!this._raf && !this._drawing) this._raf = requestAnimationFrame((now) => this._tick(now));
+  }
+
+  /** Whether converging asks for another frame: while the view is still, up to convergeFrames. */
+  get _converging() {
+    return this.converging && this.stillFrames < this.convergeFrames;
   }
 
   /** @param {number} now */
   _tick(now) {
     this._raf = 0;
-    if (this._drawing || !(this._dirty || this.inputs.playing)) return;
+    if (this._drawing || !(this._dirty || this.inputs.playing || this._converging)) return;
     const readBack = this.readBackNext;
     this.readBackNext = false;
     this.drawFrame(now, readBack).catch(() => {}); // a lost context: the page says so
@@ -472,7 +527,8 @@ export class RaytracerApp extends Emitter {
     }
     const result = { pixels: drawn.pixels, width, height, frame: inputs.frame };
     this.emit('drawn', result);
-    if (this.inputs.playing || this._dirty) this.requestRender();
+    this.stillFrames++;
+    if (this.inputs.playing || this._dirty || this._converging) this._schedule();
     return result;
   }
 
@@ -497,7 +553,9 @@ export class RaytracerApp extends Emitter {
     if (!this.renderer.hasProgram || this.renderer.contextLost) throw new Error('nothing to capture: no shader is running');
     if (!this.inputs.last) await this.drawFrame();
     const last = /** @type {import('./shadertoy-inputs.js').FrameInputs} */ (this.inputs.last);
-    const wanted = size ?? { width: last.width, height: last.height };
+    // a multipass shader's buffers are the canvas's size: its Image pass is drawn again over them
+    // as they are, which only means the same picture at the same size
+    const wanted = size && !this.isMultipass ? size : { width: last.width, height: last.height };
     const rounded = { width: Math.max(1, Math.round(wanted.width)), height: Math.max(1, Math.round(wanted.height)) };
     const { width, height } = fitGpu(rounded, this.renderer.maxSize, 'screenshot size');
     return { width, height, data: await this.renderer.redraw(last, width, height) };

@@ -14,6 +14,8 @@
 //   setSource(glsl)       Promise<{ok, error?}>: compiles another Image-tab source.
 //   setProject(json)      Promise<{ok, error?, notes}>: runs a multipass shader given as
 //                         Shadertoy's JSON export (an object or its text).
+//   setConverging(on, {frames}?)  Promise: "Converge when still" on or off (app.setConverging):
+//                         frames: how many still frames to draw (default 4096).
 //   play(), pause(), togglePlay(), restart(), setTime(seconds), setSpeed(s), setMouse([x, y, z, w])
 //   nextFrame()           Promise<{width, height, data, iFrame}>: the next frame the page draws by
 //                         itself (after a click, a key, a play tick), read back; rows top to
@@ -41,7 +43,8 @@
 //                         the shader on screen has the live controls compiled in, 'uniforms'
 //                         while they move: see live-controls.js), hung (the watchdog's verdict:
 //                         a frame has gone HANG_AFTER_MS without progress), progress ({y,
-//                         height, bands}: how far the frame being drawn has got; null if none)}
+//                         height, bands}: how far the frame being drawn has got; null if none),
+//                         converging, stillFrames (frames since the last change)}
 //
 // Every method waits for `ready` and for any compile under way, so a call right after
 // setControls() sees the new values.
@@ -113,6 +116,11 @@ export function installAutomation(app, ready, ui) {
       } catch (error) {
         return { ok: false, error: error.report ?? error.message, notes: [] };
       }
+    },
+
+    async setConverging(on, options = {}) {
+      await settled();
+      await app.setConverging(Boolean(on), options);
     },
 
     play: () => app.play(),
@@ -187,6 +195,8 @@ export function installAutomation(app, ready, ui) {
         liveControls: app.liveForm.asConstants ? 'constants' : 'uniforms',
         hung: app.renderer.hung,
         progress: app.renderer.progress,
+        converging: app.converging,
+        stillFrames: app.stillFrames,
       };
     },
   };
@@ -204,6 +214,7 @@ export function installFailedAutomation(error) {
     setControls: fail,
     setSource: fail,
     setProject: fail,
+    setConverging: fail,
     nextFrame: fail,
     loseContext() {},
     restoreContext() {},

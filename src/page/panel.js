@@ -36,6 +36,18 @@ export function screenshotSize(choice, width, height) {
 
 export class Panel {
   /**
+   * Shows whether the shader converges, and whether it can (a single-pass shader can; one with
+   * buffers of its own cannot).
+   * @param {boolean} on
+   * @param {boolean} available
+   */
+  setConverging(on, available) {
+    this._state.converge = on;
+    this._converge.updateDisplay();
+    this._converge.enable(available || on);
+  }
+
+  /**
    * @param {object} options
    * @param {number} options.scale
    * @param {number} options.cap
@@ -44,14 +56,15 @@ export class Panel {
    * @param {(cap: number) => void} options.onCap
    * @param {(name: string, value: unknown) => void} options.onControl
    * @param {(index: number, file: File|null) => void} options.onChannel
+   * @param {(on: boolean) => void} [options.onConverge] "Converge when still" switched
    */
-  constructor({ scale, cap, sizeFixed, onScale, onCap, onControl, onChannel }) {
+  constructor({ scale, cap, sizeFixed, onScale, onCap, onControl, onChannel, onConverge = () => {} }) {
     // docked beside the canvas (below it on a phone: style.css), never over the scene
     this.gui = new GUI({ title: 'Controls', container: document.getElementById('panel-dock') ?? document.body });
     if (window.innerWidth < 640) this.gui.close(); // a phone: the picture first, the panel one tap away
     this.onControl = onControl;
 
-    this._state = { scale, cap: Object.values(CAP_CHOICES).includes(cap) ? cap : 0, screenshot: 'current' };
+    this._state = { scale, cap: Object.values(CAP_CHOICES).includes(cap) ? cap : 0, screenshot: 'current', converge: false };
     const view = this.gui.addFolder('View');
     const scaleController = view.add(this._state, 'scale', MIN_SCALE, MAX_SCALE, 0.05).name('Resolution scale').onChange(onScale);
     const capController = view
@@ -63,6 +76,8 @@ export class Panel {
       capController.name('Max size (size fixed)').disable();
     }
     view.add(this._state, 'screenshot', SCREENSHOT_CHOICES).name('Screenshot size');
+    // a single-pass shader's progressive form: one more sample per pixel each still frame
+    this._converge = view.add(this._state, 'converge').name('Converge when still').onChange(onConverge);
 
     // one hidden file input serves the four channels
     this._file = Object.assign(document.createElement('input'), { type: 'file', accept: 'image/*', hidden: true });

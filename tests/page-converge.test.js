@@ -1,0 +1,79 @@
+// "Converge when still" (issue 13): the built-in raytracer as its progressive multipass form in
+// the page. After N still frames the picture (what Screenshot saves: the Image pass over the
+// buffer) is within the same bounds of the float64 reference with N samples of the same jitter
+// sequence as the raw-WebGL run in tests/progressive.test.js, and a change starts the sum again.
+
+import fs from 'node:fs';
+import { describe, expect, test } from 'vitest';
+import { formatImageError, imageError } from '../src/reference/error.js';
+import { renderReference } from '../src/reference/render.js';
+import { SHADER_FILE } from './harness/config.js';
+import { decodeRgba } from './harness/page.js';
+import { info, withPage } from './page-helpers.js';
+
+const WIDTH = 64;
+const HEIGHT = 36;
+const FRAMES = 16;
+/** The bounds tests/progressive.test.js holds the progressive buffer to, for the same reason:
+ * the page's image is 8-bit, so RMSE 2e-3 and no pixel 8/255 away is a match to the reference. */
+const RMSE_BOUND = 2e-3;
+const MAX_BOUND = 8 / 255;
+
+describe('Converge when still', () => {
+  test(`${FRAMES} still frames of the built-in raytracer match the float64 reference with ${FRAMES} samples; a change starts again`, async () => {
+    await withPage(async ({ page, goto }) => {
+      await goto(`?size=${WIDTH}x${HEIGHT}&time=0`);
+      await page.evaluate((frames) => window.raytracer.setConverging(true, { frames }), FRAMES);
+      expect((await info(page)).controls.SHOW_SAMPLE_COUNT).toBe(1); // the count is shown
+      // without the count drawn over it: the picture Screenshot saves
+      await page.evaluate(() => window.raytracer.setControls({ SHOW_SAMPLE_COUNT: 0 }));
+      // the compiles settle (the live controls end as constants); a Restart then clears the sum
+      await page.waitForFunction(() => window.raytracer.info().liveControls === 'constants', { polling: 100 });
+      await page.evaluate(() => window.raytracer.restart());
+      await page.waitForFunction((n) => window.raytracer.info().stillFrames >= n, { polling: 100 }, FRAMES);
+      const state = await info(page);
+      expect(state.converging).toBe(true);
+      expect(state.playing).toBe(false);
+      expect(state.stillFrames).toBe(FRAMES); // and no more: it stops when it has them
+
+      const shot = await page.evaluate(() => window.raytracer.capture());
+      const image = { width: shot.width, height: shot.height, data: decodeRgba(shot.data, shot.width, shot.height, 'capture') };
+      const source = fs.readFileSync(SHADER_FILE, 'utf8');
+      const reference = renderReference(
+        source,
+        { width: WIDTH, height: HEIGHT, time: 0, mouse: [0, 0, 0, 0] },
+        { mode: 'progressive', samples: FRAMES },
+      );
+      const error = imageError(image, reference);
+      console.log(`page, converged ${FRAMES} frames at ${WIDTH}x${HEIGHT}: ${formatImageError(error)}`);
+      expect(error.rmse).toBeLessThan(RMSE_BOUND);
+      expect(error.maxAbs).toBeLessThanOrEqual(MAX_BOUND);
+
+      // the camera moves: the sum starts again from the new view's first sample
+      const moved = [40, 30, 40, -30];
+      await page.evaluate(() => window.raytracer.setConverging(true, { frames: 1 }));
+      await page.waitForFunction(() => window.raytracer.info().stillFrames === 1, { polling: 50 });
+      const before = (await info(page)).frame;
+      await page.evaluate((mouse) => window.raytracer.setMouse(mouse), moved);
+      await page.waitForFunction(
+        (f) => window.raytracer.info().frame > f && window.raytracer.info().stillFrames === 1,
+        { polling: 50 },
+        before,
+      );
+      const restarted = await page.evaluate(() => window.raytracer.capture());
+      const first = renderReference(source, { width: WIDTH, height: HEIGHT, time: 0, mouse: moved }, { mode: 'progressive', samples: 1 });
+      const restartError = imageError(
+        { width: WIDTH, height: HEIGHT, data: decodeRgba(restarted.data, WIDTH, HEIGHT, 'capture after the camera moved') },
+        first,
+      );
+      console.log(`page, one frame after the camera moved: ${formatImageError(restartError)}`);
+      expect(restartError.rmse).toBeLessThan(RMSE_BOUND);
+
+      // off again: the single-pass shader as it was
+      await page.evaluate(() => window.raytracer.setConverging(false));
+      const after = await info(page);
+      expect(after.converging).toBe(false);
+      expect(after.fileName).toBe('shaders/raytrace.glsl');
+    });
+  });
+});
