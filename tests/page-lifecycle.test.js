@@ -28,6 +28,14 @@ describe('errors', () => {
         const alert = await overlayText(page);
         expect(alert).toContain('broken.glsl did not compile');
         expect(alert).toContain('broken.glsl:4:');
+
+        // a shader that compiles after it: it draws, and reading it back works (the first
+        // compile's error, which `ready` keeps, no longer stands in the way)
+        const outcome = await page.evaluate((source) => window.raytracer.setSource(source), solid(0, 255, 0));
+        expect(outcome).toEqual({ ok: true });
+        expect(pixel(await readPixels(page), 3, 3)).toEqual([0, 255, 0]);
+        const shot = await page.evaluate(() => window.raytracer.capture({ width: 8, height: 4 }));
+        expect([shot.width, shot.height]).toEqual([8, 4]);
       });
     });
   });
