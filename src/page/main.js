@@ -13,11 +13,32 @@ import { installUi } from './ui.js';
 import { sourceFromHash } from './share-link.js';
 import { sharedKey, showRestoredNote } from './kept-source.js';
 import { formatShaderMessages } from '../shadertoy/shader-errors.js';
+import { formatPassMessages } from '../shadertoy/pass-errors.js';
+import { singlePass } from '../shadertoy/multipass.js';
+import { deserializeProject, isJsonName, projectTabs, readShaderText, serializeProject } from './project-files.js';
 
 const BUILTIN_NAME = 'shaders/raytrace.glsl';
 
 /** @typedef {{title: string, detail: string}} Notice */
-/** @typedef {{source: string, from: {name: string, origin: 'builtin' | 'url' | 'editor', url?: string}, notice?: Notice}} FirstSource */
+/**
+ * @typedef {object} FirstSource the shader the page opens with
+ * @property {import('../shadertoy/multipass.js').MultipassShader} project
+ * @property {{name: string, origin: 'builtin' | 'url' | 'editor', url?: string, info?: object | null}} from
+ * @property {Notice} [notice]
+ */
+
+/**
+ * A compile message as the error box shows it: "Buffer A:12: error: ..." for a tab of a
+ * multipass shader, "NAME:12: error: ..." for a single-pass one; the line's text under it.
+ * @param {RaytracerApp} app
+ * @param {string} fileName
+ */
+function messageFormatter(app, fileName) {
+  const tabs = Object.fromEntries(projectTabs(app.project).map((t) => [t.name, t.code]));
+  const source = app.source;
+  return (/** @type {{severity: string, pass?: string | null, line: number | null, message: string}} */ m) =>
+    m.pass ? formatPassMessages([{ ...m, pass: m.pass }], tabs) : formatShaderMessages([m], source, fileName);
+}
 
 /**
  * The page could not start (no WebGL2, most likely): say so on the page, not in a blank one.
@@ -48,7 +69,7 @@ function showAppOnPage(app, overlay) {
     if (error) {
       const fallback = app.renderer.hasProgram ? ' (still showing the last version that compiled)' : '';
       const title = `${fileName} did not compile${fallback}`;
-      if (error.messages?.length) overlay.showMessages(title, error.messages, (m) => formatShaderMessages([m], app.source, fileName));
+      if (error.messages?.length) overlay.showMessages(title, error.messages, messageFormatter(app, fileName));
       else overlay.show(title, error.report ?? error.message);
       if (!app.renderer.hasProgram) root.error = 'shader-compile';
       return;
@@ -108,55 +129,64 @@ function showWatchdog(app, overlay) {
   });
 }
 
+/** The built-in raytracer, with a notice when the page was asked for another shader. @param {Notice} [notice] @returns {FirstSource} */
+const builtin = (notice) => ({ project: singlePass(builtinSource), from: { name: BUILTIN_NAME, origin: 'builtin' }, notice });
+
 /**
- * The first source: the ?shader= file, or the built-in raytracer (also when that file cannot be
- * had: then with a notice that says so).
+ * The first shader: the one a link carries (#source=), the ?shader= file, or the built-in
+ * raytracer (also when those cannot be had or read: then with a notice that says so). A text
+ * that is Shadertoy's JSON export (a .json file, or any text that looks like JSON) is read as one.
  * @param {{shader?: string, refusedShader?: {url: string, why: string}}} params
  * @returns {Promise<FirstSource>}
  */
 async function initialSource(params) {
   try {
     const shared = await sourceFromHash(location.hash);
-    if (shared) return { source: shared.source, from: { name: shared.name, origin: 'editor' } };
+    if (shared) {
+      const { model, info } = readShaderText(shared.source);
+      return { project: model, from: { name: shared.name, origin: 'editor', info } };
+    }
   } catch (error) {
     console.warn(`The shader in the link's #source= could not be read: ${error.message}`);
-    const notice = { title: 'Could not read the shader in this link', detail: `${error.message}\nShowing the built-in raytracer instead.` };
-    return { source: builtinSource, from: { name: BUILTIN_NAME, origin: 'builtin' }, notice };
+    return builtin({
+      title: 'Could not read the shader in this link',
+      detail: `${error.message}\nShowing the built-in raytracer instead.`,
+    });
   }
   if (params.refusedShader) {
     const { url, why } = params.refusedShader;
-    const notice = { title: `Could not load ${url}`, detail: `${why}.\nShowing the built-in raytracer (${BUILTIN_NAME}) instead.` };
-    return { source: builtinSource, from: { name: BUILTIN_NAME, origin: 'builtin' }, notice };
+    return builtin({ title: `Could not load ${url}`, detail: `${why}.\nShowing the built-in raytracer (${BUILTIN_NAME}) instead.` });
   }
-  if (!params.shader) return { source: builtinSource, from: { name: BUILTIN_NAME, origin: 'builtin' } };
+  if (!params.shader) return builtin();
   try {
-    const source = await fetchShader(params.shader);
-    return { source, from: { name: shaderName(params.shader), origin: 'url', url: params.shader } };
+    const text = await fetchShader(params.shader);
+    const { model, info } = readShaderText(text, { json: isJsonName(params.shader) });
+    return { project: model, from: { name: shaderName(params.shader), origin: 'url', url: params.shader, info } };
   } catch (error) {
     console.warn(`URL parameter shader=${params.shader}: ${error.message}`);
-    const notice = {
+    return builtin({
       title: `Could not load ${params.shader}`,
       detail: `${error.message}\nShowing the built-in raytracer (${BUILTIN_NAME}) instead.`,
-    };
-    return { source: builtinSource, from: { name: BUILTIN_NAME, origin: 'builtin' }, notice };
+    });
   }
 }
 
 /**
  * Work is never lost (kept-source.js): edits kept for the page's shader (the ?shader= file, the
- * built-in one, or the shader a link carries) come back, with a note that can discard them.
+ * built-in one, or the shader a link carries), every tab of a multipass one, come back, with a
+ * note that can discard them.
  * @param {RaytracerApp} app
  * @param {ReturnType<typeof installUi>} ui
  * @param {string | undefined} shader the ?shader= parameter
- * @param {{source: string, from: FirstSource['from']}} file what the page loaded
+ * @param {FirstSource} first what the page loaded
  */
-function restoreKeptWork(app, ui, shader, { source, from }) {
-  const file = { name: from.name, source };
+function restoreKeptWork(app, ui, shader, { project, from }) {
+  const file = { name: from.name, source: serializeProject(project) };
   const kept = ui.kept.open(from.origin === 'editor' ? sharedKey(file) : (shader ?? BUILTIN_NAME), file);
   if (!kept) return;
-  app.loadSource(kept.source, { name: kept.name, origin: 'editor' });
+  app.loadProject(deserializeProject(kept.source), { name: kept.name, origin: 'editor', info: from.info ?? null });
   showRestoredNote(document.getElementById('stage'), kept.name, () => {
-    app.setSource(source, from).catch(() => {});
+    app.setProject(project, from).catch(() => {});
   });
 }
 
@@ -188,7 +218,7 @@ async function start() {
   if (params.speed !== undefined) app.inputs.setSpeed(params.speed);
   if (params.mouse) app.inputs.setMouse(params.mouse);
   const ui = installUi(app);
-  overlay.onLine = (line) => ui.editor.goToLine(line);
+  overlay.onLine = (line, pass) => ui.editor.goToLine(line, pass);
   installAutomation(app, app.ready, ui);
 
   params.channels.forEach((url, i) => {
@@ -199,10 +229,10 @@ async function start() {
     });
   });
 
-  app.loading = first.then(({ source, from, notice }) => {
-    if (notice) noticeAfterCompile(notice);
-    app.loadSource(source, from);
-    restoreKeptWork(app, ui, params.shader, { source, from });
+  app.loading = first.then((loaded) => {
+    if (loaded.notice) noticeAfterCompile(loaded.notice);
+    app.loadProject(loaded.project, loaded.from);
+    restoreKeptWork(app, ui, params.shader, loaded);
     app.applyControls(params.controls, 'URL');
     app.compile().catch(() => {}); // shown on the page; `ready` rejects
     app.requestRender();

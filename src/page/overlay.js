@@ -6,7 +6,11 @@ export class Overlay {
   constructor(element) {
     this.element = element;
     this.element.setAttribute('role', 'alert');
-    /** Shows a line of the shader (set by the page once the editor exists). @type {((line: number) => void) | null} */
+    /**
+     * Shows a line of the shader, in a tab of a multipass one (pass null: a single-pass shader's
+     * file); set by the page once the editor exists.
+     * @type {((line: number, pass: string | null) => void) | null}
+     */
     this.onLine = null;
     this.hide();
   }
@@ -44,10 +48,10 @@ export class Overlay {
   }
 
   /**
-   * Compile errors: one entry a message; a message at a line of the file is a button that calls
-   * `this.onLine(line)` (the page opens the editor there).
+   * Compile errors: one entry a message; a message at a line of the file (or of a tab: `pass`) is
+   * a button that calls `this.onLine(line, pass)` (the page opens the editor there).
    * @param {string} title
-   * @param {Array<{line: number | null}>} messages
+   * @param {Array<{line: number | null, pass?: string | null}>} messages
    * @param {(message: any) => string} format a message's text
    */
   showMessages(title, messages, format) {
@@ -63,10 +67,11 @@ export class Overlay {
       const link = document.createElement('button');
       link.type = 'button';
       link.className = 'error-line';
-      link.title = `Show line ${message.line} in the editor`;
-      link.textContent = text;
       const line = message.line;
-      link.addEventListener('click', () => onLine(line));
+      const pass = message.pass ?? null;
+      link.title = pass ? `Show line ${line} of ${pass} in the editor` : `Show line ${line} in the editor`;
+      link.textContent = text;
+      link.addEventListener('click', () => onLine(line, pass));
       list.append(link, '\n');
     }
     this.element.append(list);

@@ -113,9 +113,14 @@ export const IMAGE_DECODING = { imageOrientation: 'flipY', colorSpaceConversion:
 
 const SHADER_EXTENSIONS = /\.(glsl|frag|fs|fsh|txt|shader)$/i;
 
-/** What a dropped file is: 'shader', 'image', or null (neither). */
+/**
+ * What a dropped file is: 'shader', 'json' (Shadertoy's JSON export, by its name or type),
+ * 'image', or null (neither).
+ * @param {{name: string, type: string}} file
+ */
 export function droppedKind(file) {
   if (file.type.startsWith('image/')) return 'image';
+  if (/\.json$/i.test(file.name) || file.type === 'application/json') return 'json';
   if (SHADER_EXTENSIONS.test(file.name) || file.type.startsWith('text/')) return 'shader';
   return null;
 }

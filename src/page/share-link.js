@@ -2,7 +2,9 @@
 //
 // A shader that came from a URL is named by ?shader=. An edited, pasted or dropped one travels in
 // the link itself: its text compressed with the browser's CompressionStream ('deflate-raw'),
-// base64url, in the fragment (#source=...&name=...). A fragment is never sent to a server, so
+// base64url, in the fragment (#source=...&name=...). A multipass shader (or one with channels of
+// its own) travels the same way as its Shadertoy JSON export, which the page reads back as such
+// (project-files.js: a text that looks like JSON is one). A fragment is never sent to a server, so
 // the dev server's limit on a request's headers (it answers HTTP 431 to an over-long URL) does
 // not apply; the page reads it on open (main.js).
 //
@@ -10,6 +12,8 @@
 // a phone opening a desktop-sized canvas would see it squeezed with Scale and Max size disabled.
 
 import { formatUrlParams } from './url-params.js';
+import { exportJson, serializeProject } from './project-files.js';
+import { fileStem } from './kept-source.js';
 
 /**
  * Longest link we hand out, in characters. Fragments are not sent to servers, but a link still
@@ -82,7 +86,10 @@ export async function shareLink(app) {
   });
   let fragment = '';
   if (inLink) {
-    const fields = new URLSearchParams({ source: await encodeSource(app.source), name: app.fileName });
+    // a plain shader as its text; any other as its JSON export (serializeProject tells them apart)
+    const plain = serializeProject(app.project) === app.source;
+    const text = plain ? app.source : exportJson(app.project, app.projectInfo, fileStem(app.fileName), 0);
+    const fields = new URLSearchParams({ source: await encodeSource(text), name: app.fileName });
     fragment = `#${fields.toString()}`;
   }
   const url = `${location.origin}${location.pathname}${query}${fragment}`;

@@ -1,7 +1,7 @@
 // The bar along the bottom of the page: play/pause, restart, the time slider, the speed, a
 // frame-time graph with fps, the shader's name, and the output buttons. Every button is a real
 // <button> whose accessible name is what it does ("Play", "Pause", "Restart", "Copy for
-// Shadertoy", "Download .glsl", "Screenshot", ...); the icons are decoration.
+// Shadertoy", "Download .glsl", "Export JSON", "Screenshot", ...); the icons are decoration.
 
 import { FrameRate } from './frame-timer.js';
 
@@ -28,6 +28,7 @@ const ICONS = {
   edit: '<path d="M11.2 1.8l3 3-8.7 8.7-3.8.8.8-3.8z"/>',
   copy: '<g fill="none" stroke="currentColor" stroke-width="1.5"><path d="M5.5 1.75h8v9.5h-8z"/><path d="M2.75 4.5v9.75h8"/></g>',
   download: '<g fill="none" stroke="currentColor" stroke-width="1.6"><path d="M8 1.5v8.5M4.3 6.6 8 10.3l3.7-3.7M2.5 14h11"/></g>',
+  json: '<g fill="none" stroke="currentColor" stroke-width="1.5" stroke-linecap="round"><path d="M5.5 2C3.5 2 4 4.5 4 6S2 8 2 8s2 .5 2 2-.5 4 1.5 4M10.5 2c2 0 1.5 2.5 1.5 4s2 2 2 2-2 .5-2 2 .5 4-1.5 4"/></g>',
   camera:
     '<g fill="none" stroke="currentColor" stroke-width="1.5"><path d="M1.75 4.5h3l1.3-2h3.9l1.3 2h3v9H1.75z"/><circle cx="8" cy="8.8" r="2.6"/></g>',
   fullscreen: '<g fill="none" stroke="currentColor" stroke-width="1.6"><path d="M2 6V2h4M10 2h4v4M14 10v4h-4M6 14H2v-4"/></g>',
@@ -44,7 +45,7 @@ export class Toolbar {
   /**
    * @param {HTMLElement} root the (empty) toolbar element
    * @param {object} actions callbacks: togglePlay, restart, setTime(s), setSpeed(s), toggleEditor,
-   *   copyForShadertoy, download, screenshot, toggleFullscreen, copyLink
+   *   copyForShadertoy, download, exportJson, screenshot, toggleFullscreen, copyLink
    */
   constructor(root, actions) {
     this.root = root;
@@ -140,11 +141,17 @@ export class Toolbar {
         editButton,
         button(
           'Copy for Shadertoy',
-          "Copies the shader's text, ready to paste into Shadertoy's Image tab",
+          "Copies the shader's text (the editor's tab of a multipass shader), ready to paste into that tab on Shadertoy",
           'copy',
           actions.copyForShadertoy,
         ),
-        button('Download .glsl', 'Saves the shader as a .glsl file', 'download', actions.download),
+        button('Download .glsl', "Saves the shader as a .glsl file (the editor's tab of a multipass shader)", 'download', actions.download),
+        button(
+          'Export JSON',
+          "Saves the whole shader, every tab and channel, in Shadertoy's JSON format (drop it on the page to load it back)",
+          'json',
+          actions.exportJson,
+        ),
         button('Screenshot', 'Saves the current frame as a PNG (size: Controls → View)', 'camera', actions.screenshot),
         this.fullscreenButton,
         button(

@@ -1,6 +1,7 @@
 // The page's widgets around the canvas, wired to the app: the toolbar (time and output), the
 // lil-gui panel, the editor, keyboard shortcuts (shortcuts.js: Space, R, F), dropping a
-// .glsl file or an image on the page, and a status line for short confirmations.
+// .glsl file, a Shadertoy JSON export or an image on the page, a status line for short
+// confirmations, and the note that says what a loaded shader cannot have (load-notes.js).
 
 import { Editor } from './editor.js';
 import { KeptSource, fileStem } from './kept-source.js';
@@ -11,6 +12,8 @@ import { droppedKind } from './shader-loader.js';
 import { installShortcuts } from './shortcuts.js';
 import { toggleFullscreen, watchFullscreen } from './fullscreen.js';
 import { MAX_LINK_LENGTH, shareLink } from './share-link.js';
+import { exportJson, projectTabs, readShaderText, serializeProject, shaderNotes, tabCode, tabFileName } from './project-files.js';
+import { showLoadNotes } from './load-notes.js';
 
 /** Saves a Blob as a file, as a link with `download` does. */
 function saveBlob(blob, fileName) {
@@ -93,21 +96,36 @@ export function installUi(app) {
     toggleEditor: () => editor.toggle(),
     toggleFullscreen: () => toggleFullscreen(stage),
 
-    /** Exactly the text Shadertoy's Image tab takes: the shader file (Shadertoy adds the header). */
+    /**
+     * Exactly the text Shadertoy's tab takes: the shader file, or the editor's tab of a multipass
+     * shader (Shadertoy adds the header).
+     */
     async copyForShadertoy() {
-      const ok = await copyText(app.source);
+      const { tab, code, multipass } = shownTab();
+      const ok = await copyText(code);
+      const what = multipass ? `${tab} of ${app.fileName}` : app.fileName;
       toast(
         ok
-          ? `Copied ${app.fileName} (${app.source.split('\n').length} lines): paste it into Shadertoy's Image tab`
+          ? `Copied ${what} (${code.split('\n').length} lines): paste it into Shadertoy's ${tab} tab`
           : 'The browser refused to copy; use Download .glsl instead',
       );
       return ok;
     },
 
+    /** Saves the shader file, or the editor's tab of a multipass shader ("NAME - Buffer A.glsl"). */
     download() {
-      const name = `${stem(app.fileName)}.glsl`;
-      saveBlob(new Blob([app.source], { type: 'text/plain;charset=utf-8' }), name);
+      const { tab, code, multipass } = shownTab();
+      const name = tabFileName(stem(app.fileName), tab, multipass);
+      saveBlob(new Blob([code], { type: 'text/plain;charset=utf-8' }), name);
       toast(`Saved ${name}`);
+      return name;
+    },
+
+    /** Saves the whole shader, every tab and channel, as Shadertoy's JSON export ("NAME.json"). */
+    exportJson() {
+      const name = `${stem(app.fileName)}.json`;
+      saveBlob(new Blob([exportJson(app.project, app.projectInfo, stem(app.fileName))], { type: 'application/json' }), name);
+      toast(`Saved ${name} (Shadertoy's JSON format, ${projectTabs(app.project).length} tabs)`);
       return name;
     },
 
@@ -147,6 +165,12 @@ export function installUi(app) {
   const toolbar = new Toolbar(document.getElementById('toolbar'), actions);
   const recording = installRecordDialog(app, toolbar.root, { saveBlob, toast });
   const panel = new Panel({
+    onConverge: (on) =>
+      app.setConverging(on).catch((error) => {
+        console.warn(error.message);
+        toast(error.message);
+        panel.setConverging(app.converging, !app.isMultipass);
+      }),
     scale: app.canvasSize.scale,
     cap: app.canvasSize.cap,
     sizeFixed: Boolean(app.canvasSize.fixed),
@@ -165,16 +189,71 @@ export function installUi(app) {
   // an edited shader's name: "untitled" after a paste over everything, else "NAME (edited)"
   const kept = new KeptSource();
   const editor = new Editor(document.getElementById('editor'), {
-    apply: (source, pasted) => app.setSource(source, { origin: 'editor', name: kept.nameFor(source, pasted) }).catch(() => {}),
+    apply: (project, pasted) =>
+      app
+        .setProject(project, { origin: 'editor', name: kept.nameFor(serializeProject(project), pasted), info: app.projectInfo })
+        .catch(() => {}),
+    pasteJson: (text) => {
+      // a Shadertoy export pasted in: that shader, by its own name
+      const loaded = readText(text, 'the pasted text', { json: true });
+      if (!loaded) return;
+      const name = String(loaded.info?.name || 'untitled');
+      kept.loadedFile({ name, source: serializeProject(loaded.model) });
+      pastedShader = true;
+      app.setProject(loaded.model, { origin: 'editor', name, info: loaded.info }).catch(() => {});
+    },
     onToggle: (open) => toolbar.setEditorOpen(open),
-    onChange: (source) => kept.save(source),
+    onChange: (project) => kept.save(serializeProject(project)),
   });
+
+  /** The editor's tab and its text as the page runs it (the whole file for a single-pass shader). */
+  const shownTab = () => {
+    const multipass = projectTabs(app.project).length > 1;
+    const tab = multipass ? editor.activeTab : 'Image';
+    return { tab, multipass, code: tabCode(app.project, tab) ?? app.source };
+  };
+
+  // ---- notes on what a loaded shader cannot have ----------------------------------------------
+
+  /** What the note says now ('' for nothing). */
+  let notesShown = '';
+  /** A shader pasted into the editor is a new one: its notes show even if the last one had the same. */
+  let pastedShader = false;
+  const showNotes = () => {
+    const lines = [...new Set([...app.notes, ...shaderNotes(app.project)])];
+    const key = lines.join('\n');
+    // an edit of the same shader: said already (and maybe closed)
+    if (key === notesShown && app.origin === 'editor' && !pastedShader) return;
+    notesShown = key;
+    pastedShader = false;
+    showLoadNotes(stage, `${app.fileName} runs without some of what it asks for`, lines);
+  };
+
+  /**
+   * Reads a shader's text (a Shadertoy export or GLSL); a text that cannot be read is said in a
+   * note, and null returned.
+   * @param {string} text
+   * @param {string} name what it is, in the message
+   * @param {{json?: boolean}} [options]
+   */
+  const readText = (text, name, options) => {
+    try {
+      return readShaderText(text, options);
+    } catch (error) {
+      console.warn(`${name}: ${error.message}`);
+      notesShown = '\u0000error'; // goes with the next shader loaded
+      showLoadNotes(stage, `Could not load ${name}`, [error.message], 'error');
+      toast(`Could not load ${name}`);
+      return null;
+    }
+  };
 
   const showState = () => {
     toolbar.update({ playing: app.inputs.playing, time: app.inputs.time, speed: app.inputs.speed, name: app.fileName });
   };
   let shownAt = 0;
   app.on('state', () => {
+    panel.setConverging(app.converging, !app.isMultipass);
     panel.sync(app.values);
     panel.setChannelSizes(app.renderer.channelSizes());
     showState();
@@ -189,9 +268,11 @@ export function installUi(app) {
     }
   });
   app.on('source', () => {
-    if (app.origin !== 'editor') kept.loadedFile({ name: app.fileName, source: app.source });
+    if (app.origin !== 'editor') kept.loadedFile({ name: app.fileName, source: serializeProject(app.project) });
     panel.setControls(app.controls, app.values);
-    editor.setSource(app.source, app.fileName);
+    panel.setConverging(app.converging, !app.isMultipass);
+    editor.setProject(app.project, app.fileName);
+    showNotes();
     document.title = `${app.fileName} · Shadertoy runner`;
     showState();
   });
@@ -241,12 +322,13 @@ export function installUi(app) {
         () => toast(`Loaded ${file.name} into iChannel0`),
         (error) => toast(error.message),
       );
-    } else if (kind === 'shader') {
-      const source = await file.text();
-      app.setSource(source, { name: file.name, origin: 'file' }).catch(() => {});
+    } else if (kind === 'shader' || kind === 'json') {
+      const loaded = readText(await file.text(), file.name, { json: kind === 'json' });
+      if (!loaded) return;
+      app.setProject(loaded.model, { name: file.name, origin: 'file', info: loaded.info }).catch(() => {});
       toast(`Running ${file.name}`);
     } else {
-      toast(`${file.name} is neither a shader (.glsl) nor an image`);
+      toast(`${file.name} is neither a shader (.glsl, Shadertoy's .json) nor an image`);
     }
   });
 
