@@ -136,6 +136,8 @@ describe('tabs', () => {
         await showTab(page, 'Buffer A');
         await pasteIntoEditor(page, BUFFER_A);
         await page.waitForFunction(() => document.getElementById('overlay').hidden, { polling: 50 });
+        await named(page, 'broken.json (edited)'); // a paste over one tab is an edit of the shader, not "untitled"
+        expect(await page.$eval('#toolbar .name', (e) => e.textContent)).toBe('broken.json (edited)');
         expect(await page.$$('.editor-tabs .has-errors')).toHaveLength(0);
         expect(await page.$$('.cm-lint-marker-error')).toHaveLength(0);
       });

@@ -42,7 +42,7 @@ export class Editor {
    * @param {HTMLElement} root the editor's (hidden) container
    * @param {object} actions
    * @param {(project: MultipassShader, pasted: boolean) => void} actions.apply runs the edited
-   *   shader, every tab (`pasted`: a paste replaced a whole tab)
+   *   shader, every tab (`pasted`: a paste replaced the whole of a single-pass shader)
    * @param {(text: string) => void} [actions.pasteJson] a paste left a tab holding JSON (a
    *   Shadertoy export): load it
    * @param {(open: boolean) => void} [actions.onToggle]
@@ -67,7 +67,7 @@ export class Editor {
     this.title.className = 'editor-title';
     const hint = document.createElement('span');
     hint.className = 'editor-hint';
-    hint.textContent = 'Paste a shader, or edit and press Ctrl+Enter · Tab indents, Esc then Tab leaves';
+    hint.textContent = 'Paste a shader (or Shadertoy JSON), or edit and press Ctrl+Enter · Tab indents, Esc then Tab leaves';
     const compile = document.createElement('button');
     compile.type = 'button';
     compile.textContent = 'Compile';
@@ -115,7 +115,9 @@ export class Editor {
         // then holds JSON is a Shadertoy export pasted in
         const text = update.state.doc.toString();
         if (looksLikeJson(text)) setTimeout(() => pasteJson(text), 0);
-        else setTimeout(() => apply(project, replacedAll(paste)), 0);
+        // a paste over a whole single-pass shader is a new shader ("untitled"); over one tab of a
+        // multipass one, an edit of that shader
+        else setTimeout(() => apply(project, replacedAll(paste) && this.tabs.length === 1), 0);
       }),
     ];
     this.view = new EditorView({ parent: body, state: this._newState('') });
