@@ -148,6 +148,36 @@ describe('heavy frames are drawn in bands, and the page keeps answering', () => 
   });
 });
 
+describe('the page never comes back with the shader that hung', () => {
+  test('when the GPU is reset after a hang (a lost and restored context), the page runs the last shader that finished a frame', async () => {
+    await withHeavyShader(async (base) => {
+      await withPage(async ({ page, goto }) => {
+        await goto(`?shader=${base}/heavy.glsl&${SIZE}&WORK=0`);
+        await page.evaluate((work) => window.raytracer.setControls({ WORK: work, HEAVY_ROWS: 8 }), HANGING_WORK);
+        await page.waitForFunction(() => document.documentElement.dataset.hung === 'true', {
+          polling: 100,
+          timeout: HANG_AFTER_MS + 30_000,
+        });
+        const note = await page.evaluate(() => JSON.parse(localStorage.getItem('shadertoy-runner.hung') ?? 'null'));
+        expect(note.name).toBe('heavy.glsl');
+        expect(note.back.values.WORK).toBe(0);
+        // what Chrome's GPU watchdog does on real hardware: the context goes, and comes back
+        await page.evaluate(() => window.raytracer.loseContext());
+        await page.waitForFunction(() => window.raytracer.info().contextLost, { polling: 50 });
+        await page.evaluate(() => window.raytracer.restoreContext());
+        await page.waitForFunction(() => !window.raytracer.info().contextLost && window.raytracer.info().controls.WORK === 0, {
+          polling: 100,
+          timeout: 60_000,
+        });
+        // and it draws: the hung band is over (it was finite), the restored context runs WORK = 0
+        const before = (await info(page)).frame;
+        await page.waitForFunction((f) => window.raytracer.info().frame > f + 2, { polling: 100, timeout: 60_000 }, before);
+        expect((await info(page)).controls.WORK).toBe(0);
+      }, REAL_CLOCKS);
+    });
+  });
+});
+
 describe('a shader that never finishes', () => {
   test('the page keeps answering and puts up the watchdog message (in a browser of its own: SwiftShader never gets over it)', async () => {
     const { baseUrl } = await harnessContext();

@@ -27,7 +27,10 @@ import { MAX_SAMPLES, progressiveTabs } from '../shadertoy/progressive.js';
 /** @typedef {import('../shadertoy/controls.js').Control} Control */
 /** @typedef {import('./events.js').AppEvents} AppEvents */
 /** @typedef {import('../shadertoy/multipass.js').MultipassShader} MultipassShader */
-/** @typedef {{project: MultipassShader, info: object | null, name: string, origin: RaytracerApp['origin'], url: string | null}} ShaderVersion */
+/**
+ * A shader as it ran: its tabs, where it came from, and its control values.
+ * @typedef {{project: MultipassShader, info: object | null, name: string, origin: RaytracerApp['origin'], url: string | null, values?: Record<string, any>}} ShaderVersion
+ */
 
 /** @extends {Emitter<AppEvents>} */
 export class RaytracerApp extends Emitter {
@@ -73,6 +76,8 @@ export class RaytracerApp extends Emitter {
     this.stillFrames = 0;
     /** Frames a converging shader is drawn while the view is still: then its buffer sums no more. */
     this.convergeFrames = MAX_SAMPLES;
+    /** What to run instead of a shader that hung (hang-guard.js), once the page has one. @type {import('./hang-guard.js').HangGuard | null} */
+    this.hangGuard = null;
     /** The single-pass shader that converges (setConverging(false) goes back to it). @type {ShaderVersion | null} */
     this._beforeConverging = null;
     /** Where the source came from. @type {'builtin' | 'url' | 'editor' | 'file'} */
@@ -240,7 +245,9 @@ export class RaytracerApp extends Emitter {
       const back = /** @type {ShaderVersion} */ (this._beforeConverging);
       this.converging = false;
       this._beforeConverging = null;
-      return this.setProject(back.project, back);
+      this.loadProject(back.project, back);
+      this.applyControls(back.values ?? {}, 'Converge when still');
+      return this.compile();
     }
     if (this.isMultipass) throw new Error('only a single-pass shader converges: this one has buffers of its own');
     this._beforeConverging = {
@@ -249,6 +256,7 @@ export class RaytracerApp extends Emitter {
       name: this.fileName,
       origin: this.origin,
       url: this.shaderUrl,
+      values: structuredClone(this.values),
     };
     const tabs = progressiveTabs(this.source);
     this.pause();
@@ -328,7 +336,15 @@ export class RaytracerApp extends Emitter {
     const hostBlock = this.notice ? '' : hostControlBlock(this.controls, this.values, this.liveForm.asConstants ? this.values : null);
     const fileName = this.fileName;
     /** @type {ShaderVersion} */
-    const version = { project: this.project, info: this.projectInfo, name: fileName, origin: this.origin, url: this.shaderUrl };
+    /** @type {ShaderVersion} */
+    const version = {
+      project: this.project,
+      info: this.projectInfo,
+      name: fileName,
+      origin: this.origin,
+      url: this.shaderUrl,
+      values: structuredClone(this.values),
+    };
     const job = this.renderer.compile(this.project, hostBlock, fileName).then(
       () => {
         this._running = version;
@@ -431,13 +447,25 @@ export class RaytracerApp extends Emitter {
         this.emit('state');
         return;
       }
-      // the worker's state went with the context: programs are compiled again from ours
+      // the worker's state went with the context: programs are compiled again from ours; after
+      // a hang (the browser resets a GPU held too long), the last shader that finished a frame
+      const back = this.hangGuard?.backFor(this.project, this.values);
+      if (back) this.runVersion(back);
       this._resend();
       this.compile().catch(() => {}); // shown on the page
       this.emit('context', false); // after the compile started: the compiles asked for meanwhile end with it
       this.emit('state');
       this.requestRender();
     };
+  }
+
+  /**
+   * Loads a shader as it ran (its tabs and its control values); call compile() after.
+   * @param {ShaderVersion} version
+   */
+  runVersion(version) {
+    this.loadProject(version.project, version);
+    this.applyControls(version.values ?? {}, 'the last shader that finished');
   }
 
   /** Gives the worker the control uniforms and the channels again (a new worker, a new context). */
@@ -456,7 +484,7 @@ export class RaytracerApp extends Emitter {
     const back = this.lastFinished;
     await this.renderer.respawn();
     this._drawing = null;
-    if (back) this.loadProject(back.project, back);
+    if (back) this.runVersion(back);
     this._resend();
     this.compile().catch(() => {});
     this.requestRender();

@@ -10,6 +10,7 @@ import { Overlay } from './overlay.js';
 import { CHANNEL_PARAMS, parseUrlParams } from './url-params.js';
 import { fetchShader, shaderName } from './shader-loader.js';
 import { installUi } from './ui.js';
+import { HangGuard, watchHangs } from './hang-guard.js';
 import { sourceFromHash } from './share-link.js';
 import { sharedKey, showRestoredNote } from './kept-source.js';
 import { formatShaderMessages } from '../shadertoy/shader-errors.js';
@@ -19,7 +20,7 @@ import { deserializeProject, isJsonName, projectTabs, readShaderText, serializeP
 
 const BUILTIN_NAME = 'shaders/raytrace.glsl';
 
-/** @typedef {{title: string, detail: string}} Notice */
+/** @typedef {{title: string, detail: string, actions?: Array<{label: string, run: () => void}>}} Notice */
 /**
  * @typedef {object} FirstSource the shader the page opens with
  * @property {import('../shadertoy/multipass.js').MultipassShader} project
@@ -75,7 +76,7 @@ function showAppOnPage(app, overlay) {
       return;
     }
     if (app.notice) overlay.show(`Control block of ${fileName} not read`, app.notice);
-    else if (pending) overlay.show(pending.title, pending.detail);
+    else if (pending) overlay.showActions(pending.title, pending.detail, pending.actions ?? []);
     else overlay.hide();
     pending = null;
     delete root.error;
@@ -190,6 +191,25 @@ function restoreKeptWork(app, ui, shader, { project, from }) {
   });
 }
 
+/**
+ * The shader about to run is the one that hung last time (hang-guard.js): run the last one that
+ * finished a frame instead, say so, and offer the text that hung back to the editor, not run.
+ * @param {RaytracerApp} app
+ * @param {(notice: Notice) => void} notice
+ */
+function avoidHungShader(app, notice) {
+  const guard = /** @type {HangGuard} */ (app.hangGuard);
+  const back = guard.backFor(app.project, app.values);
+  const hung = guard.note;
+  if (!back || !hung) return;
+  app.runVersion(back);
+  notice({
+    title: `${hung.name} did not finish drawing last time`,
+    detail: `It may never finish (an endless loop?), so the page runs ${back.name}, the last shader that finished a frame. The text that hung is kept: it goes back into the editor, not run, with the button below.`,
+    actions: [{ label: `Edit ${hung.name} (not run)`, run: () => app.loadProject(hung.project, { name: hung.name, origin: 'editor' }) }],
+  });
+}
+
 async function start() {
   const canvas = /** @type {HTMLCanvasElement} */ (document.getElementById('view'));
   const overlay = new Overlay(document.getElementById('overlay'));
@@ -213,6 +233,7 @@ async function start() {
     return null;
   }
 
+  watchHangs(app, new HangGuard());
   const noticeAfterCompile = showAppOnPage(app, overlay);
   if (params.time !== undefined) app.inputs.setTime(params.time);
   if (params.speed !== undefined) app.inputs.setSpeed(params.speed);
@@ -233,6 +254,7 @@ async function start() {
     if (loaded.notice) noticeAfterCompile(loaded.notice);
     app.loadProject(loaded.project, loaded.from);
     restoreKeptWork(app, ui, params.shader, loaded);
+    avoidHungShader(app, noticeAfterCompile);
     app.applyControls(params.controls, 'URL');
     app.compile().catch(() => {}); // shown on the page; `ready` rejects
     app.requestRender();
