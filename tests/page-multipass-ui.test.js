@@ -140,6 +140,22 @@ describe('tabs', () => {
         expect(await page.$eval('#toolbar .name', (e) => e.textContent)).toBe('broken.json (edited)');
         expect(await page.$$('.editor-tabs .has-errors')).toHaveLength(0);
         expect(await page.$$('.cm-lint-marker-error')).toHaveLength(0);
+
+        // an error in the Common tab is the Common tab's, at its own line
+        await showTab(page, 'Common');
+        await pasteIntoEditor(page, `${COMMON}float brokenToo() { return undeclaredInCommon; }\n`);
+        await page.waitForFunction(() => document.querySelectorAll('#overlay .error-line').length >= 1, { polling: 50 });
+        const common = await page.$$eval('#overlay .error-line', (els) => els.map((e) => e.textContent));
+        expect(
+          common.filter((l) => l.startsWith('Common:2:')),
+          common.join('\n'),
+        ).toHaveLength(1); // once, not once per pass
+        expect(
+          common.some((l) => l.startsWith('Common:2: error:') && l.includes('undeclaredInCommon')),
+          common.join('\n'),
+        ).toBe(true);
+        expect(await page.$eval('.editor-tabs [data-tab="Common"]', (t) => t.classList.contains('has-errors'))).toBe(true);
+        expect(await errorMarkerLines(page)).toContain(2);
       });
     });
   });

@@ -37,6 +37,17 @@ function replacedAll(tr) {
 /** The tab a compiler message belongs to: its pass, or the Image tab for a single-pass shader. */
 const tabOf = (/** @type {ShaderMessage} */ m) => m.pass ?? 'Image';
 
+/**
+ * Whether messages[i] is the first of its kind (a Common tab's error comes once from every pass
+ * that includes it).
+ * @param {ShaderMessage[]} messages
+ * @param {number} i
+ */
+function firstOfItsKind(messages, i) {
+  const m = messages[i];
+  return messages.findIndex((o) => o.pass === m.pass && o.line === m.line && o.message === m.message) === i;
+}
+
 export class Editor {
   /**
    * @param {HTMLElement} root the editor's (hidden) container
@@ -229,7 +240,7 @@ export class Editor {
       const state = shown ? this.view.state : tab.state;
       const doc = state.doc;
       const diagnostics = messages
-        .filter((m) => tabOf(m) === tab.name && m.line && m.line <= doc.lines)
+        .filter((m, i) => tabOf(m) === tab.name && m.line && m.line <= doc.lines && firstOfItsKind(messages, i))
         .map((m) => {
           const line = doc.line(/** @type {number} */ (m.line));
           const severity = /** @type {'error' | 'warning'} */ (m.severity === 'warning' ? 'warning' : 'error');

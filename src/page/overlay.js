@@ -58,8 +58,11 @@ export class Overlay {
     const onLine = this.onLine;
     this.show(title);
     const list = document.createElement('pre');
+    const said = new Set(); // a Common tab's error comes once from every pass that includes it
     for (const message of messages) {
       const text = format(message);
+      if (said.has(text)) continue;
+      said.add(text);
       if (message.line === null || !onLine) {
         list.append(text, '\n');
         continue;
