@@ -122,13 +122,14 @@ export class Editor {
         this.onChange(project);
         const paste = update.transactions.find((tr) => tr.isUserEvent('input.paste'));
         if (!paste) return;
-        // a paste (of a whole shader, or any paste) runs what the editor then holds; a tab that
-        // then holds JSON is a Shadertoy export pasted in
+        // a paste (of a whole shader, or any paste) runs what the editor then holds; JSON pasted
+        // over a whole tab is a Shadertoy export
         const text = update.state.doc.toString();
-        if (looksLikeJson(text)) setTimeout(() => pasteJson(text), 0);
+        const whole = replacedAll(paste);
+        if (whole && looksLikeJson(text)) setTimeout(() => pasteJson(text), 0);
         // a paste over a whole single-pass shader is a new shader ("untitled"); over one tab of a
         // multipass one, an edit of that shader
-        else setTimeout(() => apply(project, replacedAll(paste) && this.tabs.length === 1), 0);
+        else setTimeout(() => apply(project, whole && this.tabs.length === 1), 0);
       }),
     ];
     this.view = new EditorView({ parent: body, state: this._newState('') });
