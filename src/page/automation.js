@@ -26,9 +26,10 @@
 //                         screen at that size (default: the canvas's), as the Screenshot button
 //                         saves it.
 //   setChannel(i, url|null)    Promise: an image into iChannel i (null: black again).
-//   loadShader(url)       Promise<{ok, error?}>: fetches and runs a shader as ?shader= does.
+//   loadShader(url)       Promise<{ok, error?}>: fetches and runs a shader as ?shader= does
+//                         (GLSL, or Shadertoy's JSON export).
 //   shareUrl()            Promise<string>: the link "Copy link" copies (reproduces this view).
-//   editorSource()        the editor's text (what it holds, compiled or not).
+//   editorSource()        the text of the editor's current tab (what it holds, compiled or not).
 //   record({format, frames | duration, fps, width, height})  Promise<{format, frames, fps,
 //                         width, height, codec, mimeType, data}>: records the shader frame by
 //                         frame as the Record button does (recorder.js: 'webm' or 'png', a .zip
@@ -53,6 +54,7 @@ import { fetchShader, shaderName } from './shader-loader.js';
 import { toBase64 } from './pixels.js';
 import { median } from './stats.js';
 import { fromShadertoyJson } from '../shadertoy/multipass-json.js';
+import { isJsonName, readShaderText } from './project-files.js';
 
 /** The window, with the hook. @type {Window & {raytracer?: object}} */
 const hooked = window;
@@ -157,8 +159,8 @@ export function installAutomation(app, ready, ui) {
     async loadShader(url) {
       await loaded();
       try {
-        const source = await fetchShader(url);
-        await app.setSource(source, { name: shaderName(url), origin: 'url', url });
+        const { model, info } = readShaderText(await fetchShader(url), { json: isJsonName(url) });
+        await app.setProject(model, { name: shaderName(url), origin: 'url', url, info });
         return { ok: true };
       } catch (error) {
         return { ok: false, error: error.report ?? error.message };
