@@ -4,7 +4,9 @@
 // next only when that one is done, so frames never queue up behind a heavy one; while playing it
 // asks again at the next animation frame, while paused only on demand (a control change, a
 // resize, the mouse). A change made while a frame is being drawn reaches the worker at once and
-// applies from its next band.
+// applies from its next band. When to draw is frame-loop.js's; the compiles compile-job.js's;
+// "Converge when still" converge.js's; a lost context and the watchdog's way back
+// gpu-context.js's; the shader's keys keyboard-input.js's.
 //
 // The app touches no part of the page but its canvas: what it has to tell (a change of state, a
 // compile's outcome, a lost context, each frame drawn) it emits as events (events.js), and the
@@ -12,17 +14,21 @@
 // canvas's size is canvas-size.js's business.
 
 import { parseControls } from '../shadertoy/controls.js';
-import { hostControlBlock } from '../shadertoy/header.js';
 import { RenderClient } from './render-client.js';
 import { ShadertoyInputs } from './shadertoy-inputs.js';
-import { CanvasSize, fitGpu } from './canvas-size.js';
+import { CanvasSize } from './canvas-size.js';
 import { carriedOverValues, changedValues, readControlChanges } from './control-values.js';
 import { Emitter } from './events.js';
 import { LiveControlForm } from './live-controls.js';
 import { loadImage } from './shader-loader.js';
-import { KeyboardState, keyCodeOf } from '../shadertoy/keyboard.js';
+import { KeyboardState } from '../shadertoy/keyboard.js';
 import { frameSchedule, singlePass } from '../shadertoy/multipass.js';
-import { MAX_SAMPLES, progressiveTabs } from '../shadertoy/progressive.js';
+import { MAX_SAMPLES } from '../shadertoy/progressive.js';
+import { setConverging } from './converge.js';
+import { FrameLoop } from './frame-loop.js';
+import { watchKeyboard } from './keyboard-input.js';
+import { goBack, watchContext } from './gpu-context.js';
+import { compileShader, whenCompiled } from './compile-job.js';
 
 /** @typedef {import('../shadertoy/controls.js').Control} Control */
 /** @typedef {import('./events.js').AppEvents} AppEvents */
@@ -53,7 +59,9 @@ export class RaytracerApp extends Emitter {
     /** The shader's name in messages and downloads. */
     this.fileName = fileName;
     this.renderer = renderer;
-    renderer.onPicture = (bitmap) => this._show(bitmap);
+    /** When to draw, and drawing (frame-loop.js). */
+    this.frames = new FrameLoop(this);
+    renderer.onPicture = (bitmap) => this.frames.show(bitmap);
     renderer.onHang = (seconds) => this.emit('hang', seconds);
     this.inputs = new ShadertoyInputs();
     this.inputs.playing = playing;
@@ -103,13 +111,6 @@ export class RaytracerApp extends Emitter {
 
     /** @type {Promise<void> | null} */
     this._latestCompile = null;
-    this._raf = 0;
-    /** @type {number | null} */
-    this._lastFrameAt = null;
-    /** The frame the worker is drawing. @type {Promise<unknown> | null} */
-    this._drawing = null;
-    /** Something changed since the frame under way was asked for: another one is due. */
-    this._dirty = false;
     /** Whether the next frame the page draws by itself is read back (the 'drawn' event's pixels). */
     this.readBackNext = false;
     /** The images in iChannel0..3, as loaded (a new worker gets them again). @type {Array<ImageBitmap | null>} */
@@ -129,30 +130,8 @@ export class RaytracerApp extends Emitter {
     this.ready.catch(() => {}); // a failure is reported on the page; callers may still await it
 
     this.canvasSize.watch(() => this.requestRender());
-    this._watchContext();
-    this._watchKeyboard();
-  }
-
-  /**
-   * Keys into Shadertoy's keyboard texture (keyboard.js), for shaders that read it: keys typed into
-   * the editor or a field of the panel are the page's, not the shader's.
-   */
-  _watchKeyboard() {
-    const typing = (/** @type {KeyboardEvent} */ event) => {
-      const target = /** @type {HTMLElement | null} */ (event.target instanceof HTMLElement ? event.target : null);
-      return Boolean(target?.closest('input, textarea, select, [contenteditable="true"], .cm-editor'));
-    };
-    window.addEventListener('keydown', (event) => {
-      if (!typing(event) && this.keyboard.keyDown(keyCodeOf(event))) this.requestRender();
-    });
-    window.addEventListener('keyup', (event) => {
-      if (this.keyboard.keyUp(keyCodeOf(event))) this.requestRender();
-    });
-    window.addEventListener('blur', () => {
-      // keys released in another window never come back up here; toggles stay
-      for (let key = 0; key < 256; key++) this.keyboard.keyUp(key);
-      this.requestRender();
-    });
+    watchContext(this);
+    watchKeyboard(this.keyboard, () => this.requestRender());
   }
 
   /**
@@ -230,40 +209,15 @@ export class RaytracerApp extends Emitter {
   }
 
   /**
-   * "Converge when still": runs a single-pass shader (the built-in raytracer) as its progressive
-   * multipass form (progressive.js: Buffer A adds one jittered sample per pixel per frame while
-   * nothing changes; Image shows the mean and the sample count), pausing the clock so that the
-   * view is still; off, the shader as it was. Frames keep coming while the view is still, up to
+   * "Converge when still" (converge.js): a single-pass shader runs as its progressive form, the
+   * clock paused; off, the shader as it was. Frames keep coming while the view is still, up to
    * `frames` (MAX_SAMPLES by default), and start again from one sample after any change.
    * @param {boolean} on
    * @param {{frames?: number}} [options]
+   * @returns {Promise<void>}
    */
-  async setConverging(on, { frames = MAX_SAMPLES } = {}) {
-    this.convergeFrames = Math.max(1, Math.min(MAX_SAMPLES, Math.round(frames)));
-    if (on === this.converging) return this.requestRender();
-    if (!on) {
-      const back = /** @type {ShaderVersion} */ (this._beforeConverging);
-      this.converging = false;
-      this._beforeConverging = null;
-      this.loadProject(back.project, back);
-      this.applyControls(back.values ?? {}, 'Converge when still');
-      return this.compile();
-    }
-    if (this.isMultipass) throw new Error('only a single-pass shader converges: this one has buffers of its own');
-    this._beforeConverging = {
-      project: this.project,
-      info: this.projectInfo,
-      name: this.fileName,
-      origin: this.origin,
-      url: this.shaderUrl,
-      values: structuredClone(this.values),
-    };
-    const tabs = progressiveTabs(this.source);
-    this.pause();
-    this.converging = true;
-    this.loadProject(tabs.model, { converging: true, name: this.fileName, origin: this.origin, url: this.shaderUrl });
-    this.applyControls({ SHOW_SAMPLE_COUNT: 1 }, 'Converge when still');
-    return this.compile();
+  setConverging(on, options = {}) {
+    return setConverging(this, on, options);
   }
 
   /**
@@ -326,61 +280,19 @@ export class RaytracerApp extends Emitter {
    * drawn; on failure the error is shown and the last shader that compiled keeps running.
    */
   compile() {
-    if (this.renderer.contextLost) {
-      // compiled when the context comes back: this job ends as the compile started then does
-      /** @type {Promise<void>} */
-      const job = new Promise((resolve) => this.once('context', () => resolve(this._latestCompile)));
-      this._latestCompile = job;
-      return job;
-    }
-    const hostBlock = this.notice ? '' : hostControlBlock(this.controls, this.values, this.liveForm.asConstants ? this.values : null);
-    const fileName = this.fileName;
-    /** @type {ShaderVersion} */
-    /** @type {ShaderVersion} */
-    const version = {
-      project: this.project,
-      info: this.projectInfo,
-      name: fileName,
-      origin: this.origin,
-      url: this.shaderUrl,
-      values: structuredClone(this.values),
-    };
-    const job = this.renderer.compile(this.project, hostBlock, fileName).then(
-      () => {
-        this._running = version;
-        if (job !== this._latestCompile) return;
-        this.compileErrors = [];
-        this.compiled++;
-        this.emit('compile', null, fileName);
-        this.requestRender();
-      },
-      (error) => {
-        if (job === this._latestCompile) {
-          this.compileErrors = error.messages ?? [];
-          console.warn(error.message);
-          this.emit('compile', error, fileName); // `ready` rejects if no shader runs at all
-        }
-        throw error;
-      },
-    );
-    this._latestCompile = job;
-    return job;
+    return compileShader(this);
   }
 
   /** Resolves when no compile is under way (whatever the outcome). */
-  async whenCompiled() {
-    let job;
-    do {
-      job = this._latestCompile;
-      await job?.catch(() => {});
-    } while (job !== this._latestCompile);
+  whenCompiled() {
+    return whenCompiled(this);
   }
 
   // ---- time ------------------------------------------------------------------------------------
 
   play() {
     this.inputs.play();
-    this._lastFrameAt = null;
+    this.frames.lastFrameAt = null;
     this.emit('state');
     this.requestRender();
   }
@@ -440,25 +352,6 @@ export class RaytracerApp extends Emitter {
 
   // ---- the GPU context -------------------------------------------------------------------------
 
-  _watchContext() {
-    this.renderer.onContext = (lost) => {
-      if (lost) {
-        this.emit('context', true);
-        this.emit('state');
-        return;
-      }
-      // the worker's state went with the context: programs are compiled again from ours; after
-      // a hang (the browser resets a GPU held too long), the last shader that finished a frame
-      const back = this.hangGuard?.backFor(this.project, this.values);
-      if (back) this.runVersion(back);
-      this._resend();
-      this.compile().catch(() => {}); // shown on the page
-      this.emit('context', false); // after the compile started: the compiles asked for meanwhile end with it
-      this.emit('state');
-      this.requestRender();
-    };
-  }
-
   /**
    * Loads a shader as it ran (its tabs and its control values); call compile() after.
    * @param {ShaderVersion} version
@@ -468,53 +361,19 @@ export class RaytracerApp extends Emitter {
     this.applyControls(version.values ?? {}, 'the last shader that finished');
   }
 
-  /** Gives the worker the control uniforms and the channels again (a new worker, a new context). */
-  _resend() {
-    this.renderer.setControlUniforms(this.controls, this.values);
-    this.channelImages.forEach((image, i) => image && this.renderer.setChannel(i, image));
-  }
-
   /**
    * The watchdog's way out: stops the render worker (and the draw that would not end) and runs
-   * the last shader a frame was finished with, in a new one. On a real GPU that draws at once
-   * (the browser resets a GPU held too long); on SwiftShader the endless draw keeps the GPU
-   * process busy, and the new worker waits with it.
+   * the last shader a frame was finished with, in a new one (gpu-context.js).
    */
-  async goBack() {
-    const back = this.lastFinished;
-    await this.renderer.respawn();
-    this._drawing = null;
-    if (back) this.runVersion(back);
-    this._resend();
-    this.compile().catch(() => {});
-    this.requestRender();
+  goBack() {
+    return goBack(this);
   }
 
   // ---- drawing ---------------------------------------------------------------------------------
 
   /** Draws at the next animation frame (once, however often it is asked, and never while a frame is under way). */
   requestRender() {
-    this._dirty = true;
-    this.stillFrames = 0;
-    this._schedule();
-  }
-
-  _schedule() {
-    if (!this._raf && !this._drawing) this._raf = requestAnimationFrame((now) => this._tick(now));
-  }
-
-  /** Whether converging asks for another frame: while the view is still, up to convergeFrames. */
-  get _converging() {
-    return this.converging && this.stillFrames < this.convergeFrames;
-  }
-
-  /** @param {number} now */
-  _tick(now) {
-    this._raf = 0;
-    if (this._drawing || !(this._dirty || this.inputs.playing || this._converging)) return;
-    const readBack = this.readBackNext;
-    this.readBackNext = false;
-    this.drawFrame(now, readBack).catch(() => {}); // a lost context: the page says so
+    this.frames.request();
   }
 
   /**
@@ -523,50 +382,9 @@ export class RaytracerApp extends Emitter {
    * context is lost.
    * @param {number} [now] timestamp in ms (performance.now() or a rAF time)
    * @param {boolean} [readBack]
-   * @returns {Promise<{pixels: Uint8Array | null, width: number, height: number, frame: number} | null>}
    */
-  async drawFrame(now = performance.now(), readBack = false) {
-    while (this._drawing) await this._drawing.catch(() => {});
-    if (this.renderer.contextLost || !this.renderer.hasProgram) return null;
-    const { width, height } = this.canvasSize.target();
-    this._dirty = false;
-    const inputs = { ...this.inputs.beginFrame(width, height, now), keyboard: this.keyboard.data.slice() };
-    const running = this._running;
-    const drawing = this.renderer.drawFrame(inputs, readBack);
-    this._drawing = drawing;
-    let drawn;
-    try {
-      drawn = await drawing;
-    } finally {
-      if (this._drawing === drawing) this._drawing = null;
-    }
-    this.inputs.endFrame();
-    if (this.keyboard.endFrame()) this.requestRender(); // "pressed this frame" is over
-    this.framesRendered++;
-    this.lastFinished = running;
-    if (this.inputs.playing) {
-      // the clock when the frame was drawn, not when it was due: on a slow GPU the animation
-      // frames' timestamps run ahead of the drawing (frame-timer.js)
-      const drawnAt = performance.now();
-      if (this._lastFrameAt !== null) this.emit('frame', drawnAt - this._lastFrameAt);
-      this._lastFrameAt = drawnAt;
-    } else {
-      this._lastFrameAt = null;
-    }
-    const result = { pixels: drawn.pixels, width, height, frame: inputs.frame };
-    this.emit('drawn', result);
-    this.stillFrames++;
-    if (this.inputs.playing || this._dirty || this._converging) this._schedule();
-    return result;
-  }
-
-  /** Puts a bitmap from the worker on the canvas (sized to it: the mouse maps through that size). */
-  _show(bitmap) {
-    if (this.canvas.width !== bitmap.width || this.canvas.height !== bitmap.height) {
-      this.canvas.width = bitmap.width;
-      this.canvas.height = bitmap.height;
-    }
-    this.screen.transferFromImageBitmap(bitmap);
+  drawFrame(now = performance.now(), readBack = false) {
+    return this.frames.draw(now, readBack);
   }
 
   // ---- output ----------------------------------------------------------------------------------
@@ -577,16 +395,8 @@ export class RaytracerApp extends Emitter {
    * @param {{width: number, height: number} | null} [size]
    * @returns {Promise<{width:number, height:number, data:Uint8Array}>}
    */
-  async capture(size = null) {
-    if (!this.renderer.hasProgram || this.renderer.contextLost) throw new Error('nothing to capture: no shader is running');
-    if (!this.inputs.last) await this.drawFrame();
-    const last = /** @type {import('./shadertoy-inputs.js').FrameInputs} */ (this.inputs.last);
-    // a multipass shader's buffers are the canvas's size: its Image pass is drawn again over them
-    // as they are, which only means the same picture at the same size
-    const wanted = size && !this.isMultipass ? size : { width: last.width, height: last.height };
-    const rounded = { width: Math.max(1, Math.round(wanted.width)), height: Math.max(1, Math.round(wanted.height)) };
-    const { width, height } = fitGpu(rounded, this.renderer.maxSize, 'screenshot size');
-    return { width, height, data: await this.renderer.redraw(last, width, height) };
+  capture(size = null) {
+    return this.frames.capture(size);
   }
 
   /**

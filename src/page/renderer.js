@@ -7,27 +7,20 @@
 // (drawRows: one scissored draw each, so a heavy frame is many short draws), and copied to the
 // canvas only to be shown (present: the canvas's drawing buffer is handed to the page as an
 // ImageBitmap, which leaves the canvas blank).
+//
+// Compiling every pass, with its errors mapped to the user's lines and the material cache, is
+// pass-compiler.js's; what each pass reads in its channels, and the sampler objects it reads
+// buffers with, channel-bindings.js's.
 
 import { GpuTimer } from './frame-timer.js';
 import * as THREE from 'three';
-import { FIRST_FRAME_UNIFORMS, SHADERTOY_UNIFORMS, composePassShader } from '../shadertoy/header.js';
-import { formatShaderMessages, parseShaderLog, userLineOffset } from '../shadertoy/shader-errors.js';
-import { formatPassMessages, parsePassShaderLog } from '../shadertoy/pass-errors.js';
-import { channelTypes, frameSchedule } from '../shadertoy/multipass.js';
+import { FIRST_FRAME_UNIFORMS, SHADERTOY_UNIFORMS } from '../shadertoy/header.js';
 import { PassBuffers } from './pass-buffers.js';
-import { ShaderCompileError, WebGL2UnavailableError } from './renderer-errors.js';
+import { WebGL2UnavailableError } from './renderer-errors.js';
+import { PassCompiler, VERTEX_SHADER } from './pass-compiler.js';
+import { ChannelSamplers, bindChannels, imageTexture, ownChannelUniforms } from './channel-bindings.js';
 
-/** Compiled materials kept for switching back without a compile: a uniform form, a constant form, and one spare, for each of up to five passes. */
-const MATERIALS_KEPT = 15;
-
-/** @typedef {ReturnType<typeof frameSchedule>[number] & {material: THREE.RawShaderMaterial}} Step */
-
-const VERTEX_SHADER = `
-in vec3 position;
-void main() {
-    gl_Position = vec4(position.xy, 0.0, 1.0);
-}
-`;
+/** @typedef {import('./pass-compiler.js').Step} Step */
 
 /** Copies the frame target to the canvas pixel for pixel (texelFetch: no filtering, no flip). */
 const COPY_SHADER = `
@@ -101,7 +94,6 @@ export class ShaderRenderer {
     this.three = new THREE.WebGLRenderer({ canvas, context: gl, ...attributes });
     this.three.setPixelRatio(1); // we size the drawing buffer in device pixels ourselves
     this.three.autoClear = false; // the triangle covers every pixel
-    this.three.debug.onShaderError = (...args) => this._onShaderError(...args);
 
     /** Shadertoy's uniforms plus the live control uniforms; shared by every material we build. */
     this.uniforms = shadertoyUniforms();
@@ -112,11 +104,10 @@ export class ShaderRenderer {
     this.mesh = new THREE.Mesh(geometry, null);
     this.mesh.frustumCulled = false;
     this.scene.add(this.mesh);
-    // compiled away from the visible scene, swapped in only when it works
-    this.stagingScene = new THREE.Scene();
-    this.stagingMesh = new THREE.Mesh(geometry, null);
-    this.stagingMesh.frustumCulled = false;
-    this.stagingScene.add(this.stagingMesh);
+    /** Compiles the passes (pass-compiler.js); keeps compiled materials, never disposing one on screen. */
+    this.compiler = new PassCompiler(this.three, geometry, this.camera, (material) =>
+      this.steps.some((step) => step.material === material),
+    );
 
     /** Where frames are drawn and kept (RGBA8, as the page's canvas): the page shows copies of it. */
     this.frameTarget = this._target(1, 1);
@@ -146,21 +137,11 @@ export class ShaderRenderer {
     /** Shadertoy's keyboard texture: 256 × 3 bytes, nearest (keyboard.js). */
     this.keyboard = new THREE.DataTexture(new Uint8Array(256 * 3), 256, 3, THREE.RedFormat, THREE.UnsignedByteType);
     this.keyboard.needsUpdate = true;
-    /** Sampler objects for the pass being drawn, by unit (_samplersOf). @type {Array<{unit: number, sampler: WebGLSampler}>} */
-    this._samplers = [];
-    /** @type {Map<string, WebGLSampler>} */
-    this._samplerObjects = new Map();
+    /** The sampler objects of the pass being drawn (channel-bindings.js). */
+    this.samplers = new ChannelSamplers(gl, this.three);
 
-    this._compiling = null; // set while three.js checks a program, read by _onShaderError
     this._serial = 0; // compiles started
     this._installed = 0; // the compile on screen
-    /**
-     * Materials that compiled, by their code, most recent last: the page switches between a
-     * shader's uniform form and its constant form (app.js), and switching back must not wait
-     * for a compile.
-     * @type {Map<string, THREE.RawShaderMaterial>}
-     */
-    this._compiled = new Map();
   }
 
   /** True once some shader has compiled (render() draws nothing before). */
@@ -197,39 +178,8 @@ export class ShaderRenderer {
    * @param {string} [fileName]
    */
   async compile(project, hostBlock, fileName = 'shader') {
-    const schedule = frameSchedule(project);
-    const multipass = project.common !== null || schedule.length > 1;
     const serial = ++this._serial;
-    const sources = Object.fromEntries([['Common', project.common ?? ''], ...project.passes.map((pass) => [pass.name, pass.code])]);
-    const messages = [];
-    /** @type {Step[]} */
-    const steps = [];
-    for (const step of schedule) {
-      const { pass } = step;
-      const composed = composePassShader(pass.code, {
-        common: project.common,
-        hostBlock,
-        kind: pass.kind,
-        name: pass.name,
-        channelTypes: channelTypes(pass),
-      });
-      const check = {
-        userText: (project.common === null ? '' : project.common + '\n') + pass.code,
-        sections: multipass ? composed.sections : null,
-      };
-      try {
-        steps.push({ ...step, material: await this._compileMaterial(composed, check) });
-      } catch (error) {
-        if (!error.messages) throw error;
-        messages.push(...error.messages);
-      }
-    }
-    if (messages.length) {
-      for (const step of steps) this._remember(step.material.fragmentShader, step.material);
-      const report = multipass ? formatPassMessages(messages, sources) : formatShaderMessages(messages, project.passes[0].code, fileName);
-      throw new ShaderCompileError(report, messages);
-    }
-    for (const step of steps) this._remember(step.material.fragmentShader, step.material);
+    const steps = await this.compiler.compileSteps(project, hostBlock, fileName, () => this._passUniforms());
     if (serial < this._installed) return; // a newer compile got in first
     this._installed = serial;
     this.steps = steps;
@@ -245,62 +195,11 @@ export class ShaderRenderer {
   }
 
   /**
-   * One pass's material, compiled (or the one kept from before for the same code).
-   * @param {{code: string, firstSourceLine: number}} composed
-   * @param {{userText: string, sections: import('../shadertoy/header.js').PassSection[] | null}} check
-   */
-  async _compileMaterial({ code, firstSourceLine }, { userText, sections }) {
-    // three.js writes `#version` itself (glslVersion), ahead of its own #defines
-    const body = code.slice(code.indexOf('\n') + 1);
-    const cached = this._compiled.get(body);
-    if (cached) return cached;
-    const material = new THREE.RawShaderMaterial({
-      glslVersion: THREE.GLSL3,
-      vertexShader: VERTEX_SHADER,
-      fragmentShader: body,
-      uniforms: this._passUniforms(),
-      depthTest: false,
-      depthWrite: false,
-      toneMapped: false,
-    });
-    this.stagingMesh.material = material;
-    // compile() creates the program now; compileAsync then waits for it without blocking, where
-    // the driver can (KHR_parallel_shader_compile; asking three.js for it would warn otherwise)
-    const compiled = this.three.extensions.has('KHR_parallel_shader_compile')
-      ? this.three.compileAsync(this.stagingScene, this.camera)
-      : Promise.resolve(this.three.compile(this.stagingScene, this.camera));
-    this.stagingMesh.material = null;
-    await compiled;
-
-    // Asking for the uniforms makes three.js check the program, calling onShaderError on failure.
-    const program = /** @type {{currentProgram: {getUniforms: () => unknown}}} */ (this.three.properties.get(material)).currentProgram;
-    const check = { userText, sections, body, firstBodyLine: firstSourceLine - 1, error: null };
-    this._compiling = check;
-    try {
-      program.getUniforms();
-    } finally {
-      this._compiling = null;
-    }
-    if (check.error) {
-      material.dispose();
-      throw check.error;
-    }
-    return material;
-  }
-
-  /**
    * A pass's uniforms: Shadertoy's and the controls', shared by every pass (one write reaches them
    * all), but its own channels and their resolutions.
    */
   _passUniforms() {
-    const own = {
-      iChannel0: { value: this._black },
-      iChannel1: { value: this._black },
-      iChannel2: { value: this._black },
-      iChannel3: { value: this._black },
-      iChannelResolution: { value: new Array(12).fill(0) },
-    };
-    return { ...this.uniforms, ...own };
+    return { ...this.uniforms, ...ownChannelUniforms(this._black) };
   }
 
   /**
@@ -313,73 +212,11 @@ export class ShaderRenderer {
   beginStep(step, width, height) {
     const uniforms = step.material.uniforms;
     for (const name of Object.keys(this.uniforms)) if (!(name in uniforms)) uniforms[name] = this.uniforms[name]; // controls added later
-    const resolution = uniforms.iChannelResolution.value;
-    for (const binding of step.bindings) {
-      const i = binding.channel;
-      let texture = null;
-      let size = binding.resolution === 'canvas' ? [width, height, 1] : binding.resolution;
-      if (binding.source === 'buffer') texture = this.buffers.read(/** @type {string} */ (binding.buffer));
-      else if (binding.source === 'keyboard') texture = this.keyboard;
-      else if (binding.source === 'none' && step.target === 'screen' && this._channels[i]) {
-        texture = this._channels[i]; // an image the page put into this channel
-        size = [texture.image.width, texture.image.height, 1];
-      } else if (binding.samplerType === '2D') texture = this._black;
-      // else null: three.js binds an empty cube or 3D texture for a samplerCube / sampler3D
-      uniforms[`iChannel${i}`].value = texture;
-      resolution.splice(i * 3, 3, ...size);
-    }
+    bindChannels(step, width, height, { buffers: this.buffers, keyboard: this.keyboard, channels: this._channels, black: this._black });
     this.mesh.material = step.material;
     step.material.uniformsNeedUpdate = true; // the same material drawn again may read other textures
-    this._samplers = this._samplersOf(step);
+    this.samplers.use(step);
     return step.target === 'screen' ? null : this.buffers.writeTarget(step.target);
-  }
-
-  /**
-   * The WebGL sampler objects a pass's buffer channels are read with, by texture unit. A buffer's
-   * texture has one filter and wrap of its own, but Shadertoy sets them per channel (two passes,
-   * or two channels of one pass, may read one buffer differently); a sampler object bound to a
-   * unit overrides the texture's own. three.js hands out units in the order of the program's
-   * active uniforms, samplers only (WebGLUniforms.upload → allocateTextureUnit), so iChannel i's
-   * unit is its place among them.
-   * @param {Step} step
-   * @returns {Array<{unit: number, sampler: WebGLSampler}>}
-   */
-  _samplersOf(step) {
-    const program = /** @type {{currentProgram?: {getUniforms: () => {seq: Array<{id: string, type: number}>}}}} */ (
-      this.three.properties.get(step.material)
-    ).currentProgram;
-    if (!program) return [];
-    const gl = this.gl;
-    /** @type {number[]} */
-    const samplerTypes = [gl.SAMPLER_2D, gl.SAMPLER_CUBE, gl.SAMPLER_3D, gl.SAMPLER_2D_ARRAY, gl.SAMPLER_2D_SHADOW];
-    const units = new Map();
-    let unit = 0;
-    for (const uniform of program.getUniforms().seq) {
-      if (!samplerTypes.includes(uniform.type)) continue;
-      const channel = /^iChannel([0-3])$/.exec(uniform.id);
-      if (channel) units.set(Number(channel[1]), unit);
-      unit++;
-    }
-    return step.bindings
-      .filter((binding) => (binding.source === 'buffer' || binding.source === 'keyboard') && binding.sampler && units.has(binding.channel))
-      .map((binding) => ({ unit: units.get(binding.channel), sampler: this._samplerObject(/** @type {any} */ (binding.sampler)) }));
-  }
-
-  /** @param {import('../shadertoy/multipass.js').Sampler} sampler */
-  _samplerObject({ filter, wrap }) {
-    const key = `${filter} ${wrap}`;
-    let object = this._samplerObjects.get(key);
-    if (object) return object;
-    const gl = this.gl;
-    object = /** @type {WebGLSampler} */ (gl.createSampler());
-    const min = { nearest: gl.NEAREST, linear: gl.LINEAR, mipmap: gl.LINEAR_MIPMAP_LINEAR }[filter] ?? gl.LINEAR;
-    gl.samplerParameteri(object, gl.TEXTURE_MIN_FILTER, min);
-    gl.samplerParameteri(object, gl.TEXTURE_MAG_FILTER, filter === 'nearest' ? gl.NEAREST : gl.LINEAR);
-    const mode = wrap === 'repeat' ? gl.REPEAT : gl.CLAMP_TO_EDGE;
-    gl.samplerParameteri(object, gl.TEXTURE_WRAP_S, mode);
-    gl.samplerParameteri(object, gl.TEXTURE_WRAP_T, mode);
-    this._samplerObjects.set(key, object);
-    return object;
   }
 
   /** A pass has drawn all of its rows. @param {Step} step */
@@ -393,44 +230,9 @@ export class ShaderRenderer {
     this.keyboard.needsUpdate = true;
   }
 
-  /** Keeps the most recent compiled materials (MATERIALS_KEPT); disposes the ones that fall out. */
-  _remember(body, material) {
-    this._compiled.delete(body);
-    this._compiled.set(body, material);
-    for (const [key, old] of this._compiled) {
-      if (this._compiled.size <= MATERIALS_KEPT) break;
-      this._compiled.delete(key);
-      if (!this.steps.some((step) => step.material === old)) old.dispose();
-    }
-  }
-
-  /** Forgets the compiled materials but the one on screen (their programs died with a lost context). */
+  /** Forgets the compiled materials but the ones on screen (their programs died with a lost context). */
   forgetCompiled() {
-    for (const material of this._compiled.values()) if (!this.steps.some((step) => step.material === material)) material.dispose();
-    this._compiled.clear();
-  }
-
-  /** three.js's hook for a program that did not link: turn the logs into a ShaderCompileError. */
-  _onShaderError(gl, program, vertexShader, fragmentShader) {
-    const check = this._compiling;
-    if (!check) return;
-    const offset = userLineOffset(gl.getShaderSource(fragmentShader) ?? '', check.body, check.firstBodyLine, check.userText);
-    const log = gl.getShaderInfoLog(fragmentShader) ?? '';
-    const fragment = check.sections
-      ? parsePassShaderLog(log, offset, check.sections)
-      : parseShaderLog(log, offset, check.userText.split('\n').length).map((m) => ({ ...m, pass: null }));
-    const messages = [
-      ...fragment,
-      ...parseShaderLog(gl.getShaderInfoLog(vertexShader) ?? '', null, 0).map((m) => ({
-        ...m,
-        pass: null,
-        message: `vertex shader: ${m.message}`,
-      })),
-    ];
-    if (messages.length === 0) {
-      messages.push(...parseShaderLog(gl.getProgramInfoLog(program) ?? 'link failed', null, 0).map((m) => ({ ...m, pass: null })));
-    }
-    check.error = new ShaderCompileError('', messages);
+    this.compiler.forgetCompiled();
   }
 
   /** True between webglcontextlost and webglcontextrestored. */
@@ -450,29 +252,14 @@ export class ShaderRenderer {
   }
 
   /**
-   * Puts an image into iChannel0..3 (null: back to the 1×1 black texture). Sampled as Shadertoy
-   * samples an image by default: mipmapped, repeating, uv (0,0) at the image's bottom-left
-   * corner, no colour-space conversion. WebGL ignores its flip and premultiply flags for an
-   * ImageBitmap, so the page decodes the bitmap with its rows already flipped and alpha not
-   * premultiplied (shader-loader.js).
+   * Puts an image into iChannel0..3 (null: back to the 1×1 black texture), sampled as Shadertoy
+   * samples an image by default (channel-bindings.js: imageTexture).
    * @param {number} index 0..3
    * @param {ImageBitmap|null} image
    */
   setChannel(index, image) {
     this._channels[index]?.dispose();
-    let texture = null;
-    if (image) {
-      texture = new THREE.Texture(image);
-      texture.flipY = false;
-      texture.premultiplyAlpha = false;
-      texture.wrapS = THREE.RepeatWrapping;
-      texture.wrapT = THREE.RepeatWrapping;
-      texture.minFilter = THREE.LinearMipmapLinearFilter;
-      texture.magFilter = THREE.LinearFilter;
-      texture.generateMipmaps = true;
-      texture.colorSpace = THREE.NoColorSpace;
-      texture.needsUpdate = true;
-    }
+    const texture = image ? imageTexture(image) : null;
     this._channels[index] = texture;
     this.uniforms[`iChannel${index}`].value = texture ?? this._black;
     const resolution = this.uniforms.iChannelResolution.value;
@@ -537,12 +324,11 @@ export class ShaderRenderer {
     target.scissor.set(0, y0, target.width, y1 - y0);
     target.scissorTest = y0 > 0 || y1 < target.height;
     this.three.setRenderTarget(target);
-    for (const { unit, sampler } of this._samplers) this.gl.bindSampler(unit, sampler);
+    this.samplers.bind();
     try {
       this.three.render(this.scene, this.camera);
     } finally {
-      // unbound again: a sampler left on a unit would override every texture drawn there later
-      for (const { unit } of this._samplers) this.gl.bindSampler(unit, null);
+      this.samplers.unbind(); // a sampler left on a unit would override every texture drawn there later
       this.three.setRenderTarget(null);
     }
     return true;
