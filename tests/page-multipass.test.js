@@ -5,6 +5,8 @@
 // wrap. Each case is a small shader written here, given to the page as Shadertoy's JSON export
 // (the older numeric-id style: buffers 257–260, the keyboard 33).
 
+import { unzipSync } from 'fflate';
+import { PNG } from 'pngjs';
 import { describe, expect, test } from 'vitest';
 import { info, nextFrame, pixel, readPixels, withPage } from './page-helpers.js';
 
@@ -201,6 +203,29 @@ describe('Restart, resize and inputs', () => {
       expect(Math.abs(linear - 128), `linear filtering halfway between 0 and 1 gave ${linear}`).toBeLessThanOrEqual(1);
       expect(nearest).toBe(255);
       expect(repeated, 'wrapped round to the left half').toBe(0);
+    });
+  });
+
+  test('a recording of a multipass shader draws every pass each frame, at the canvas size, from cleared buffers', async () => {
+    await withPage(async ({ page, goto }) => {
+      await run(page, goto, COUNTER);
+      for (let i = 0; i < 3; i++) await readPixels(page); // the live buffers have counted a while
+      const result = await page.evaluate(() => window.raytracer.record({ format: 'png', frames: 4, fps: 10, width: 64, height: 64 }));
+      expect([result.width, result.height], 'the canvas size, whatever was asked').toEqual([32, 18]);
+      const files = unzipSync(new Uint8Array(Buffer.from(result.data, 'base64')));
+      const counts = Object.keys(files)
+        .sort()
+        .map((name) => {
+          const image = PNG.sync.read(Buffer.from(files[name]));
+          const at = (5 * image.width + 5) * 4;
+          return [image.data[at], image.data[at + 1]]; // the count, iFrame
+        });
+      expect(counts).toEqual([
+        [1, 0],
+        [2, 1],
+        [3, 2],
+        [4, 3],
+      ]);
     });
   });
 });

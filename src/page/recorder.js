@@ -208,15 +208,20 @@ export class Recorder {
     try {
       await app.whenCompiled();
       if (!app.renderer.hasProgram || app.renderer.contextLost) throw new Error('nothing to record: no shader is running');
-      const settings = recordSettings(request, { width: app.renderer.width, height: app.renderer.height }, app.renderer.maxSize);
+      const canvas = { width: app.renderer.width, height: app.renderer.height };
+      // a multipass shader's buffers are the canvas's size: its frames are recorded at that size,
+      // every pass drawn each frame, from cleared buffers (as iFrame starts at 0)
+      const multipass = app.isMultipass;
+      const settings = recordSettings(multipass ? { ...request, ...canvas } : request, canvas, app.renderer.maxSize);
       if (wasPlaying) app.pause();
+      if (multipass) app.renderer.clearBuffers();
       const writer = settings.format === 'webm' ? await webmWriter(settings) : pngWriter(settings);
       try {
         const frame = frameInputs(app, settings.fps);
         for (let i = 0; i < settings.frames; i++) {
           if (abort.signal.aborted) throw new RecordingCancelled();
           if (app.renderer.contextLost) throw new Error('the GPU context was lost while recording');
-          const rgba = opaque(await app.renderer.redraw(frame(i), settings.width, settings.height));
+          const rgba = opaque(await app.renderer.redraw(frame(i), settings.width, settings.height, { allPasses: multipass }));
           await writer.add(rgba, i);
           onProgress(i + 1, settings.frames);
           await nextTask();

@@ -289,10 +289,12 @@ export class RenderClient {
    * @param {FrameInputs} inputs
    * @param {number} width
    * @param {number} height
+   * @param {{allPasses?: boolean}} [options] allPasses: a whole frame of a multipass shader, its
+   *   buffers drawn too (they move on, as in a played frame; width × height must be theirs)
    * @returns {Promise<Uint8Array>}
    */
-  redraw(inputs, width, height) {
-    return this._ask({ type: 'capture', inputs, width, height });
+  redraw(inputs, width, height, { allPasses = false } = {}) {
+    return this._ask({ type: 'capture', inputs, width, height, allPasses });
   }
 
   /**

@@ -16,7 +16,8 @@
 //                               bitmap?} when the GPU has finished it (a bitmap now and
 //                               then: the frame building up), then drawn {id, bitmap, pixels?,
 //                               gpuTimes}; pixels (readBack) are RGBA8, rows top to bottom
-//   capture {id, inputs, width, height}   the same frame at another size, off screen
+//   capture {id, inputs, width, height, allPasses}   the same frame at another size, off screen
+//                               (allPasses: every pass, buffers included, at their size)
 //                             → band …, then captured {id, pixels}
 //   bench {id, inputs, n}     n whole frames back to back, each waited for → benched {id, times}
 //   loseContext, restoreContext      WEBGL_lose_context, for tests of a lost context
@@ -52,6 +53,7 @@ const post = (message, transfer = []) => /** @type {any} */ (self).postMessage(m
  *   only the last, the Image pass, over the buffers as they are)
  * @property {number} y rows of it done
  * @property {boolean} redo something changed while a band was being drawn: it starts again
+ * @property {boolean} [allPasses] a capture that draws every pass (a recorded frame)
  */
 
 /** @type {ShaderRenderer | null} */
@@ -119,7 +121,9 @@ function pump() {
   }
   const gl = renderer.gl;
   const steps = renderer.steps;
-  if (job.kind === 'capture' || job.step >= steps.length) job.step = steps.length - 1; // a new shader meanwhile
+  // a capture draws only the Image pass over the buffers as they are, unless it is a recorded
+  // frame of a multipass shader (allPasses); a new shader meanwhile may have fewer passes
+  if ((job.kind === 'capture' && !job.allPasses) || job.step >= steps.length) job.step = steps.length - 1;
   const step = steps[job.step];
   const first = job.step === 0 && job.y === 0;
   const last = job.step === steps.length - 1;
@@ -240,7 +244,7 @@ const handlers = {
     pump();
   },
 
-  capture({ id, inputs, width, height }) {
+  capture({ id, inputs, width, height, allPasses }) {
     waiting.push({
       id,
       kind: 'capture',
@@ -249,6 +253,7 @@ const handlers = {
       height,
       readBack: true,
       target: renderer.makeTarget(width, height),
+      allPasses,
       step: 0,
       y: 0,
       redo: false,
