@@ -85,7 +85,9 @@ export class PassCompiler {
         steps.push({ ...step, material: await this._compileMaterial(composed, check, passUniforms) });
       } catch (error) {
         if (!error.messages) throw error;
-        messages.push(...error.messages);
+        // an error in Common is the same error in every pass that includes it: said once
+        const said = new Set(messages.map((m) => JSON.stringify([m.pass, m.line, m.message])));
+        messages.push(...error.messages.filter((m) => m.pass !== 'Common' || !said.has(JSON.stringify([m.pass, m.line, m.message]))));
       }
     }
     if (messages.length) {
