@@ -158,7 +158,10 @@ describe('images and shaders of another origin are refused up front', () => {
         await goto(`?shader=${base}/channel.glsl&${SIZE}`);
         const outcome = await settleInPage(page, 'setChannel', 0, `${otherOrigin}/img.png`);
         expect(outcome.error).toBe(`only files served by this page's server (${context.baseUrl}) can be loaded`);
-        expect(pixel(await readPixels(page), 50, 5).slice(1)).toEqual([0, 0]); // size 0 x 0: nothing bound
+        await page.waitForFunction(() => window.raytracer.info().fileName === 'channel.glsl');
+        const frame = await readPixels(page);
+        // size 0 x 0: nothing bound (the page's state in the message, should it ever differ)
+        expect(pixel(frame, 50, 5).slice(1), JSON.stringify(await info(page))).toEqual([0, 0]);
       });
     });
   });
