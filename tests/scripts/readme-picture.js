@@ -26,6 +26,7 @@ await withHarness(async (context) => {
   try {
     await page.setViewport(PAGE_VIEWPORT);
     await page.goto(`${(await harnessContext()).baseUrl}/?time=0`, { waitUntil: 'load' });
+    await page.waitForFunction(() => window.raytracer, { polling: 50 }); // installed once the render worker runs
     await page.evaluate(() => window.raytracer.ready);
     const edit = await page.$('::-p-aria([name="Edit shader"])');
     if (edit) await edit.click();
