@@ -205,6 +205,22 @@ describe('a shader that never finishes', () => {
         });
         expect(Date.now() - asked).toBeLessThan(1000);
         expect(playing).toBe(false);
+
+        // "Go back" starts a new renderer; on SwiftShader the GPU never answers it, and the page
+        // says so and how to get out, rather than leaving the canvas silent
+        // (clicked from the page's script: an input event from outside waits for a frame the
+        // stuck GPU process cannot draw)
+        const clicked = await page.evaluate(() => {
+          const button = [...document.querySelectorAll('[role="alert"] button')].find((b) => b.textContent === 'Go back to heavy.glsl');
+          /** @type {HTMLButtonElement | undefined} */ (button)?.click();
+          return Boolean(button);
+        });
+        expect(clicked).toBe(true);
+        await page.waitForFunction(() => document.querySelector('[role="alert"]')?.textContent?.includes('The GPU did not come back'), {
+          polling: 200,
+          timeout: 40_000,
+        });
+        expect(await page.$eval('[role="alert"]', (e) => e.textContent)).toContain('close the browser and open the page again');
       } finally {
         browser.process()?.kill('SIGKILL'); // its GPU process is stuck in the draw for good
         await browser.disconnect().catch(() => {});

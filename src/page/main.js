@@ -124,7 +124,21 @@ function showWatchdog(app, overlay) {
       .filter(Boolean)
       .join('\n');
     const actions = back
-      ? [{ label: `Go back to ${back.name}`, run: () => app.goBack().catch((error) => console.warn(error.message)) }]
+      ? [
+          {
+            label: `Go back to ${back.name}`,
+            run: () => {
+              overlay.show(`Going back to ${back.name}…`, 'Starting the renderer again.');
+              app.goBack().catch((error) => {
+                console.warn(error.message);
+                overlay.show(
+                  'The GPU did not come back',
+                  `${error.message}: the draw that never ends still holds the GPU. On SwiftShader it does until the browser closes: close the browser and open the page again, and it runs ${back.name}.`,
+                );
+              });
+            },
+          },
+        ]
       : [];
     overlay.showActions(`${app.fileName} may never finish`, detail, actions);
   });

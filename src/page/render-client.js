@@ -113,9 +113,9 @@ export class RenderClient {
     this._pending.clear();
     this.hasProgram = false;
     this._bandSince = null;
+    await this._spawn(); // rejects when the GPU does not answer a new worker either: still hung
     if (this._hung) this.onHang(null);
     this._hung = false;
-    await this._spawn();
   }
 
   _receive(data) {
