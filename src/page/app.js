@@ -131,7 +131,8 @@ export class RaytracerApp extends Emitter {
 
     this.canvasSize.watch(() => this.requestRender());
     watchContext(this);
-    watchKeyboard(this.keyboard, () => this.requestRender());
+    // a key redraws only a shader that reads the keyboard (any other has nothing new to show)
+    watchKeyboard(this.keyboard, () => this.readsKeyboard && this.requestRender());
   }
 
   /**
@@ -148,6 +149,11 @@ export class RaytracerApp extends Emitter {
   /** The Image tab's text (the whole shader, for a plain file). */
   get source() {
     return this.project.passes.find((pass) => pass.kind === 'image')?.code ?? '';
+  }
+
+  /** Whether some pass of the shader reads Shadertoy's keyboard texture. */
+  get readsKeyboard() {
+    return this.project.passes.some((pass) => pass.channels.some((channel) => channel?.kind === 'keyboard'));
   }
 
   /** Whether the shader has a Common tab or a buffer. */

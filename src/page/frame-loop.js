@@ -74,7 +74,8 @@ export class FrameLoop {
       if (this.drawing === drawing) this.drawing = null;
     }
     app.inputs.endFrame();
-    if (app.keyboard.endFrame()) app.requestRender(); // "pressed this frame" is over
+    // "pressed this frame" is over: a shader that reads it is drawn once more without it
+    if (app.keyboard.endFrame() && app.readsKeyboard) app.requestRender();
     app.framesRendered++;
     app.lastFinished = running;
     if (app.inputs.playing) {
