@@ -76,4 +76,23 @@ describe('Converge when still', () => {
       expect(after.fileName).toBe('shaders/raytrace.glsl');
     });
   });
+
+  test('a shader that is not the raytracer cannot converge: the toggle is off limits and the hook says why', async () => {
+    await withPage(async ({ page, goto }) => {
+      await goto(`?shader=examples/pattern.glsl&size=${WIDTH}x${HEIGHT}&time=0`);
+      const disabled = await page.evaluate(() => {
+        const row = [...document.querySelectorAll('.lil-gui .lil-controller')].find((c) => c.textContent?.includes('Converge when still'));
+        return row?.classList.contains('lil-disabled');
+      });
+      expect(disabled).toBe(true);
+      const refused = await page.evaluate(() =>
+        window.raytracer.setConverging(true).then(
+          () => null,
+          (e) => e.message,
+        ),
+      );
+      expect(refused).toContain('only the raytracer converges');
+      expect((await info(page)).converging).toBe(false);
+    });
+  });
 });

@@ -23,6 +23,7 @@ import { LiveControlForm } from './live-controls.js';
 import { loadImage } from './shader-loader.js';
 import { KeyboardState } from '../shadertoy/keyboard.js';
 import { frameSchedule, singlePass } from '../shadertoy/multipass.js';
+import { missingRaytracerFunctions } from '../shadertoy/progressive.js';
 import { MAX_SAMPLES } from '../shadertoy/progressive.js';
 import { setConverging } from './converge.js';
 import { FrameLoop } from './frame-loop.js';
@@ -149,6 +150,11 @@ export class RaytracerApp extends Emitter {
   /** The Image tab's text (the whole shader, for a plain file). */
   get source() {
     return this.project.passes.find((pass) => pass.kind === 'image')?.code ?? '';
+  }
+
+  /** Whether "Converge when still" can run this shader (the raytracer: progressive.js). */
+  get canConverge() {
+    return !this.isMultipass && missingRaytracerFunctions(this.source).length === 0;
   }
 
   /** Whether some pass of the shader reads Shadertoy's keyboard texture. */

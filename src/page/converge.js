@@ -1,10 +1,11 @@
-// "Converge when still" (app.setConverging): a single-pass shader (the built-in raytracer) runs
+// "Converge when still" (app.setConverging): the built-in raytracer (or an edit that keeps its
+// camera and radiance functions: progressive.js calls them) runs
 // as its progressive multipass form (progressive.js: Buffer A adds one jittered sample per pixel
 // per frame while nothing changes; Image shows the mean and the sample count), with the clock
 // paused so that the view is still; off, the shader as it was, with its control values. Kept
 // apart from app.js, which only asks for frames while a converging view is still (frame-loop.js).
 
-import { MAX_SAMPLES, progressiveTabs } from '../shadertoy/progressive.js';
+import { MAX_SAMPLES, missingRaytracerFunctions, progressiveTabs } from '../shadertoy/progressive.js';
 import { currentVersion } from './compile-job.js';
 
 /**
@@ -27,7 +28,9 @@ export async function setConverging(app, on, { frames = MAX_SAMPLES } = {}) {
     app.applyControls(back.values ?? {}, 'Converge when still');
     return app.compile();
   }
-  if (app.isMultipass) throw new Error('only a single-pass shader converges: this one has buffers of its own');
+  if (app.isMultipass) throw new Error('only the raytracer converges: this shader has buffers of its own');
+  const missing = missingRaytracerFunctions(app.source);
+  if (missing.length) throw new Error(`only the raytracer converges (shaders/raytrace.glsl): this shader has no ${missing.join(', ')}`);
   app._beforeConverging = currentVersion(app);
   const tabs = progressiveTabs(app.source);
   app.pause();

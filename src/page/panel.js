@@ -36,8 +36,7 @@ export function screenshotSize(choice, width, height) {
 
 export class Panel {
   /**
-   * Shows whether the shader converges, and whether it can (a single-pass shader can; one with
-   * buffers of its own cannot).
+   * Shows whether the shader converges, and whether it can (the raytracer can: app.canConverge).
    * @param {boolean} on
    * @param {boolean} available
    */

@@ -169,7 +169,7 @@ export function installUi(app) {
       app.setConverging(on).catch((error) => {
         console.warn(error.message);
         toast(error.message);
-        panel.setConverging(app.converging, !app.isMultipass);
+        panel.setConverging(app.converging, app.canConverge);
       }),
     scale: app.canvasSize.scale,
     cap: app.canvasSize.cap,
@@ -253,7 +253,7 @@ export function installUi(app) {
   };
   let shownAt = 0;
   app.on('state', () => {
-    panel.setConverging(app.converging, !app.isMultipass);
+    panel.setConverging(app.converging, app.canConverge);
     panel.sync(app.values);
     panel.setChannelSizes(app.renderer.channelSizes());
     showState();
@@ -270,7 +270,7 @@ export function installUi(app) {
   app.on('source', () => {
     if (app.origin !== 'editor') kept.loadedFile({ name: app.fileName, source: serializeProject(app.project) });
     panel.setControls(app.controls, app.values);
-    panel.setConverging(app.converging, !app.isMultipass);
+    panel.setConverging(app.converging, app.canConverge);
     editor.setProject(app.project, app.fileName);
     showNotes();
     document.title = `${app.fileName} · Shadertoy runner`;

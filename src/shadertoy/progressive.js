@@ -241,5 +241,18 @@ export function progressiveTabs(raytraceSource) {
   return { common: COMMON, bufferA, image: IMAGE, controls: [...controls, ...parseControls(IMAGE)], model };
 }
 
+/** What Buffer A calls in the raytracer (progressiveSample): a shader without them has no progressive form. */
+export const RAYTRACER_FUNCTIONS = Object.freeze(['orbitCamera', 'sceneRelativeTo', 'eyeRay', 'radiance']);
+
+/**
+ * The raytracer's functions a single-pass shader lacks for its progressive form ([] when it has
+ * them all: shaders/raytrace.glsl and edits of it that keep them).
+ * @param {string} source
+ * @returns {string[]}
+ */
+export function missingRaytracerFunctions(source) {
+  return RAYTRACER_FUNCTIONS.filter((name) => !new RegExp(String.raw`\b\w+\s+${name}\s*\(`).test(source));
+}
+
 /** The line of the Buffer A tab on which raytrace.glsl's line 1 lands (after the rename macro). */
 export const RAYTRACE_FIRST_BUFFER_LINE = 2;
