@@ -5,8 +5,9 @@
 import { afterAll, describe, expect, test } from 'vitest';
 import { disconnect } from './harness/page.js';
 import {
-  EDITOR,
+  allowClipboard,
   button,
+  EDITOR,
   editorText,
   errorMarkerLines,
   exampleSource,
@@ -17,25 +18,13 @@ import {
   solid,
   typeInEditor,
   waitForCursorLine,
+  withControl,
   withPage,
 } from './page-helpers.js';
 
 afterAll(disconnect);
 
 const PATTERN = '?shader=examples/pattern.glsl&size=160x90&time=2';
-
-/** Lets the page read and write the clipboard (and focuses it: the Clipboard API wants focus). */
-async function allowClipboard(page, baseUrl) {
-  await page.browserContext().overridePermissions(baseUrl, ['clipboard-read', 'clipboard-write', 'clipboard-sanitized-write']);
-  await page.bringToFront();
-}
-
-/** Presses a key with Control held. */
-async function withControl(page, key) {
-  await page.keyboard.down('Control');
-  await page.keyboard.press(key);
-  await page.keyboard.up('Control');
-}
 
 /** Records the file names the page saves (the download links it clicks). */
 async function recordDownloads(page) {

@@ -66,6 +66,16 @@ async function withHeavyShader(body) {
   });
 }
 
+/**
+ * Opens heavy.glsl, then makes its first band (8 rows) outlast the watchdog, and waits for the
+ * watchdog to say so.
+ */
+async function hangOnFirstBand(page, goto, base) {
+  await goto(`?shader=${base}/heavy.glsl&${SIZE}&WORK=0`);
+  await page.evaluate((work) => window.raytracer.setControls({ WORK: work, HEAVY_ROWS: 8 }), HANGING_WORK);
+  await page.waitForFunction(() => document.documentElement.dataset.hung === 'true', { polling: 100, timeout: HANG_AFTER_MS + 30_000 });
+}
+
 /** Waits until the page is in the middle of drawing a frame (a band done, more to come). */
 async function midFrame(page) {
   await page.waitForFunction(
@@ -130,12 +140,7 @@ describe('heavy frames are drawn in bands, and the page keeps answering', () => 
     await withHeavyShader(async (base) => {
       await withPage(async ({ page, goto }) => {
         // the first band (8 rows) alone takes longer than HANG_AFTER_MS
-        await goto(`?shader=${base}/heavy.glsl&${SIZE}&WORK=0`);
-        await page.evaluate((work) => window.raytracer.setControls({ WORK: work, HEAVY_ROWS: 8 }), HANGING_WORK);
-        await page.waitForFunction(() => document.documentElement.dataset.hung === 'true', {
-          polling: 100,
-          timeout: HANG_AFTER_MS + 30_000,
-        });
+        await hangOnFirstBand(page, goto, base);
         const alert = await page.$eval('[role="alert"]', (e) => e.textContent);
         expect(alert).toContain('heavy.glsl may never finish');
         expect(alert).toContain('Go back to heavy.glsl');
@@ -152,12 +157,7 @@ describe('the page never comes back with the shader that hung', () => {
   test('when the GPU is reset after a hang (a lost and restored context), the page runs the last shader that finished a frame', async () => {
     await withHeavyShader(async (base) => {
       await withPage(async ({ page, goto }) => {
-        await goto(`?shader=${base}/heavy.glsl&${SIZE}&WORK=0`);
-        await page.evaluate((work) => window.raytracer.setControls({ WORK: work, HEAVY_ROWS: 8 }), HANGING_WORK);
-        await page.waitForFunction(() => document.documentElement.dataset.hung === 'true', {
-          polling: 100,
-          timeout: HANG_AFTER_MS + 30_000,
-        });
+        await hangOnFirstBand(page, goto, base);
         const note = await page.evaluate(() => JSON.parse(localStorage.getItem('shadertoy-runner.hung') ?? 'null'));
         expect(note.name).toBe('heavy.glsl');
         expect(note.back.values.WORK).toBe(0);

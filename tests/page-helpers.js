@@ -80,6 +80,19 @@ export async function withPage(body, { viewport, beforeLoad, deterministic = tru
   expect(errors, 'the page logged errors').toEqual([]);
 }
 
+/** Lets the page read and write the clipboard (and focuses it: the Clipboard API wants focus). */
+export async function allowClipboard(page, baseUrl) {
+  await page.browserContext().overridePermissions(baseUrl, ['clipboard-read', 'clipboard-write', 'clipboard-sanitized-write']);
+  await page.bringToFront();
+}
+
+/** Presses a key with Control held. */
+export async function withControl(page, key) {
+  await page.keyboard.down('Control');
+  await page.keyboard.press(key);
+  await page.keyboard.up('Control');
+}
+
 /** window.raytracer.readPixels(): a new frame, rows top to bottom. */
 export async function readPixels(page) {
   const r = await page.evaluate(() => window.raytracer.readPixels());

@@ -11,11 +11,12 @@ import { makeImage, readPng, sameImage, writePng } from './harness/images.js';
 import { disconnect } from './harness/page.js';
 import { renderRawShader } from './harness/raw-webgl.js';
 import {
-  EXAMPLES_DIR,
-  EDITOR,
+  allowClipboard,
   button,
+  EDITOR,
   editorText,
   errorMarkerLines,
+  EXAMPLES_DIR,
   exampleSource,
   info,
   overlayText,
@@ -39,12 +40,6 @@ function allPixels(image, rgb) {
     if (p.some((v, c) => Math.abs(v - rgb[c]) > 1)) return false;
   }
   return true;
-}
-
-/** Lets the page read and write the clipboard (and focuses it: the Clipboard API wants focus). */
-async function allowClipboard(page, baseUrl) {
-  await page.browserContext().overridePermissions(baseUrl, ['clipboard-read', 'clipboard-write', 'clipboard-sanitized-write']);
-  await page.bringToFront();
 }
 
 /** Saves the page's downloads in a fresh folder; `next()` waits for the next finished file. */

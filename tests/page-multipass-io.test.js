@@ -7,7 +7,17 @@ import { afterAll, describe, expect, test } from 'vitest';
 import { disconnect } from './harness/page.js';
 import { fromShadertoyJson } from '../src/shadertoy/multipass-json.js';
 import { sameModel } from '../src/shadertoy/multipass.js';
-import { button, editorText, info, openEditor, typeInEditor, withPage, withServedDir } from './page-helpers.js';
+import {
+  allowClipboard,
+  button,
+  editorText,
+  info,
+  openEditor,
+  typeInEditor,
+  withControl,
+  withPage,
+  withServedDir,
+} from './page-helpers.js';
 import {
   BUFFER_A,
   IMAGE,
@@ -25,17 +35,6 @@ import {
 afterAll(disconnect);
 
 const SIZE = 'size=64x36&time=1';
-
-async function allowClipboard(page, baseUrl) {
-  await page.browserContext().overridePermissions(baseUrl, ['clipboard-read', 'clipboard-write', 'clipboard-sanitized-write']);
-  await page.bringToFront();
-}
-
-async function withControl(page, key) {
-  await page.keyboard.down('Control');
-  await page.keyboard.press(key);
-  await page.keyboard.up('Control');
-}
 
 const named = (page, name) => page.waitForFunction((n) => window.raytracer.info().fileName === n, { polling: 50 }, name);
 const toast = (page) => page.$eval('#toast', (t) => t.textContent);

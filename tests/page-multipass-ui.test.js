@@ -7,8 +7,9 @@ import { afterAll, describe, expect, test } from 'vitest';
 import { disconnect } from './harness/page.js';
 import { fromShadertoyJson } from '../src/shadertoy/multipass-json.js';
 import {
-  EDITOR,
+  allowClipboard,
   button,
+  EDITOR,
   editorText,
   errorMarkerLines,
   info,
@@ -17,6 +18,7 @@ import {
   pasteIntoEditor,
   typeInEditor,
   waitForCursorLine,
+  withControl,
   withPage,
   withServedDir,
 } from './page-helpers.js';
@@ -38,17 +40,6 @@ afterAll(disconnect);
 
 const SIZE = 'size=64x36&time=1';
 const PATTERN = `?shader=examples/pattern.glsl&${SIZE}`;
-
-async function withControl(page, key) {
-  await page.keyboard.down('Control');
-  await page.keyboard.press(key);
-  await page.keyboard.up('Control');
-}
-
-async function allowClipboard(page, baseUrl) {
-  await page.browserContext().overridePermissions(baseUrl, ['clipboard-read', 'clipboard-write', 'clipboard-sanitized-write']);
-  await page.bringToFront();
-}
 
 const named = (page, name) => page.waitForFunction((n) => window.raytracer.info().fileName === n, { polling: 50 }, name);
 

@@ -63,7 +63,9 @@ export class FrameLoop {
     if (app.renderer.contextLost || !app.renderer.hasProgram) return null;
     const { width, height } = app.canvasSize.target();
     this.dirty = false;
-    const inputs = { ...app.inputs.beginFrame(width, height, now), keyboard: app.keyboard.data.slice() };
+    const frame = app.inputs.beginFrame(width, height, now);
+    // the keyboard texture goes to the worker (and is uploaded) only for a shader that reads it
+    const inputs = app.readsKeyboard ? { ...frame, keyboard: app.keyboard.data.slice() } : frame;
     const running = app._running;
     const drawing = app.renderer.drawFrame(inputs, readBack);
     this.drawing = drawing;
