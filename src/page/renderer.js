@@ -110,7 +110,7 @@ export class ShaderRenderer {
     );
 
     /** Where frames are drawn and kept (RGBA8, as the page's canvas): the page shows copies of it. */
-    this.frameTarget = this._target(1, 1);
+    this.frameTarget = this.makeTarget(1, 1);
     this.copyScene = new THREE.Scene();
     const copy = new THREE.Mesh(
       geometry,
@@ -266,14 +266,14 @@ export class ShaderRenderer {
     resolution.splice(index * 3, 3, image?.width ?? 0, image?.height ?? 0, image ? 1 : 0);
   }
 
-  /** @param {number} width @param {number} height */
-  _target(width, height) {
-    return new THREE.WebGLRenderTarget(width, height, { depthBuffer: false, stencilBuffer: false, generateMipmaps: false });
-  }
-
-  /** A render target of its own, for drawing a frame at another size (a screenshot, a recording). */
+  /**
+   * An RGBA8 render target, as the page's canvas: the frame target, and one of its own for a
+   * frame drawn at another size (a screenshot, a recording).
+   * @param {number} width
+   * @param {number} height
+   */
   makeTarget(width, height) {
-    return this._target(width, height);
+    return new THREE.WebGLRenderTarget(width, height, { depthBuffer: false, stencilBuffer: false, generateMipmaps: false });
   }
 
   /** Sizes the frame target and the canvas, in device pixels; what is in the target is lost on a change. */
