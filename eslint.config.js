@@ -2,6 +2,11 @@
 import js from '@eslint/js';
 import globals from 'globals';
 
+const REFERENCE_RULE = {
+  group: ['**/reference/*'],
+  message: 'The page does not load the float64 reference up front: import() it lazily where a feature needs it.',
+};
+
 export default [
   { ignores: ['dist/', 'node_modules/', 'tests/output/', 'public/'] },
   js.configs.recommended,
@@ -17,8 +22,37 @@ export default [
   },
   // The page runs in the browser.
   { files: ['src/page/**/*.js'], languageOptions: { globals: globals.browser } },
-  // The Shadertoy contract and the reference run in both.
-  { files: ['src/shadertoy/**/*.js', 'src/reference/**/*.js'], languageOptions: { globals: { ...globals.browser, ...globals.node } } },
+  // What may import what (README, Layout). The page never loads the float64 reference up front:
+  // a feature that needs it imports it with import(), when it is asked for.
+  {
+    files: ['src/page/**/*.js'],
+    rules: { 'no-restricted-imports': ['error', { patterns: [REFERENCE_RULE] }] },
+  },
+  // The render worker (gpu/) runs on a thread of its own: it imports its own modules, the
+  // Shadertoy contract and src/shared/, never the page's state (app/), widgets (ui/) or files (io/).
+  {
+    files: ['src/page/gpu/**/*.js'],
+    rules: {
+      'no-restricted-imports': [
+        'error',
+        {
+          patterns: [
+            REFERENCE_RULE,
+            {
+              group: ['../app/*', '../ui/*', '../io/*', '../main.js', '../automation.js'],
+              message:
+                "gpu/ is the render worker's side: the page's state, widgets and files stay on the page (talk through gpu/protocol.js).",
+            },
+          ],
+        },
+      ],
+    },
+  },
+  // The Shadertoy contract, the reference and the shared helpers run in both.
+  {
+    files: ['src/shadertoy/**/*.js', 'src/reference/**/*.js', 'src/shared/**/*.js'],
+    languageOptions: { globals: { ...globals.browser, ...globals.node } },
+  },
   // Tests, scripts, the benchmark and configs run in Node; functions passed to page.evaluate()
   // run in the page, so the browser's globals are known there too.
   { files: ['tests/**/*.js', '*.js'], languageOptions: { globals: { ...globals.node, ...globals.browser } } },

@@ -265,22 +265,21 @@ function expectKeeps(written, original, path = '') {
   }
 }
 
+/** The exports every round trip is tried on. @type {Array<[string, any]>} */
+const EXPORT_STYLES = [
+  ['site style', SITE_EXPORT],
+  ['legacy style', LEGACY_EXPORT],
+  ['media, sound and cubemap', MEDIA_EXPORT],
+];
+
 describe('Shadertoy JSON: round trips', () => {
-  test.each([
-    ['site style', SITE_EXPORT],
-    ['legacy style', LEGACY_EXPORT],
-    ['media, sound and cubemap', MEDIA_EXPORT],
-  ])('json → model → json keeps every field (%s)', (_, json) => {
+  test.each(EXPORT_STYLES)('json → model → json keeps every field (%s)', (_, json) => {
     const { model, info } = fromShadertoyJson(json);
     const written = toShadertoyJson(model, info);
     expectKeeps(written, json);
   });
 
-  test.each([
-    ['site style', SITE_EXPORT],
-    ['legacy style', LEGACY_EXPORT],
-    ['media, sound and cubemap', MEDIA_EXPORT],
-  ])('model → json → model is the same model (%s)', (_, json) => {
+  test.each(EXPORT_STYLES)('model → json → model is the same model (%s)', (_, json) => {
     const { model, info } = fromShadertoyJson(json);
     expect(sameModel(fromShadertoyJson(toShadertoyJson(model, info)).model, model)).toBe(true);
   });

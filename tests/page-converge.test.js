@@ -95,4 +95,32 @@ describe('Converge when still', () => {
       expect((await info(page)).converging).toBe(false);
     });
   });
+
+  // Each drawn frame brings its own times (issue 17): a converging view's frames, drawn while the
+  // clock is paused, are in the readout as they come, not held back until the next Play.
+  test("converging frames are in the frame-time graph as they are drawn, not piled onto the next Play's", async () => {
+    await withPage(async ({ page, goto }) => {
+      await goto(`?size=${WIDTH}x${HEIGHT}&time=0`);
+      await page.evaluate(() => window.raytracer.setConverging(true, { frames: 40 }));
+      await page.waitForFunction(() => window.raytracer.info().stillFrames >= 12, { polling: 50 });
+      const graphFrames = () => page.$eval('#toolbar canvas.graph', (c) => Number(/** @type {HTMLElement} */ (c).dataset.frames ?? 0));
+      expect(await graphFrames(), 'the frames drawn while converging are in the graph').toBeGreaterThanOrEqual(8);
+      expect(await page.$eval('#toolbar .fps', (e) => e.textContent)).toMatch(/^Converging · \d+ samples/);
+      await page.waitForFunction(() => window.raytracer.info().stillFrames >= 40, { polling: 50 });
+      await page.waitForFunction(() => /^Converged · 40 samples$/.test(document.querySelector('#toolbar .fps').textContent), {
+        polling: 50,
+      });
+      // Play: the graph starts again with the frames played, nothing left over from converging
+      await page.evaluate(() => window.raytracer.setConverging(false));
+      const before = (await info(page)).frame;
+      await page.evaluate(() => window.raytracer.play());
+      await page.waitForFunction((f) => window.raytracer.info().frame >= f + 3, { polling: 20 }, before);
+      const [inGraph, played] = await page.evaluate(() => [
+        Number(document.querySelector('#toolbar canvas.graph').getAttribute('data-frames')),
+        window.raytracer.info().frame,
+      ]);
+      expect(inGraph).toBeGreaterThan(0);
+      expect(inGraph).toBeLessThanOrEqual(played - before);
+    });
+  });
 });

@@ -9,7 +9,7 @@ import { CHROME_ARGS } from './harness/setup.js';
 import { findChrome } from './harness/chrome-path.js';
 import { harnessContext } from './harness/page.js';
 import { info, nextFrame, pixel, withPage, withServedDir } from './page-helpers.js';
-import { HANG_AFTER_MS } from '../src/page/render-client.js';
+import { HANG_AFTER_MS } from '../src/page/app/render-client.js';
 import fs from 'node:fs';
 import path from 'node:path';
 

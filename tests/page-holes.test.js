@@ -8,7 +8,7 @@ import http from 'node:http';
 import os from 'node:os';
 import path from 'node:path';
 import { afterAll, beforeAll, describe, expect, test } from 'vitest';
-import { LOAD_TIMEOUT_MS } from '../src/page/shader-loader.js';
+import { LOAD_TIMEOUT_MS } from '../src/page/io/shader-loader.js';
 import { makeImage, writePng } from './harness/images.js';
 import { disconnect } from './harness/page.js';
 import { hangUrl, redirectUrl } from './harness/routes.js';

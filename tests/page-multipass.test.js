@@ -54,6 +54,17 @@ async function run(page, goto, json, query = SIZE) {
   return outcome;
 }
 
+/**
+ * Runs an Image pass that reads the keyboard in iChannel0 and shows `rgb` (texel(key, row) is the
+ * keyboard texture's texel).
+ * @param {string} rgb three GLSL floats
+ */
+async function runKeyboardShader(page, goto, rgb) {
+  const code = `float texel(int key, int row) { return texelFetch(iChannel0, ivec2(key, row), 0).x; }
+void mainImage(out vec4 c, in vec2 p) { c = vec4(${rgb}, 1.0); }`;
+  return run(page, goto, exportOf({ Image: { code, inputs: [input(0, 'keyboard')] } }));
+}
+
 describe('passes and their order', () => {
   test('a pass reading itself sees its last frame: a counter that goes up by one each frame, with iFrame', async () => {
     await withPage(async ({ page, goto }) => {
@@ -149,18 +160,7 @@ describe('Restart, resize and inputs', () => {
 
   test('the keyboard texture: held, pressed this frame, toggled per press', async () => {
     await withPage(async ({ page, goto }) => {
-      await run(
-        page,
-        goto,
-        exportOf({
-          Image: {
-            code: `void mainImage(out vec4 c, in vec2 p) {
-    c = vec4(texelFetch(iChannel0, ivec2(65, 0), 0).x, texelFetch(iChannel0, ivec2(65, 1), 0).x, texelFetch(iChannel0, ivec2(65, 2), 0).x, 1.0);
-}`,
-            inputs: [input(0, 'keyboard')],
-          },
-        }),
-      );
+      await runKeyboardShader(page, goto, 'texel(65, 0), texel(65, 1), texel(65, 2)');
       expect(pixel(await readPixels(page), 1, 1)).toEqual([0, 0, 0]);
       // the frame a key-down asks for has it pressed; that is over by the next one
       const pressedFrame = await nextFrame(page);
@@ -171,6 +171,22 @@ describe('Restart, resize and inputs', () => {
       expect(pixel(await readPixels(page), 1, 1), 'up; the toggle stays').toEqual([0, 0, 255]);
       await page.keyboard.press('KeyA');
       expect(pixel(await readPixels(page), 1, 1), 'a second press toggles off').toEqual([0, 0, 0]);
+    });
+  });
+
+  // One test of "is the user typing" for the page's shortcuts and the shader's keys (issue 17):
+  // they disagreed on a focused slider, whose keys went to the shortcuts but not to the shader.
+  test('keys on a focused slider reach the shader, but for those the slider moves on', async () => {
+    await withPage(async ({ page, goto }) => {
+      await runKeyboardShader(page, goto, 'texel(65, 2), texel(39, 2), 0.0'); // red: A toggled; green: ArrowRight (39) toggled
+      await page.focus('#toolbar input[type="range"]');
+      await page.keyboard.press('KeyA');
+      expect(pixel(await readPixels(page), 1, 1), "A, typed on the time slider, is the shader's").toEqual([255, 0, 0]);
+      await page.keyboard.press('ArrowRight');
+      await page.waitForFunction(() => window.raytracer.info().time > 0, { polling: 20 });
+      expect(pixel(await readPixels(page), 1, 1), "ArrowRight moved the slider, and is not the shader's").toEqual([255, 0, 0]);
+      await page.keyboard.press('Space'); // a page shortcut still: Play
+      expect((await info(page)).playing).toBe(true);
     });
   });
 

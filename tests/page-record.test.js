@@ -13,7 +13,7 @@ import { ALL_FORMATS, BufferSource, EncodedPacketSink, Input } from 'mediabunny'
 import { PNG } from 'pngjs';
 import { afterAll, describe, expect, test } from 'vitest';
 import { disconnect } from './harness/page.js';
-import { button, info, withPage } from './page-helpers.js';
+import { button, info, typeInEditor, withControl, withPage } from './page-helpers.js';
 
 afterAll(disconnect);
 
@@ -134,6 +134,21 @@ async function captureDownloads(page) {
   };
 }
 
+/**
+ * Runs `body(page, downloads)` on a page running the clock shader with the Record popover open,
+ * its downloads captured.
+ * @param {(page: import('puppeteer-core').Page, downloads: Awaited<ReturnType<typeof captureDownloads>>) => Promise<void>} body
+ */
+async function withRecordDialog(body) {
+  let downloads;
+  await withPage(async ({ page, goto }) => {
+    await openClockShader(page, goto);
+    downloads = await captureDownloads(page);
+    await (await button(page, 'Record')).click();
+    await body(page, downloads);
+  }).finally(() => downloads?.close());
+}
+
 /** Sets a field of the Record popover as a person does: select it all, type the value. */
 async function fill(page, label, value) {
   const input = await page.$(`.record-dialog ::-p-aria([name="${label}"])`);
@@ -199,11 +214,7 @@ describe('Recording', () => {
   });
 
   test('the toolbar\'s "Record" button: format, frames, fps and size in its popover, a progress bar, and a WebM download', async () => {
-    let downloads;
-    await withPage(async ({ page, goto }) => {
-      await openClockShader(page, goto);
-      downloads = await captureDownloads(page);
-      await (await button(page, 'Record')).click();
+    await withRecordDialog(async (page, downloads) => {
       expect(await page.$eval('.record-dialog', (d) => !(/** @type {HTMLElement} */ (d).hidden))).toBe(true);
       expect(await page.$eval('.record-dialog [aria-label="Width"]', (i) => /** @type {HTMLInputElement} */ (i).value)).toBe('64');
       await page.select('.record-dialog [aria-label="Format"]', 'webm');
@@ -224,15 +235,11 @@ describe('Recording', () => {
         'the popover closes when the file is saved',
       ).toBe(true);
       expect((await info(page)).playing).toBe(true);
-    }).finally(() => downloads?.close());
+    });
   });
 
   test('Cancel stops a recording: nothing is saved, the page plays again; raytracer.cancelRecording() rejects record()', async () => {
-    let downloads;
-    await withPage(async ({ page, goto }) => {
-      await openClockShader(page, goto);
-      downloads = await captureDownloads(page);
-      await (await button(page, 'Record')).click();
+    await withRecordDialog(async (page, downloads) => {
       await fill(page, 'Frames', 3000);
       await (await page.$('.record-dialog ::-p-aria([name="Start"][role="button"])')).click();
       await page.waitForFunction(() => document.querySelector('.record-dialog progress').getAttribute('value') !== '0', { polling: 20 });
@@ -256,6 +263,26 @@ describe('Recording', () => {
       expect(outcome).toBe('RecordingCancelled');
       await new Promise((r) => setTimeout(r, 1000));
       expect(downloads.pending(), 'nothing was downloaded').toEqual([]);
+    });
+  });
+
+  // One file stem for every download (issue 17): the recording of an edited shader was named
+  // "raytrace-…" while its screenshot was "raytrace-edited-…".
+  test('an edited shader\'s recording and screenshot carry the same name: "raytrace-edited-…"', async () => {
+    let downloads;
+    await withPage(async ({ page, goto }) => {
+      await goto('?size=32x18&time=1&BOUNCES=0'); // the built-in raytracer, small and cheap
+      downloads = await captureDownloads(page);
+      await typeInEditor(page, '\n// edited', 'end');
+      await withControl(page, 'Enter');
+      await page.waitForFunction(() => window.raytracer.info().fileName === 'raytrace.glsl (edited)', { polling: 50 });
+      await (await button(page, 'Screenshot')).click();
+      expect((await downloads.next()).name).toMatch(/^raytrace-edited-t1\.00-32x18\.png$/);
+      await (await button(page, 'Record')).click();
+      await fill(page, 'Frames per second', FPS);
+      await fill(page, 'Frames', 2);
+      await (await page.$('.record-dialog ::-p-aria([name="Start"][role="button"])')).click();
+      expect((await downloads.next()).name).toBe(`raytrace-edited-32x18-${FPS}fps-2f.webm`);
     }).finally(() => downloads?.close());
   });
 });

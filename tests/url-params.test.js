@@ -2,7 +2,8 @@
 // values are clamped or ignored with a warning naming them, and that formatUrlParams writes what
 // parseUrlParams reads back.
 import { describe, expect, test } from 'vitest';
-import { MAX_PIXELS, clampSize, formatUrlParams, parseUrlParams } from '../src/page/url-params.js';
+import { formatUrlParams, parseUrlParams } from '../src/page/io/url-params.js';
+import { MAX_PIXELS, clampSize } from '../src/page/app/canvas-size.js';
 
 const BASE = 'http://127.0.0.1:5173/';
 
@@ -27,26 +28,28 @@ describe('parseUrlParams reads good values', () => {
 });
 
 describe('parseUrlParams warns about bad values and never throws', () => {
-  test.each([
-    ['time=NaN', '?time=NaN', 'time', {}],
-    ['time=abc', '?time=abc', 'time', {}],
-    ['negative time is clamped', '?time=-5', 'time', { time: 0 }],
-    ['huge time is clamped', '?time=1e300', 'time', { time: 1e6 }],
-    ['mouse with a word', '?mouse=1,2,three,4', 'mouse', {}],
-    ['mouse with Infinity', '?mouse=Infinity,1', 'mouse', {}],
-    ['size 0x0', '?size=0x0', 'size', {}],
-    ['size with words', '?size=widexhigh', 'size', {}],
-    ['absurd size is scaled down', '?size=100000x100000', 'size', {}],
-    ['scale above 1 is clamped', '?scale=9', 'scale', { scale: 1 }],
-    ['scale NaN', '?scale=NaN', 'scale', {}],
-    ['cap below the minimum is clamped', '?cap=3', 'cap', { cap: 16 }],
-    ['negative speed is clamped', '?speed=-1', 'speed', { speed: 0 }],
-    ['shader on another origin', '?shader=https://example.com/x.glsl', 'shader', {}],
-    ['shader with a javascript: URL', '?shader=javascript:alert(1)', 'shader', {}],
-    ['empty shader', '?shader=', 'shader', {}],
-    ['channel on another origin', '?iChannel0=https://example.com/a.png', 'iChannel0', {}],
-    ['a name that is no control name', '?a%20b=1', 'a b', {}],
-  ])('%s', (_, search, key, expected) => {
+  // Each parameter with the bad values it is given: value → what is used (a clamped value), or
+  // {} for a value ignored. One warning each.
+  /** @type {Record<string, Array<[string, object?]>>} */
+  const BAD_VALUES = {
+    time: [['NaN'], ['abc'], ['-5', { time: 0 }], ['1e300', { time: 1e6 }]],
+    mouse: [['1,2,three,4'], ['Infinity,1']],
+    size: [['0x0'], ['widexhigh'], ['100000x100000']],
+    scale: [['9', { scale: 1 }], ['NaN']],
+    cap: [['3', { cap: 16 }]],
+    speed: [['-1', { speed: 0 }]],
+    shader: [['https://example.com/x.glsl'], ['javascript:alert(1)'], ['']],
+    iChannel0: [['https://example.com/a.png']],
+    'a b': [['1']], // a name that is no control name
+  };
+  /** @type {Array<[string, string, string, object]>} */
+  const cases = Object.entries(BAD_VALUES).flatMap(([key, values]) =>
+    values.map(
+      ([value, expected = {}]) =>
+        /** @type {[string, string, string, object]} */ ([`${key}=${value}`, `?${new URLSearchParams([[key, value]])}`, key, expected]),
+    ),
+  );
+  test.each(cases)('%s', (_, search, key, expected) => {
     const params = parseUrlParams(search, BASE);
     expect(params.warnings.length).toBe(1);
     expect(params.warnings[0]).toContain(`${key}=`);

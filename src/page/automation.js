@@ -50,18 +50,18 @@
 // Every method waits for `ready` and for any compile under way, so a call right after
 // setControls() sees the new values.
 
-import { fetchShader, shaderName } from './shader-loader.js';
-import { toBase64 } from './pixels.js';
-import { median } from './stats.js';
-import { fromShadertoyJson } from '../shadertoy/multipass-json.js';
-import { isJsonName, readShaderText } from './project-files.js';
+import { toBase64 } from '../shared/pixels.js';
+import { median } from '../shared/stats.js';
+import { openShader, openShaderUrl } from './io/open-shader.js';
+import { singlePass } from '../shadertoy/multipass.js';
 
 /** The window, with the hook. @type {Window & {raytracer?: object}} */
 const hooked = window;
 
 /**
- * @param {import('./app.js').RaytracerApp | null} app null when the page could not start
+ * @param {import('./app/app.js').RaytracerApp | null} app null when the page could not start
  * @param {Promise<void>} ready
+ * @param {ReturnType<typeof import('./ui/ui.js').installUi>} ui
  */
 export function installAutomation(app, ready, ui) {
   // the first source may still be on its way (?shader= is fetched): calls wait for it
@@ -70,8 +70,8 @@ export function installAutomation(app, ready, ui) {
   // that old error no longer stands in the way.
   const settled = async () => {
     await loaded();
-    await app.whenCompiled();
-    if (!app.renderer.hasProgram) await ready;
+    await app.compiles.settled();
+    if (!app.compiles.hasProgram) await ready;
   };
 
   hooked.raytracer = {
@@ -79,16 +79,15 @@ export function installAutomation(app, ready, ui) {
 
     async readPixels() {
       await settled();
-      const drawn = await app.drawFrame(performance.now(), true);
-      if (!drawn?.pixels) throw new Error(app.renderer.contextLost ? 'the GPU context is lost' : 'no shader is running');
+      const drawn = await app.frames.draw(performance.now(), true);
+      if (!drawn?.pixels) throw new Error(app.gpu.contextLost ? 'the GPU context is lost' : 'no shader is running');
       return { width: drawn.width, height: drawn.height, data: toBase64(drawn.pixels) };
     },
 
     async renderFrames(n = 1) {
       await settled();
-      await app.drawFrame(); // sizes the worker's frame, as the page draws it
-      const last = app.inputs.last;
-      const times = await app.renderer.bench(last, n);
+      await app.frames.draw(); // sizes the worker's frame, as the page draws it
+      const times = await app.gpu.ask('bench', { inputs: app.frames.last, n });
       return { median: median(times), times };
     },
 
@@ -99,9 +98,8 @@ export function installAutomation(app, ready, ui) {
 
     async setSource(source) {
       await loaded();
-      app.loadSource(source, { origin: 'editor' });
       try {
-        await app.compile();
+        await app.setProject(singlePass(source), { origin: 'editor' });
         return { ok: true };
       } catch (error) {
         return { ok: false, error: error.report ?? error.message };
@@ -111,10 +109,10 @@ export function installAutomation(app, ready, ui) {
     async setProject(json) {
       await loaded();
       try {
-        const { model, info, notes } = fromShadertoyJson(json);
-        app.loadProject(model, { origin: 'editor', info });
-        await app.compile();
-        return { ok: true, notes: [...notes, ...app.notes] };
+        const text = typeof json === 'string' ? json : JSON.stringify(json);
+        const opened = openShader(app, text, { name: app.fileName, origin: 'editor', json: true });
+        await opened.running;
+        return { ok: true, notes: [...opened.notes, ...app.notes] };
       } catch (error) {
         return { ok: false, error: error.report ?? error.message, notes: [] };
       }
@@ -122,7 +120,7 @@ export function installAutomation(app, ready, ui) {
 
     async setConverging(on, options = {}) {
       await settled();
-      await app.setConverging(Boolean(on), options);
+      await app.converge.set(Boolean(on), options);
     },
 
     play: () => app.play(),
@@ -135,7 +133,7 @@ export function installAutomation(app, ready, ui) {
 
     // read in the same task as the frame was drawn (no preserveDrawingBuffer)
     async nextFrame() {
-      app.readBackNext = true;
+      app.frames.readBackNext = true;
       const drawn = await new Promise((resolve) => {
         const wait = (_, frame) => (frame.pixels ? resolve(frame) : app.once('drawn', wait));
         app.once('drawn', wait);
@@ -143,12 +141,12 @@ export function installAutomation(app, ready, ui) {
       return { width: drawn.width, height: drawn.height, iFrame: drawn.frame, data: toBase64(drawn.pixels) };
     },
 
-    loseContext: () => app.renderer.simulateContextLoss(true),
-    restoreContext: () => app.renderer.simulateContextLoss(false),
+    loseContext: () => app.gpu.tell('loseContext', {}),
+    restoreContext: () => app.gpu.tell('restoreContext', {}),
 
     async capture(size = null) {
       await settled();
-      const { width, height, data } = await app.capture(size);
+      const { width, height, data } = await app.frames.capture(size);
       return { width, height, data: toBase64(data) };
     },
 
@@ -159,8 +157,7 @@ export function installAutomation(app, ready, ui) {
     async loadShader(url) {
       await loaded();
       try {
-        const { model, info } = readShaderText(await fetchShader(url), { json: isJsonName(url) });
-        await app.setProject(model, { name: shaderName(url), origin: 'url', url, info });
+        await openShaderUrl(app, url);
         return { ok: true };
       } catch (error) {
         return { ok: false, error: error.report ?? error.message };
@@ -180,10 +177,9 @@ export function installAutomation(app, ready, ui) {
 
     info() {
       return {
-        ...app.renderer.info(),
-        width: app.renderer.width,
-        height: app.renderer.height,
-        frame: app.framesRendered,
+        ...app.gpu.info(),
+        ...app.frames.size,
+        frame: app.frames.count,
         time: app.inputs.time,
         playing: app.inputs.playing,
         speed: app.inputs.speed,
@@ -192,13 +188,13 @@ export function installAutomation(app, ready, ui) {
         fileName: app.fileName,
         shaderUrl: app.shaderUrl,
         origin: app.origin,
-        contextLost: app.renderer.contextLost,
-        compiled: app.compiled,
+        contextLost: app.gpu.contextLost,
+        compiled: app.compiles.count,
         liveControls: app.liveForm.asConstants ? 'constants' : 'uniforms',
-        hung: app.renderer.hung,
-        progress: app.renderer.progress,
-        converging: app.converging,
-        stillFrames: app.stillFrames,
+        hung: app.gpu.hung,
+        progress: app.frames.progress,
+        converging: app.converge.on,
+        stillFrames: app.frames.stillFrames,
       };
     },
   };

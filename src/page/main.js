@@ -1,148 +1,31 @@
-// Entry point: reads the URL, starts the raytracer on the page's canvas with shaders/raytrace.glsl
-// (or the shader named by ?shader=), shows what the app reports (the overlay, the data-*
-// attributes), builds the page's widgets (toolbar, panel, editor), and installs window.raytracer
-// (src/page/automation.js).
+// Entry point: reads the URL, starts the app (app/) on the page's canvas with
+// shaders/raytrace.glsl (or the shader a link or ?shader= names), builds the page's widgets (ui/),
+// shows what the app reports (ui/notices.js), and installs window.raytracer (automation.js).
 
 import builtinSource from '../../shaders/raytrace.glsl?raw';
-import { RaytracerApp } from './app.js';
+import { RaytracerApp } from './app/app.js';
 import { installAutomation, installFailedAutomation } from './automation.js';
-import { Overlay } from './overlay.js';
-import { CHANNEL_PARAMS, parseUrlParams } from './url-params.js';
-import { fetchShader, shaderName } from './shader-loader.js';
-import { installUi } from './ui.js';
-import { HangGuard, watchHangs } from './hang-guard.js';
-import { sourceFromHash } from './share-link.js';
-import { sharedKey, showRestoredNote } from './kept-source.js';
-import { formatShaderMessages } from '../shadertoy/shader-errors.js';
-import { formatPassMessages } from '../shadertoy/pass-errors.js';
+import { Overlay } from './ui/overlay.js';
+import { installUi } from './ui/ui.js';
+import { showAppOnPage, showRestoredNote, showStartupFailure } from './ui/notices.js';
+import { CHANNEL_PARAMS, parseUrlParams } from './io/url-params.js';
+import { fetchShader, shaderName } from './io/shader-loader.js';
+import { HangGuard, watchHangs } from './io/hang-guard.js';
+import { sourceFromHash } from './io/share-link.js';
+import { sharedKey } from './io/kept-source.js';
+import { deserializeProject, serializeProject } from './io/project-files.js';
+import { openShader, readShader } from './io/open-shader.js';
 import { singlePass } from '../shadertoy/multipass.js';
-import { deserializeProject, isJsonName, projectTabs, readShaderText, serializeProject } from './project-files.js';
 
 const BUILTIN_NAME = 'shaders/raytrace.glsl';
 
-/** @typedef {{title: string, detail: string, actions?: Array<{label: string, run: () => void}>}} Notice */
+/** @typedef {import('./ui/notices.js').Notice} Notice */
 /**
  * @typedef {object} FirstSource the shader the page opens with
  * @property {import('../shadertoy/multipass.js').MultipassShader} project
- * @property {{name: string, origin: 'builtin' | 'url' | 'editor', url?: string, info?: object | null}} from
+ * @property {{name: string, origin: RaytracerApp['origin'], url?: string | null, info?: object | null}} from
  * @property {Notice} [notice]
  */
-
-/**
- * A compile message as the error box shows it: "Buffer A:12: error: ..." for a tab of a
- * multipass shader, "NAME:12: error: ..." for a single-pass one; the line's text under it.
- * @param {RaytracerApp} app
- * @param {string} fileName
- */
-function messageFormatter(app, fileName) {
-  const tabs = Object.fromEntries(projectTabs(app.project).map((t) => [t.name, t.code]));
-  const source = app.source;
-  return (/** @type {{severity: string, pass?: string | null, line: number | null, message: string}} */ m) =>
-    m.pass ? formatPassMessages([{ ...m, pass: m.pass }], tabs) : formatShaderMessages([m], source, fileName);
-}
-
-/**
- * The page could not start (no WebGL2, most likely): say so on the page, not in a blank one.
- * @param {Overlay} overlay
- * @param {Error} error
- */
-function showStartupFailure(overlay, error) {
-  const noWebGL2 = error.name === 'WebGL2UnavailableError';
-  document.documentElement.dataset.error = noWebGL2 ? 'webgl2' : 'startup';
-  overlay.show(noWebGL2 ? 'WebGL2 is not available' : 'The raytracer could not start', error.message);
-}
-
-/**
- * Shows what the app reports: compile errors, an unreadable control block and a lost context in
- * the overlay; and, for the tests and the automation, data-error="shader-compile" on <html>
- * while no shader could run, data-context="lost" while the GPU context is gone, and on the
- * canvas data-frame, the number of frames drawn.
- * @param {RaytracerApp} app
- * @param {Overlay} overlay
- * @returns {(notice: Notice) => void} shows a notice once the next compile succeeds (instead of
- *   hiding the overlay)
- */
-function showAppOnPage(app, overlay) {
-  const root = document.documentElement.dataset;
-  /** @type {Notice | null} */
-  let pending = null;
-  app.on('compile', (_, error, fileName) => {
-    if (error) {
-      const fallback = app.renderer.hasProgram ? ' (still showing the last version that compiled)' : '';
-      const title = `${fileName} did not compile${fallback}`;
-      if (error.messages?.length) overlay.showMessages(title, error.messages, messageFormatter(app, fileName));
-      else overlay.show(title, error.report ?? error.message);
-      if (!app.renderer.hasProgram) root.error = 'shader-compile';
-      return;
-    }
-    if (app.notice) overlay.show(`Control block of ${fileName} not read`, app.notice);
-    else if (pending) overlay.showActions(pending.title, pending.detail, pending.actions ?? []);
-    else overlay.hide();
-    pending = null;
-    delete root.error;
-  });
-  app.on('context', (_, lost) => {
-    if (lost) {
-      root.context = 'lost';
-      overlay.show(
-        'The GPU context was lost',
-        'The browser took the graphics context away (a driver reset, or too many pages using the GPU). The picture comes back when the browser restores it.',
-      );
-    } else {
-      delete root.context;
-    }
-  });
-  app.on('drawn', () => (app.canvas.dataset.frame = String(app.framesRendered)));
-  showWatchdog(app, overlay);
-  return (notice) => (pending = notice);
-}
-
-/**
- * The watchdog's message (render-client.js): a frame that has gone seconds without progress may
- * never finish. It offers to go back to the last shader that finished a frame; it goes away by
- * itself when the drawing goes on. data-hung="true" on <html> while it shows.
- * @param {RaytracerApp} app
- * @param {Overlay} overlay
- */
-function showWatchdog(app, overlay) {
-  const root = document.documentElement.dataset;
-  app.on('hang', (_, seconds) => {
-    if (seconds === null) {
-      if (root.hung) overlay.hide();
-      delete root.hung;
-      return;
-    }
-    const first = !root.hung;
-    root.hung = 'true';
-    if (!first) return; // the message stays as it is; the seconds are in its text from the start
-    const back = app.lastFinished;
-    const detail = [
-      `${app.fileName} has been drawing one frame for ${Math.round(seconds)} s without finishing a band of it: it may never finish (an endless loop, or far too much work per pixel).`,
-      'On a real GPU the browser resets the GPU after several seconds of this, and the page comes back with the last shader that finished a frame. SwiftShader (the CPU renderer) has no such reset: the draw goes on until the browser is closed.',
-      back ? `Going back runs ${back.name} again; the text that hung stays in the editor's undo history (Ctrl+Z).` : '',
-    ]
-      .filter(Boolean)
-      .join('\n');
-    const actions = back
-      ? [
-          {
-            label: `Go back to ${back.name}`,
-            run: () => {
-              overlay.show(`Going back to ${back.name}…`, 'Starting the renderer again.');
-              app.goBack().catch((error) => {
-                console.warn(error.message);
-                overlay.show(
-                  'The GPU did not come back',
-                  `${error.message}: the draw that never ends still holds the GPU. On SwiftShader it does until the browser closes: close the browser and open the page again, and it runs ${back.name}.`,
-                );
-              });
-            },
-          },
-        ]
-      : [];
-    overlay.showActions(`${app.fileName} may never finish`, detail, actions);
-  });
-}
 
 /** The built-in raytracer, with a notice when the page was asked for another shader. @param {Notice} [notice] @returns {FirstSource} */
 const builtin = (notice) => ({ project: singlePass(builtinSource), from: { name: BUILTIN_NAME, origin: 'builtin' }, notice });
@@ -158,8 +41,8 @@ async function initialSource(params) {
   try {
     const shared = await sourceFromHash(location.hash);
     if (shared) {
-      const { model, info } = readShaderText(shared.source);
-      return { project: model, from: { name: shared.name, origin: 'editor', info } };
+      const { project, from } = readShader(shared.source, { name: shared.name, origin: 'editor' });
+      return { project, from: { ...from, name: shared.name } };
     }
   } catch (error) {
     console.warn(`The shader in the link's #source= could not be read: ${error.message}`);
@@ -174,9 +57,9 @@ async function initialSource(params) {
   }
   if (!params.shader) return builtin();
   try {
-    const text = await fetchShader(params.shader);
-    const { model, info } = readShaderText(text, { json: isJsonName(params.shader) });
-    return { project: model, from: { name: shaderName(params.shader), origin: 'url', url: params.shader, info } };
+    const url = params.shader;
+    const { project, from } = readShader(await fetchShader(url), { name: shaderName(url), origin: 'url', url });
+    return { project, from: { ...from, name: shaderName(url) } };
   } catch (error) {
     console.warn(`URL parameter shader=${params.shader}: ${error.message}`);
     return builtin({
@@ -187,7 +70,7 @@ async function initialSource(params) {
 }
 
 /**
- * Work is never lost (kept-source.js): edits kept for the page's shader (the ?shader= file, the
+ * Work is never lost (io/kept-source.js): edits kept for the page's shader (the ?shader= file, the
  * built-in one, or the shader a link carries), every tab of a multipass one, come back, with a
  * note that can discard them.
  * @param {RaytracerApp} app
@@ -206,7 +89,7 @@ function restoreKeptWork(app, ui, shader, { project, from }) {
 }
 
 /**
- * The shader about to run is the one that hung last time (hang-guard.js): run the last one that
+ * The shader about to run is the one that hung last time (io/hang-guard.js): run the last one that
  * finished a frame instead, say so, and offer the text that hung back to the editor, not run.
  * @param {RaytracerApp} app
  * @param {(notice: Notice) => void} notice
@@ -216,7 +99,7 @@ function avoidHungShader(app, notice) {
   const back = guard.backFor(app.project, app.values);
   const hung = guard.note;
   if (!back || !hung) return;
-  app.runVersion(back);
+  app.runVersion(back, 'the last shader that finished');
   notice({
     title: `${hung.name} did not finish drawing last time`,
     detail: `It may never finish (an endless loop?), so the page runs ${back.name}, the last shader that finished a frame. The text that hung is kept: it goes back into the editor, not run, with the button below.`,
@@ -270,8 +153,8 @@ async function start() {
     restoreKeptWork(app, ui, params.shader, loaded);
     avoidHungShader(app, noticeAfterCompile);
     app.applyControls(params.controls, 'URL');
-    app.compile().catch(() => {}); // shown on the page; `ready` rejects
-    app.requestRender();
+    app.compiles.compile().catch(() => {}); // shown on the page; `ready` rejects
+    app.frames.request();
   });
   return app;
 }
@@ -286,7 +169,7 @@ start().then((started) => (app = started));
 if (import.meta.hot) {
   import.meta.hot.accept('../../shaders/raytrace.glsl?raw', (module) => {
     if (!app || !module || app.origin !== 'builtin') return;
-    app.setSource(module.default).catch(() => {});
+    app.setProject(singlePass(module.default)).catch(() => {});
   });
   import.meta.hot.on('glsl-file-changed', async ({ url }) => {
     if (!app || app.origin !== 'url' || !app.shaderUrl) return;
@@ -295,7 +178,7 @@ if (import.meta.hot) {
     try {
       const source = await fetchShader(shaderUrl);
       if (app.origin !== 'url' || app.shaderUrl !== shaderUrl) return; // replaced meanwhile
-      await app.setSource(source, { name: shaderName(shaderUrl), origin: 'url', url: shaderUrl });
+      await openShader(app, source, { name: shaderName(shaderUrl), origin: 'url', url: shaderUrl }).running;
     } catch (error) {
       console.warn(`${shaderUrl} changed but could not be reloaded: ${error.message}`);
     }

@@ -71,29 +71,20 @@ const CODE_TO_KEYCODE = Object.freeze({
   IntlBackslash: 226,
 });
 
-// KeyboardEvent.key names of keys that have no single-character key.
+// KeyboardEvent.key names of keys that have no single-character key: the keys whose `key` is
+// their `code` (Enter, Tab, the arrows, Home, ...), and the modifiers and space, whose `key`
+// names no side.
 const KEY_TO_KEYCODE = Object.freeze({
-  Backspace: 8,
-  Tab: 9,
-  Enter: 13,
+  ...Object.fromEntries(
+    ['Backspace', 'Tab', 'Enter', 'Pause', 'CapsLock', 'Escape', 'PageUp', 'PageDown', 'End', 'Home', 'Insert', 'Delete']
+      .concat(['ArrowLeft', 'ArrowUp', 'ArrowRight', 'ArrowDown'])
+      .map((name) => [name, CODE_TO_KEYCODE[name]]),
+  ),
   Shift: 16,
   Control: 17,
   Alt: 18,
-  Pause: 19,
-  CapsLock: 20,
-  Escape: 27,
-  ' ': 32,
-  PageUp: 33,
-  PageDown: 34,
-  End: 35,
-  Home: 36,
-  ArrowLeft: 37,
-  ArrowUp: 38,
-  ArrowRight: 39,
-  ArrowDown: 40,
-  Insert: 45,
-  Delete: 46,
   Meta: 91,
+  ' ': 32,
 });
 
 /**

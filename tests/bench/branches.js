@@ -12,7 +12,7 @@
 import fs from 'node:fs';
 import { composeImageShader, hostControlBlock } from '../../src/shadertoy/header.js';
 import { controlDefaults, parseControls } from '../../src/shadertoy/controls.js';
-import { median } from '../../src/page/stats.js';
+import { median } from '../../src/shared/stats.js';
 import { SHADER_FILE } from '../harness/config.js';
 import { withHarness } from '../harness/setup.js';
 import { timeShaders } from './timer.js';

@@ -26,7 +26,7 @@ import path from 'node:path';
 import { composeImageShader, hostControlBlock } from '../../src/shadertoy/header.js';
 import { parseControls } from '../../src/shadertoy/controls.js';
 import { imageError } from '../../src/reference/error.js';
-import { median } from '../../src/page/stats.js';
+import { median } from '../../src/shared/stats.js';
 import { REPO_ROOT, SHADER_FILE } from '../harness/config.js';
 import { rendererLabel, withHarness } from '../harness/setup.js';
 import { replaceMarkedSection } from '../scripts/readme-section.js';

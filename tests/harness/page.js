@@ -5,7 +5,7 @@
 
 import fs from 'node:fs';
 import puppeteer from 'puppeteer-core';
-import { fromBase64 } from '../../src/page/pixels.js';
+import { fromBase64 } from '../../src/shared/pixels.js';
 import { CLOSE_TIMEOUT_MS, SCRIPT_WAIT_TIMEOUT_MS, WAIT_TIMEOUT_MS, closeBrowser, watchPage, withTimeout } from './watch.js';
 import { PAGE_PARAMS, viewQuery, viewSize } from '../views.js';
 

@@ -4,7 +4,7 @@
 // Shadertoy module, the row flip and base64 from src/page/pixels.js. raw-webgl.js (in Node) and
 // the benchmark's timer (tests/bench/timer.js) call it through page.evaluate as window.__rawWebGL.
 
-import { flipRows, toBase64 } from '../../src/page/pixels.js';
+import { flipRows, toBase64 } from '../../src/shared/pixels.js';
 import { FIRST_FRAME_UNIFORMS, SHADERTOY_UNIFORMS } from '../../src/shadertoy/header.js';
 
 // One triangle that covers the viewport.

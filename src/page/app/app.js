@@ -1,0 +1,321 @@
+// The page's state: one shader (its tabs and where it came from), its control values, the
+// Shadertoy inputs, the canvas, and the parts that each own a piece of the rest: when to draw
+// (frame-loop.js), the compiles (compile-job.js), "Converge when still" (converge.js), the
+// channels' images (channels.js), the canvas's size (canvas-size.js), which form the live
+// controls compile in (live-controls.js), and the render worker's client (render-client.js, the
+// GPU side: gpu/). A lost context and the watchdog's way back are gpu-context.js's. This module
+// composes them and is the public API the page's widgets and the automation hook use.
+//
+// The app touches no part of the page but its canvas: what it has to tell (a change of state, a
+// compile's outcome, a lost context, each frame drawn) it emits as events (events.js), and the
+// page shows them (ui/).
+
+import { parseControls } from '../../shadertoy/controls.js';
+import { KeyboardState } from '../../shadertoy/keyboard.js';
+import { frameSchedule, singlePass } from '../../shadertoy/multipass.js';
+import { RenderClient } from './render-client.js';
+import { ShadertoyInputs } from './shadertoy-inputs.js';
+import { CanvasSize } from './canvas-size.js';
+import { carriedOverValues, readControlChanges } from './control-values.js';
+import { Emitter } from './events.js';
+import { LiveControlForm } from './live-controls.js';
+import { Converge } from './converge.js';
+import { FrameLoop } from './frame-loop.js';
+import { watchContext } from './gpu-context.js';
+import { CompileJob } from './compile-job.js';
+import { Channels } from './channels.js';
+
+/** @typedef {import('../../shadertoy/controls.js').Control} Control */
+/** @typedef {import('./events.js').AppEvents} AppEvents */
+/** @typedef {import('../../shadertoy/multipass.js').MultipassShader} MultipassShader */
+/**
+ * A shader as it ran: its tabs, where it came from, and its control values.
+ * @typedef {{project: MultipassShader, info: object | null, name: string, origin: RaytracerApp['origin'], url: string | null, values?: Record<string, any>}} ShaderVersion
+ */
+
+/** @extends {Emitter<AppEvents>} */
+export class RaytracerApp extends Emitter {
+  /**
+   * Use RaytracerApp.start (the render worker starts first).
+   * @param {object} options
+   * @param {RenderClient} options.gpu a started render worker's client
+   * @param {HTMLCanvasElement} options.canvas
+   * @param {string} options.fileName the shader's name in error messages
+   * @param {{width:number, height:number} | null} [options.size] fixed drawing-buffer size (device px)
+   * @param {number} [options.scale] resolution scale of the device pixels (without a fixed size)
+   * @param {number} [options.cap] cap on the drawing buffer's longer side (device px; 0: none)
+   * @param {boolean} [options.playing]
+   */
+  constructor({ gpu, canvas, fileName, size = null, scale = 1, cap = 0, playing = true }) {
+    super();
+    this.canvas = canvas;
+    /** Shows the frames the worker draws. */
+    this.screen = /** @type {ImageBitmapRenderingContext} */ (canvas.getContext('bitmaprenderer'));
+    /** The shader's name in messages and downloads. */
+    this.fileName = fileName;
+    /** The render worker, through its client: the GPU side (gpu/). */
+    this.gpu = gpu;
+    gpu.on('hang', (_, seconds) => this.emit('hang', seconds));
+    this.inputs = new ShadertoyInputs();
+    this.inputs.playing = playing;
+    this.inputs.attach(canvas);
+    this.inputs.onMouseChange = () => this.frames.request();
+    /** The drawing buffer's size: fixed, or the layout's with scale and cap. */
+    this.canvasSize = new CanvasSize(canvas, { maxSide: () => this.gpu.maxSize, fixed: size, scale, cap });
+    /** The images in iChannel0..3. */
+    this.channels = new Channels(gpu);
+    /** Shadertoy's keyboard texture, for the passes that read it (the page's keys: ui/keys.js). */
+    this.keyboard = new KeyboardState();
+
+    /** The shader: its tabs (a plain file is one Image tab). @type {MultipassShader} */
+    this.project = singlePass('');
+    /** The JSON `info` the shader came with (kept for an export), null for a plain file. @type {object | null} */
+    this.projectInfo = null;
+    /** What the page cannot give the shader (media a JSON names: black channels). @type {string[]} */
+    this.notes = [];
+    /** Where the source came from. @type {'builtin' | 'url' | 'editor' | 'file'} */
+    this.origin = 'builtin';
+    /** The shader's URL as the page was given it, when it came from one (for a shared link). @type {string | null} */
+    this.shaderUrl = null;
+    /** @type {Control[]} */
+    this.controls = [];
+    /** The controls' current values, by name. @type {Record<string, any>} */
+    this.values = {};
+    /** Why the control block could not be read (the shader then runs with its own defaults). @type {string | null} */
+    this.notice = null;
+    /** The first source on its way (set by the page while it fetches it). @type {Promise<void> | null} */
+    this.loading = null;
+    /** What to run instead of a shader that hung (io/hang-guard.js), once the page has one. @type {import('../io/hang-guard.js').HangGuard | null} */
+    this.hangGuard = null;
+
+    /** When to draw, and drawing. */
+    this.frames = new FrameLoop(this);
+    /** Compiling the shader, and the shader on screen. */
+    this.compiles = new CompileJob(this);
+    /** "Converge when still". */
+    this.converge = new Converge(this);
+    /** Whether the next compile takes the live controls as constants or as uniforms. */
+    this.liveForm = new LiveControlForm(() => this.compiles.compile().catch(() => {})); // failures are shown on the page
+
+    /** Resolves after the first frame is drawn; rejects if the first compile fails. @type {Promise<void>} */
+    this.ready = new Promise((resolve, reject) => {
+      this.once('drawn', () => resolve());
+      this.on('compile', (_, error) => {
+        if (error && !this.compiles.hasProgram) reject(error);
+      });
+    });
+    this.ready.catch(() => {}); // a failure is reported on the page; callers may still await it
+
+    this.canvasSize.watch(() => this.frames.request());
+    watchContext(this);
+  }
+
+  /**
+   * Starts the render worker, then the app. Rejects with WebGL2UnavailableError when there is no
+   * WebGL2.
+   * @param {Omit<ConstructorParameters<typeof RaytracerApp>[0], 'gpu'>} options
+   */
+  static async start(options) {
+    return new RaytracerApp({ ...options, gpu: await RenderClient.start() });
+  }
+
+  // ---- source and controls ---------------------------------------------------------------------
+
+  /** The Image tab's text (the whole shader, for a plain file). */
+  get source() {
+    return this.project.passes.find((pass) => pass.kind === 'image')?.code ?? '';
+  }
+
+  /** Whether some pass of the shader reads Shadertoy's keyboard texture. */
+  get readsKeyboard() {
+    return this.project.passes.some((pass) => pass.channels.some((channel) => channel?.kind === 'keyboard'));
+  }
+
+  /** Whether the shader has a Common tab or a buffer. */
+  get isMultipass() {
+    return this.project.common !== null || this.project.passes.length > 1;
+  }
+
+  /**
+   * The shader as it is now: its tabs, where it came from, and a copy of its control values.
+   * @returns {ShaderVersion}
+   */
+  version() {
+    return {
+      project: this.project,
+      info: this.projectInfo,
+      name: this.fileName,
+      origin: this.origin,
+      url: this.shaderUrl,
+      values: structuredClone(this.values),
+    };
+  }
+
+  /**
+   * Takes a new shader: reads its control blocks (one per tab at most; keeping current values of
+   * controls that survive); the page rebuilds its panel on the 'source' event. Then compile
+   * (setProject does both).
+   * @param {MultipassShader} project
+   * @param {{name?: string, origin?: RaytracerApp['origin'], url?: string|null, info?: object | null}} [from]
+   *   where it came from
+   */
+  loadProject(project, from = {}) {
+    /** @type {Control[]} */
+    const controls = [];
+    this.notice = null;
+    try {
+      for (const text of [project.common ?? '', ...project.passes.map((pass) => pass.code)])
+        for (const control of parseControls(text)) if (!controls.some((c) => c.name === control.name)) controls.push(control);
+    } catch (error) {
+      this.notice = `${error.message}\nThe shader runs with its own defaults and no panel controls.`;
+    }
+    const values = carriedOverValues(controls, this.controls, this.values);
+    this.project = project;
+    this.projectInfo = from.info ?? null;
+    this.notes = frameSchedule(project).flatMap((step) => step.bindings.flatMap((binding) => (binding.note ? [binding.note] : [])));
+    this.liveForm.reset();
+    this.converge.drop();
+    if (from.name) this.fileName = from.name;
+    if (from.origin) {
+      this.origin = from.origin;
+      this.shaderUrl = from.origin === 'url' ? from.url : from.origin === 'editor' ? this.shaderUrl : null;
+    }
+    this.controls = controls;
+    this.values = values;
+    this.gpu.tell('controlUniforms', { controls, values });
+    this.emit('source');
+  }
+
+  /**
+   * loadProject + compile: resolves on success, rejects with the compile error.
+   * @param {MultipassShader} project
+   * @param {{name?: string, origin?: RaytracerApp['origin'], url?: string|null, info?: object | null}} [from]
+   */
+  setProject(project, from = {}) {
+    this.loadProject(project, from);
+    return this.compiles.compile();
+  }
+
+  /**
+   * Loads a shader as it ran (its tabs and its control values); call compile() after.
+   * @param {ShaderVersion} version
+   * @param {string} from who asks, in warnings
+   */
+  runVersion(version, from) {
+    this.loadProject(version.project, version);
+    this.applyControls(version.values ?? {}, from);
+  }
+
+  /**
+   * Sets controls by name ({NAME: value}; vectors as arrays or "x,y,z"). Values are coerced into
+   * range; unknown names and unreadable values are warned about and skipped. Resolves once the
+   * change is on screen (after a recompile, for compile-time controls).
+   * @param {Record<string, unknown>} changes
+   * @param {string} [from] who asks, in warnings
+   * @returns {Promise<void>}
+   */
+  setControls(changes, from = 'setControls') {
+    const recompile = this.applyControls(changes, from);
+    if (recompile)
+      this.compiles.compile().catch(() => {}); // errors are shown on the page
+    else this.frames.request();
+    return this.compiles.settled();
+  }
+
+  /**
+   * setControls without drawing or compiling.
+   * @param {Record<string, unknown>} changes
+   * @param {string} [from] who asks, in warnings
+   * @returns {boolean} true if a compile-time control changed
+   */
+  applyControls(changes, from = 'setControls') {
+    let recompile = false;
+    for (const { control, value } of readControlChanges(this.controls, changes, from)) {
+      const name = control.name;
+      const changed = JSON.stringify(value) !== JSON.stringify(this.values[name]);
+      this.values[name] = value;
+      if (control.kind === 'define') recompile ||= changed;
+      else {
+        this.gpu.tell('controlUniform', { name, value });
+        // Before the first compile there is nothing on screen: that compile takes the new
+        // values as constants.
+        if (changed && this.compiles.hasProgram && this.liveForm.moved()) recompile = true;
+      }
+    }
+    this.emit('state');
+    return recompile;
+  }
+
+  // ---- time ------------------------------------------------------------------------------------
+
+  play() {
+    this.inputs.play();
+    this.frames.restartInterval();
+    this.emit('state');
+    this.frames.request();
+  }
+
+  pause() {
+    this.inputs.pause();
+    this.emit('state');
+  }
+
+  togglePlay() {
+    if (this.inputs.playing) this.pause();
+    else this.play();
+  }
+
+  /** iTime and iFrame back to 0; draws that frame even while paused. */
+  restart() {
+    this.inputs.restart();
+    this.gpu.tell('clearBuffers', {}); // Shadertoy's rewind clears every buffer too
+    this.emit('state');
+    this.frames.request();
+  }
+
+  /** @param {number} seconds */
+  setTime(seconds) {
+    this.inputs.setTime(Math.max(0, Number(seconds) || 0));
+    this.emit('state');
+    this.frames.request();
+  }
+
+  /** @param {number} speed */
+  setSpeed(speed) {
+    this.inputs.setSpeed(Math.max(0, Number(speed) || 0));
+    this.emit('state');
+  }
+
+  /** @param {number[]} mouse iMouse, [x, y, z, w] in device pixels, until the next click */
+  setMouse(mouse) {
+    this.inputs.setMouse(mouse);
+    this.frames.request();
+  }
+
+  // ---- size and channels -----------------------------------------------------------------------
+
+  /** @param {number} scale resolution scale of the device pixels */
+  setScale(scale) {
+    this.canvasSize.scale = scale;
+    this.emit('state');
+    this.frames.request();
+  }
+
+  /** @param {number} cap cap on the drawing buffer's longer side, in device pixels (0: none) */
+  setCap(cap) {
+    this.canvasSize.cap = Math.max(0, Math.round(Number(cap) || 0));
+    this.emit('state');
+    this.frames.request();
+  }
+
+  /**
+   * Loads an image (URL, File or Blob) into iChannel0..3; null empties the channel.
+   * @param {number} index
+   * @param {string | Blob | null} source
+   */
+  async setChannel(index, source) {
+    await this.channels.set(index, source);
+    this.emit('state');
+    this.frames.request();
+  }
+}

@@ -1,0 +1,92 @@
+// The app's compiles (app.compiles): the shader with its control values, sent to the render
+// worker to compile. Compiles may overlap (a control dragged through compile-time values): only
+// the latest one started reports its outcome (the app's 'compile' event, `errors`), and a
+// compile asked for while the context is lost waits for its return. It owns what compiling
+// knows: the latest compile, the shader on screen as it ran (a ShaderVersion: what the watchdog
+// goes back to), how many compiles succeeded, and the last one's errors.
+
+import { hostControlBlock } from '../../shadertoy/header.js';
+
+/** @typedef {import('./app.js').RaytracerApp} RaytracerApp */
+/** @typedef {import('./app.js').ShaderVersion} ShaderVersion */
+
+export class CompileJob {
+  /** @param {RaytracerApp} app whose shader, controls and values are compiled */
+  constructor(app) {
+    this.app = app;
+    /** The latest compile started. @type {Promise<void> | null} */
+    this.latest = null;
+    /** The shader on screen, as it compiled; null while none runs (before the first, after a lost context). @type {ShaderVersion | null} */
+    this.running = null;
+    /** Successful compiles so far. */
+    this.count = 0;
+    /** The messages of the last failed compile, [] after a success. @type {Array<{line: number | null, message: string}>} */
+    this.errors = [];
+    this._started = 0;
+    /** Which compile `running` is: one that finishes after a newer one is not drawn (gpu/renderer.js). */
+    this._runningSerial = 0;
+  }
+
+  /** True once some shader has compiled and runs (the worker draws nothing before). */
+  get hasProgram() {
+    return this.running !== null;
+  }
+
+  /** The worker lost its programs (a restored context, a new worker): nothing runs until the next compile. */
+  forget() {
+    this.running = null;
+    this._runningSerial = this._started;
+  }
+
+  /**
+   * Compiles the app's shader with its current compile-time values. On success the new shader is
+   * drawn; on failure the error is shown and the last shader that compiled keeps running.
+   * @returns {Promise<void>}
+   */
+  compile() {
+    const app = this.app;
+    if (app.gpu.contextLost) {
+      // compiled when the context comes back: this job ends as the compile started then does
+      /** @type {Promise<void>} */
+      const job = new Promise((resolve) => app.once('context', () => resolve(this.latest)));
+      this.latest = job;
+      return job;
+    }
+    const hostBlock = app.notice ? '' : hostControlBlock(app.controls, app.values, app.liveForm.asConstants ? app.values : null);
+    const version = app.version();
+    const fileName = version.name;
+    const serial = ++this._started;
+    const job = app.gpu.ask('compile', { project: version.project, hostBlock, fileName }).then(
+      () => {
+        if (serial > this._runningSerial) {
+          this.running = version;
+          this._runningSerial = serial;
+        }
+        if (job !== this.latest) return;
+        this.errors = [];
+        this.count++;
+        app.emit('compile', null, fileName);
+        app.frames.request();
+      },
+      (error) => {
+        if (job === this.latest) {
+          this.errors = error.messages ?? [];
+          console.warn(error.message);
+          app.emit('compile', error, fileName); // `ready` rejects if no shader runs at all
+        }
+        throw error;
+      },
+    );
+    this.latest = job;
+    return job;
+  }
+
+  /** Resolves when no compile is under way (whatever the outcome). */
+  async settled() {
+    let job;
+    do {
+      job = this.latest;
+      await job?.catch(() => {});
+    } while (job !== this.latest);
+  }
+}

@@ -1,0 +1,76 @@
+// "Converge when still" (app.converge): the built-in raytracer (or an edit that keeps its camera
+// and radiance functions: progressive.js calls them) runs as its progressive multipass form
+// (progressive.js: Buffer A adds one jittered sample per pixel per frame while nothing changes;
+// Image shows the mean and the sample count), with the clock paused so that the view is still;
+// off, the shader as it was, with its control values. It owns whether the app converges, the
+// shader it converges from, and how many still frames it asks for; the frame loop asks it
+// whether another frame is wanted.
+
+import { MAX_SAMPLES, missingRaytracerFunctions, progressiveTabs } from '../../shadertoy/progressive.js';
+
+/** @typedef {import('./app.js').RaytracerApp} RaytracerApp */
+/** @typedef {import('./app.js').ShaderVersion} ShaderVersion */
+
+export class Converge {
+  /** @param {RaytracerApp} app */
+  constructor(app) {
+    this.app = app;
+    /** Whether the shader runs as its progressive form. */
+    this.on = false;
+    /** Frames drawn while the view is still: then its buffer sums no more. */
+    this.frames = MAX_SAMPLES;
+    /** The single-pass shader that converges (turning it off goes back to it). @type {ShaderVersion | null} */
+    this._before = null;
+  }
+
+  /** Whether "Converge when still" can run the app's shader (the raytracer: progressive.js). */
+  get available() {
+    const app = this.app;
+    return !app.isMultipass && missingRaytracerFunctions(app.source).length === 0;
+  }
+
+  /**
+   * Whether another frame is wanted after `stillFrames` frames of a still view.
+   * @param {number} stillFrames
+   */
+  wantsFrame(stillFrames) {
+    return this.on && stillFrames < this.frames;
+  }
+
+  /** Another shader was loaded: it does not converge (its progressive form is set() by itself). */
+  drop() {
+    this.on = false;
+    this._before = null;
+  }
+
+  /**
+   * Turns converging on or off; resolves once the shader it runs then has compiled. Frames keep
+   * coming while the view is still, up to `frames` (MAX_SAMPLES by default), and start again
+   * from one sample after any change.
+   * @param {boolean} on
+   * @param {{frames?: number}} [options]
+   * @returns {Promise<void>}
+   */
+  async set(on, { frames = MAX_SAMPLES } = {}) {
+    const app = this.app;
+    this.frames = Math.max(1, Math.min(MAX_SAMPLES, Math.round(frames)));
+    if (on === this.on) return app.frames.request();
+    if (!on) {
+      const back = /** @type {ShaderVersion} */ (this._before);
+      this.drop();
+      app.runVersion(back, 'Converge when still');
+      return app.compiles.compile();
+    }
+    if (app.isMultipass) throw new Error('only the raytracer converges: this shader has buffers of its own');
+    const missing = missingRaytracerFunctions(app.source);
+    if (missing.length) throw new Error(`only the raytracer converges (shaders/raytrace.glsl): this shader has no ${missing.join(', ')}`);
+    const before = app.version();
+    const tabs = progressiveTabs(app.source);
+    app.pause();
+    app.loadProject(tabs.model, { name: before.name, origin: before.origin, url: before.url });
+    this.on = true;
+    this._before = before;
+    app.applyControls({ SHOW_SAMPLE_COUNT: 1 }, 'Converge when still');
+    return app.compiles.compile();
+  }
+}

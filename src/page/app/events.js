@@ -1,0 +1,74 @@
+// The app's events (app.js), and the small typed emitter that sends them: the app's way of
+// telling the page what happened without touching the page (the page's widgets, ui/, and the
+// automation hook listen). The render client (render-client.js) sends its own events with it.
+
+/**
+ * A frame the app drew and showed.
+ * @typedef {object} DrawnEvent
+ * @property {Uint8Array | null} pixels RGBA8, rows top to bottom, when it was asked for (FrameLoop.readBackNext)
+ * @property {number} width
+ * @property {number} height
+ * @property {number} frame its iFrame
+ * @property {number | null} interval ms since the frame before, on the page's clock, while frames
+ *   follow one another (playing, or converging); null for a frame on its own
+ * @property {number[]} gpuTimes GPU times (ms) that came in with it (gpu/gpu-timer.js; empty
+ *   where the browser does not measure them)
+ */
+
+/**
+ * The app's events, and what each passes its listeners after the app itself.
+ * @typedef {object} AppEvents
+ * @property {[]} state the play state, time, speed, size settings, controls or channels changed
+ * @property {[frame: DrawnEvent]} drawn a frame was drawn and shown
+ * @property {[error: (Error & {report?: string, messages?: Array<{severity: string, line: number | null, message: string}>}) | null, fileName: string]} compile the latest compile ended: null on
+ *   success, else its error (app.compiles.hasProgram tells whether an older shader still runs)
+ * @property {[]} source a new source was loaded (its controls read)
+ * @property {[lost: boolean]} context the GPU context was lost (true) or restored (false)
+ * @property {[seconds: number | null]} hang a frame has gone that long without finishing a band
+ *   (render-client.js's watchdog); null when drawing goes on again
+ */
+
+/**
+ * @template {Record<string, unknown[]>} E each event's name and the arguments its listeners get
+ */
+export class Emitter {
+  constructor() {
+    /** @type {{[K in keyof E]?: Array<(emitter: this, ...args: E[K]) => void>}} */
+    this._listeners = {};
+  }
+
+  /**
+   * @template {keyof E} K
+   * @param {K} event
+   * @param {(emitter: this, ...args: E[K]) => void} listener
+   */
+  on(event, listener) {
+    (this._listeners[event] ??= []).push(listener);
+  }
+
+  /**
+   * Calls `listener` on the event's next emission only.
+   * @template {keyof E} K
+   * @param {K} event
+   * @param {(emitter: this, ...args: E[K]) => void} listener
+   */
+  once(event, listener) {
+    /** @type {(emitter: this, ...args: E[K]) => void} */
+    const once = (...args) => {
+      const list = this._listeners[event] ?? [];
+      list.splice(list.indexOf(once), 1);
+      listener(...args);
+    };
+    this.on(event, once);
+  }
+
+  /**
+   * Calls the event's listeners now, in the order they were added.
+   * @template {keyof E} K
+   * @param {K} event
+   * @param {E[K]} args
+   */
+  emit(event, ...args) {
+    for (const listener of [...(this._listeners[event] ?? [])]) listener(this, ...args);
+  }
+}

@@ -1,0 +1,170 @@
+// The app's frame loop (app.frames): when to draw, and what a drawn frame changes. The app asks
+// the render worker for one frame at a time, and asks for the next only when that one is done, so
+// frames never queue up behind a heavy one; while playing it asks again at the next animation
+// frame, while paused only on demand (a control change, a resize, the mouse), and while
+// converging (converge.js) as long as the view is still. The frames the worker draws come back
+// as bitmaps, shown on the app's canvas, with their GPU times; a capture (a screenshot) draws
+// the last frame again, at another size.
+//
+// It owns what drawing knows: the frame under way and how far it has got, the last frame drawn
+// (its inputs and size), the counters, and the last shader a frame was finished with.
+
+import { fitGpu } from './canvas-size.js';
+
+/** @typedef {import('./app.js').RaytracerApp} RaytracerApp */
+/** @typedef {import('./app.js').ShaderVersion} ShaderVersion */
+/** @typedef {import('../gpu/protocol.js').FrameInputs} FrameInputs */
+/** @typedef {import('./events.js').DrawnEvent} DrawnEvent */
+
+export class FrameLoop {
+  /** @param {RaytracerApp} app */
+  constructor(app) {
+    this.app = app;
+    this._raf = 0;
+    /** The frame the worker is drawing. @type {Promise<unknown> | null} */
+    this._drawing = null;
+    /** Something changed since the frame under way was asked for: another one is due. */
+    this._dirty = false;
+    /** performance.now() when the last frame of a run of frames was drawn (for its interval). @type {number | null} */
+    this._lastDrawnAt = null;
+    /** Frames drawn since the page started. */
+    this.count = 0;
+    /** Frames drawn since the last change (a converging shader adds one sample per frame). */
+    this.stillFrames = 0;
+    /** The inputs of the last frame drawn (a screenshot draws it again; its size is the canvas's). @type {FrameInputs | null} */
+    this.last = null;
+    /** How far the frame under way has got: rows done of its height, bands drawn (null: none under way). @type {{y: number, height: number, bands: number} | null} */
+    this.progress = null;
+    /** Whether the next frame the page draws by itself is read back (the 'drawn' event's pixels). */
+    this.readBackNext = false;
+    /** The last shader a frame was finished with (the watchdog goes back to it). @type {ShaderVersion | null} */
+    this.lastFinished = null;
+
+    app.gpu.on('band', (_, band) => {
+      if (band.kind !== 'frame') return;
+      this.progress = { y: band.y, height: band.height, bands: (this.progress?.bands ?? 0) + 1 };
+      if (band.bitmap) this.show(band.bitmap);
+    });
+  }
+
+  /** The size of the last frame drawn (0 × 0 before the first). */
+  get size() {
+    return { width: this.last?.width ?? 0, height: this.last?.height ?? 0 };
+  }
+
+  /** Draws at the next animation frame (once, however often it is asked, and never while a frame is under way). */
+  request() {
+    this._dirty = true;
+    this.stillFrames = 0;
+    this._schedule();
+  }
+
+  /** The next frame starts a new run: its interval is not measured from the last one (after a pause). */
+  restartInterval() {
+    this._lastDrawnAt = null;
+  }
+
+  /** The worker went away with the frame it was drawing (a new worker after a hang). */
+  forgetDrawing() {
+    this._drawing = null;
+    this.progress = null;
+  }
+
+  _schedule() {
+    if (!this._raf && !this._drawing) this._raf = requestAnimationFrame((now) => this._tick(now));
+  }
+
+  /** Whether frames follow one another by themselves: playing, or converging a still view. */
+  get running() {
+    return this.app.inputs.playing || this.app.converge.wantsFrame(this.stillFrames);
+  }
+
+  /** @param {number} now */
+  _tick(now) {
+    this._raf = 0;
+    if (this._drawing || !(this._dirty || this.running)) return;
+    const readBack = this.readBackNext;
+    this.readBackNext = false;
+    this.draw(now, readBack).catch(() => {}); // a lost context: the page says so
+  }
+
+  /**
+   * Draws one frame (after the one under way, if any), and resolves once it is on the canvas:
+   * with its pixels (RGBA8, rows top to bottom) when `readBack`, null when no shader runs or the
+   * context is lost.
+   * @param {number} [now] timestamp in ms (performance.now() or a rAF time)
+   * @param {boolean} [readBack]
+   * @returns {Promise<DrawnEvent | null>}
+   */
+  async draw(now = performance.now(), readBack = false) {
+    const app = this.app;
+    while (this._drawing) await this._drawing.catch(() => {});
+    if (app.gpu.contextLost || !app.compiles.hasProgram) return null;
+    const { width, height } = app.canvasSize.target();
+    this._dirty = false;
+    const continued = this.running && this._lastDrawnAt !== null;
+    const frame = app.inputs.beginFrame(width, height, now);
+    // the keyboard texture goes to the worker (and is uploaded) only for a shader that reads it
+    const inputs = app.readsKeyboard ? { ...frame, keyboard: app.keyboard.data.slice() } : frame;
+    const running = app.compiles.running;
+    this.progress = { y: 0, height, bands: 0 };
+    const drawing = app.gpu.ask('frame', { inputs, readBack });
+    this._drawing = drawing;
+    let drawn;
+    try {
+      drawn = await drawing;
+    } finally {
+      if (this._drawing === drawing) {
+        this._drawing = null;
+        this.progress = null;
+      }
+    }
+    this.show(drawn.bitmap);
+    this.last = frame;
+    app.inputs.endFrame();
+    // "pressed this frame" is over: a shader that reads it is drawn once more without it
+    if (app.keyboard.endFrame() && app.readsKeyboard) this.request();
+    this.count++;
+    this.lastFinished = running;
+    // the clock when the frame was drawn, not when it was due: on a slow GPU the animation
+    // frames' timestamps run ahead of the drawing
+    const drawnAt = performance.now();
+    const interval = continued ? drawnAt - /** @type {number} */ (this._lastDrawnAt) : null;
+    this._lastDrawnAt = this.running ? drawnAt : null;
+    /** @type {DrawnEvent} */
+    const result = { pixels: drawn.pixels, width, height, frame: inputs.frame, interval, gpuTimes: drawn.gpuTimes };
+    app.emit('drawn', result);
+    this.stillFrames++;
+    if (this.running || this._dirty) this._schedule();
+    return result;
+  }
+
+  /**
+   * The last drawn frame drawn again at width × height (default: its own size), with the same
+   * iTime, iFrame, iDate, and iMouse scaled to the new size. Rows top to bottom.
+   * @param {{width: number, height: number} | null} [size]
+   * @returns {Promise<{width:number, height:number, data:Uint8Array}>}
+   */
+  async capture(size = null) {
+    const app = this.app;
+    if (!app.compiles.hasProgram || app.gpu.contextLost) throw new Error('nothing to capture: no shader is running');
+    if (!this.last) await this.draw();
+    const last = /** @type {FrameInputs} */ (this.last);
+    // a multipass shader's buffers are the canvas's size: its Image pass is drawn again over them
+    // as they are, which only means the same picture at the same size
+    const wanted = size && !app.isMultipass ? size : { width: last.width, height: last.height };
+    const rounded = { width: Math.max(1, Math.round(wanted.width)), height: Math.max(1, Math.round(wanted.height)) };
+    const { width, height } = fitGpu(rounded, app.gpu.maxSize, 'screenshot size');
+    return { width, height, data: await app.gpu.ask('capture', { inputs: last, width, height, allPasses: false }) };
+  }
+
+  /** Puts a bitmap from the worker on the canvas (sized to it: the mouse maps through that size). @param {ImageBitmap} bitmap */
+  show(bitmap) {
+    const canvas = this.app.canvas;
+    if (canvas.width !== bitmap.width || canvas.height !== bitmap.height) {
+      canvas.width = bitmap.width;
+      canvas.height = bitmap.height;
+    }
+    this.app.screen.transferFromImageBitmap(bitmap);
+  }
+}

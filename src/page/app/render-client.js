@@ -1,0 +1,201 @@
+// The page's side of the render worker (gpu/render-worker.js): transport only. It asks the
+// worker (requests, answered once) and tells it (commands), as gpu/protocol.js types them, and
+// passes on what the worker reports unprompted: a band finished ('band'), the context lost or
+// restored ('context'). What it keeps is what transport needs: the requests in flight, whether
+// the context is lost, the GPU's largest side and name (from the worker's start), and the
+// watchdog. Everything the page draws with (the shader, the channels, the size) has its owner
+// in the app.
+//
+// The watchdog: the worker says when it hands a band to the GPU and when the GPU has finished
+// it. A band still unfinished after HANG_AFTER_MS means the shader may never finish (an endless
+// loop, or far too much work for one band): 'hang' is emitted with the seconds, and with null
+// once the band ends after all. (A compile is not watched: it is the worker's own work, and one
+// waiting for the GPU waits behind a band, which is.)
+
+import { Emitter } from './events.js';
+import { fromWire, transferables } from '../gpu/protocol.js';
+import { WebGL2UnavailableError } from '../gpu/errors.js';
+
+/** @typedef {import('../gpu/protocol.js').Requests} Requests */
+/** @typedef {import('../gpu/protocol.js').Commands} Commands */
+/** @typedef {import('../gpu/protocol.js').Events} Events */
+/** @typedef {import('../gpu/protocol.js').Message} Message */
+
+/**
+ * What the client reports.
+ * @typedef {object} ClientEvents
+ * @property {[band: Events['band']]} band the GPU finished a band (with a bitmap now and then)
+ * @property {[lost: boolean]} context the worker's context was lost (true) or restored (false)
+ * @property {[seconds: number | null]} hang a band has gone that long unfinished; null when bands come again
+ */
+
+/** A band unfinished for this long: the shader may never finish. A band is sized to take ~0.1 s
+ * (band-planner.js); only a shader far heavier than its first band, or one that never ends,
+ * holds the GPU this long. */
+export const HANG_AFTER_MS = 5000;
+/** A worker that has not said whether it has a context by then has failed to start (a script
+ * that did not load, a browser that cannot run module workers). */
+const START_TIMEOUT_MS = 20000;
+/** How often the watchdog looks. */
+const WATCH_EVERY_MS = 250;
+
+/** @extends {Emitter<ClientEvents>} */
+export class RenderClient extends Emitter {
+  /**
+   * Starts a render worker; resolves once it has a WebGL2 context. Rejects with
+   * WebGL2UnavailableError when there is none.
+   * @returns {Promise<RenderClient>}
+   */
+  static async start() {
+    const client = new RenderClient();
+    await client._spawn();
+    return client;
+  }
+
+  constructor() {
+    super();
+    /** @type {Worker | null} */
+    this.worker = null;
+    /** The largest drawing-buffer side the GPU takes (0 while unknown). */
+    this.maxSize = 0;
+    /** @type {Record<string, string>} */
+    this._info = {};
+    this.contextLost = false;
+    this._serial = 0;
+    /** Requests in flight, by id. @type {Map<number, {resolve: (value: any) => void, reject: (error: Error) => void}>} */
+    this._pending = new Map();
+    /** performance.now() when the band the GPU is drawing was handed to it; null when none is. @type {number | null} */
+    this._bandSince = null;
+    this._hung = false;
+    this._watch = 0;
+    /** Settles the worker's start. @type {{resolve: () => void, reject: (error: Error) => void} | null} */
+    this._started = null;
+  }
+
+  async _spawn() {
+    const worker = new Worker(new URL('../gpu/render-worker.js', import.meta.url), { type: 'module' });
+    this.worker = worker;
+    /** @type {Promise<void>} */
+    const started = new Promise((resolve, reject) => {
+      this._started = { resolve, reject };
+    });
+    worker.onmessage = ({ data }) => this._receive(data);
+    worker.onerror = (event) => {
+      event.preventDefault();
+      this._started?.reject(new Error(`the render worker failed: ${event.message}`));
+    };
+    this.tell('init', {});
+    const timer = window.setTimeout(
+      () => this._started?.reject(new Error(`the render worker did not start within ${START_TIMEOUT_MS / 1000} s`)),
+      START_TIMEOUT_MS,
+    );
+    try {
+      await started;
+    } finally {
+      window.clearTimeout(timer);
+    }
+    window.clearInterval(this._watch);
+    this._watch = window.setInterval(() => this._checkHang(), WATCH_EVERY_MS);
+  }
+
+  /**
+   * Stops the worker, whatever it is doing, and starts a new one (no shader, no channels: the
+   * app gives it those again). After a hang: on a real GPU the browser resets the GPU, and a new
+   * context draws again; on SwiftShader the endless draw goes on, and so does the wait.
+   */
+  async respawn() {
+    this.worker?.terminate();
+    for (const { reject } of this._pending.values()) reject(new Error('the render worker was restarted'));
+    this._pending.clear();
+    this._bandSince = null;
+    await this._spawn(); // rejects when the GPU does not answer a new worker either: still hung
+    this._recover();
+  }
+
+  /** @param {Message} message */
+  _receive(message) {
+    if (message.kind === 'reply') {
+      const pending = this._pending.get(message.id);
+      if (!pending) return;
+      this._pending.delete(message.id);
+      if (message.error) pending.reject(fromWire(message.error));
+      else pending.resolve(message.result);
+      return;
+    }
+    if (message.kind !== 'event') throw new Error(`render client: a ${message.kind} message from the worker`);
+    const { type, params } = message;
+    if (type === 'ready') {
+      this.maxSize = params.maxSize;
+      this._info = params.info;
+      this._started?.resolve();
+    } else if (type === 'failed') {
+      this._started?.reject(params.name === 'WebGL2UnavailableError' ? new WebGL2UnavailableError() : new Error(params.message));
+    } else if (type === 'context') {
+      this.contextLost = params.lost;
+      this._bandEnded();
+      this.emit('context', params.lost);
+    } else if (type === 'bandStarted') {
+      this._bandSince = performance.now();
+    } else if (type === 'band') {
+      this._bandEnded();
+      this.emit('band', params);
+    }
+  }
+
+  /**
+   * Asks the worker; resolves with its reply's result, rejects with its error.
+   * @template {keyof Requests} K
+   * @param {K} type
+   * @param {Requests[K][0]} params
+   * @returns {Promise<Requests[K][1]>}
+   */
+  ask(type, params) {
+    const id = ++this._serial;
+    return new Promise((resolve, reject) => {
+      this._pending.set(id, { resolve, reject });
+      this.worker.postMessage({ kind: 'request', id, type, params }, transferables(params));
+    });
+  }
+
+  /**
+   * Tells the worker, no answer.
+   * @template {keyof Commands} K
+   * @param {K} type
+   * @param {Commands[K]} params
+   */
+  tell(type, params) {
+    this.worker.postMessage({ kind: 'command', type, params }, transferables(params));
+  }
+
+  // ---- the watchdog ----------------------------------------------------------------------------
+
+  /** A band has ended (or the context went with it). */
+  _bandEnded() {
+    this._bandSince = null;
+    this._recover();
+  }
+
+  _recover() {
+    if (!this._hung) return;
+    this._hung = false;
+    this.emit('hang', null);
+  }
+
+  _checkHang() {
+    if (this._bandSince === null || this.contextLost) return;
+    const quiet = performance.now() - this._bandSince;
+    if (quiet < HANG_AFTER_MS) return;
+    this._hung = true;
+    this.emit('hang', quiet / 1000);
+  }
+
+  /** Whether a band has been drawing for HANG_AFTER_MS. */
+  get hung() {
+    return this._hung;
+  }
+
+  /** What GPU and driver we run on. */
+  info() {
+    return { ...this._info };
+  }
+}

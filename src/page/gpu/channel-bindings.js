@@ -1,0 +1,147 @@
+// What each pass of a frame reads in iChannel0..3, for the renderer (renderer.js): a buffer, the
+// keyboard, an image the page loaded, or black, with its iChannelResolution; and the WebGL
+// sampler objects that give a buffer channel its own filter and wrap. Shadertoy sets those per
+// channel, while a three.js texture has one of each: two passes, or two channels of one pass, may
+// read one buffer differently, so a sampler object bound to the channel's texture unit for the
+// pass's draws overrides the texture's own.
+
+import * as THREE from 'three';
+
+/** @typedef {import('./pass-compiler.js').Step} Step */
+
+/**
+ * A pass's own channel uniforms (each material has them; the rest of its uniforms are shared).
+ * @param {THREE.Texture} black the 1×1 black texture
+ */
+export function ownChannelUniforms(black) {
+  return {
+    iChannel0: { value: black },
+    iChannel1: { value: black },
+    iChannel2: { value: black },
+    iChannel3: { value: black },
+    iChannelResolution: { value: new Array(12).fill(0) },
+  };
+}
+
+/**
+ * Binds what a pass reads into its material's channel uniforms, for a frame of width × height.
+ * @param {Step} step
+ * @param {number} width
+ * @param {number} height
+ * @param {{buffers: import('./pass-buffers.js').PassBuffers, keyboard: THREE.Texture, channels: Array<THREE.Texture | null>, black: THREE.Texture}} sources
+ */
+export function bindChannels(step, width, height, { buffers, keyboard, channels, black }) {
+  const uniforms = step.material.uniforms;
+  const resolution = uniforms.iChannelResolution.value;
+  for (const binding of step.bindings) {
+    const i = binding.channel;
+    let texture = null;
+    let size = binding.resolution === 'canvas' ? [width, height, 1] : binding.resolution;
+    if (binding.source === 'buffer') texture = buffers.read(/** @type {string} */ (binding.buffer));
+    else if (binding.source === 'keyboard') texture = keyboard;
+    else if (binding.source === 'none' && step.target === 'screen' && channels[i]) {
+      texture = channels[i]; // an image the page put into this channel
+      size = [texture.image.width, texture.image.height, 1];
+    } else if (binding.samplerType === '2D') texture = black;
+    // else null: three.js binds an empty cube or 3D texture for a samplerCube / sampler3D
+    uniforms[`iChannel${i}`].value = texture;
+    resolution.splice(i * 3, 3, ...size);
+  }
+}
+
+/**
+ * An image as Shadertoy samples one by default: mipmapped, repeating, uv (0,0) at the image's
+ * bottom-left corner, no colour-space conversion. WebGL ignores its flip and premultiply flags
+ * for an ImageBitmap, so the page decodes the bitmap with its rows already flipped and alpha not
+ * premultiplied (shader-loader.js).
+ * @param {ImageBitmap} image
+ */
+export function imageTexture(image) {
+  const texture = new THREE.Texture(image);
+  texture.flipY = false;
+  texture.premultiplyAlpha = false;
+  texture.wrapS = THREE.RepeatWrapping;
+  texture.wrapT = THREE.RepeatWrapping;
+  texture.minFilter = THREE.LinearMipmapLinearFilter;
+  texture.magFilter = THREE.LinearFilter;
+  texture.generateMipmaps = true;
+  texture.colorSpace = THREE.NoColorSpace;
+  texture.needsUpdate = true;
+  return texture;
+}
+
+/** The sampler objects of the pass being drawn, bound around its draws. */
+export class ChannelSamplers {
+  /**
+   * @param {WebGL2RenderingContext} gl
+   * @param {THREE.WebGLRenderer} three
+   */
+  constructor(gl, three) {
+    this.gl = gl;
+    this.three = three;
+    /** Sampler objects for the pass being drawn, by unit (use). @type {Array<{unit: number, sampler: WebGLSampler}>} */
+    this._samplers = [];
+    /** @type {Map<string, WebGLSampler>} */
+    this._samplerObjects = new Map();
+  }
+
+  /** The pass drawn next. @param {Step} step */
+  use(step) {
+    this._samplers = this._samplersOf(step);
+  }
+
+  /** Binds the pass's sampler objects to their units (before its draw). */
+  bind() {
+    for (const { unit, sampler } of this._samplers) this.gl.bindSampler(unit, sampler);
+  }
+
+  /** Unbinds them again: a sampler left on a unit would override every texture drawn there later. */
+  unbind() {
+    for (const { unit } of this._samplers) this.gl.bindSampler(unit, null);
+  }
+
+  /**
+   * The WebGL sampler objects a pass's buffer channels are read with, by texture unit. three.js
+   * hands out units in the order of the program's active uniforms, samplers only
+   * (WebGLUniforms.upload → allocateTextureUnit), so iChannel i's unit is its place among them.
+   * @param {Step} step
+   * @returns {Array<{unit: number, sampler: WebGLSampler}>}
+   */
+  _samplersOf(step) {
+    const program = /** @type {{currentProgram?: {getUniforms: () => {seq: Array<{id: string, type: number}>}}}} */ (
+      this.three.properties.get(step.material)
+    ).currentProgram;
+    if (!program) return [];
+    const gl = this.gl;
+    /** @type {number[]} */
+    const samplerTypes = [gl.SAMPLER_2D, gl.SAMPLER_CUBE, gl.SAMPLER_3D, gl.SAMPLER_2D_ARRAY, gl.SAMPLER_2D_SHADOW];
+    const units = new Map();
+    let unit = 0;
+    for (const uniform of program.getUniforms().seq) {
+      if (!samplerTypes.includes(uniform.type)) continue;
+      const channel = /^iChannel([0-3])$/.exec(uniform.id);
+      if (channel) units.set(Number(channel[1]), unit);
+      unit++;
+    }
+    return step.bindings
+      .filter((binding) => (binding.source === 'buffer' || binding.source === 'keyboard') && binding.sampler && units.has(binding.channel))
+      .map((binding) => ({ unit: units.get(binding.channel), sampler: this._samplerObject(/** @type {any} */ (binding.sampler)) }));
+  }
+
+  /** @param {import('../../shadertoy/multipass.js').Sampler} sampler */
+  _samplerObject({ filter, wrap }) {
+    const key = `${filter} ${wrap}`;
+    let object = this._samplerObjects.get(key);
+    if (object) return object;
+    const gl = this.gl;
+    object = /** @type {WebGLSampler} */ (gl.createSampler());
+    const min = { nearest: gl.NEAREST, linear: gl.LINEAR, mipmap: gl.LINEAR_MIPMAP_LINEAR }[filter] ?? gl.LINEAR;
+    gl.samplerParameteri(object, gl.TEXTURE_MIN_FILTER, min);
+    gl.samplerParameteri(object, gl.TEXTURE_MAG_FILTER, filter === 'nearest' ? gl.NEAREST : gl.LINEAR);
+    const mode = wrap === 'repeat' ? gl.REPEAT : gl.CLAMP_TO_EDGE;
+    gl.samplerParameteri(object, gl.TEXTURE_WRAP_S, mode);
+    gl.samplerParameteri(object, gl.TEXTURE_WRAP_T, mode);
+    this._samplerObjects.set(key, object);
+    return object;
+  }
+}

@@ -1,0 +1,186 @@
+// Compiles the passes of a Shadertoy shader into three.js RawShaderMaterials for the renderer
+// (renderer.js), off to the side: each material is compiled on a staging scene of its own, so a
+// shader that fails to compile never replaces the last one that worked. A failure's driver log is
+// mapped back to the user's tabs and lines (three.js's onShaderError hook → ShaderCompileError).
+// Compiled materials are kept by their code (the material cache): the page switches between a
+// shader's uniform form and its constant form (app.js), and switching back must not wait for a
+// compile.
+
+import * as THREE from 'three';
+import { composePassShader } from '../../shadertoy/header.js';
+import { formatShaderMessages, parseShaderLog, userLineOffset } from '../../shadertoy/shader-errors.js';
+import { formatPassMessages, parsePassShaderLog } from '../../shadertoy/pass-errors.js';
+import { channelTypes, frameSchedule } from '../../shadertoy/multipass.js';
+import { ShaderCompileError } from './errors.js';
+
+/** Compiled materials kept for switching back without a compile: a uniform form, a constant form, and one spare, for each of up to five passes. */
+const MATERIALS_KEPT = 15;
+
+/** @typedef {ReturnType<typeof frameSchedule>[number] & {material: THREE.RawShaderMaterial}} Step */
+
+export const VERTEX_SHADER = `
+in vec3 position;
+void main() {
+    gl_Position = vec4(position.xy, 0.0, 1.0);
+}
+`;
+
+export class PassCompiler {
+  /**
+   * @param {THREE.WebGLRenderer} three
+   * @param {THREE.BufferGeometry} geometry the fullscreen triangle
+   * @param {THREE.Camera} camera
+   * @param {(material: THREE.RawShaderMaterial) => boolean} inUse whether a material is on screen (never disposed here)
+   */
+  constructor(three, geometry, camera, inUse) {
+    this.three = three;
+    this.camera = camera;
+    this._inUse = inUse;
+    three.debug.onShaderError = (...args) => this._onShaderError(...args);
+    // compiled away from the visible scene, swapped in only when it works
+    this.stagingScene = new THREE.Scene();
+    this.stagingMesh = new THREE.Mesh(geometry, null);
+    this.stagingMesh.frustumCulled = false;
+    this.stagingScene.add(this.stagingMesh);
+    this._compiling = null; // set while three.js checks a program, read by _onShaderError
+    /**
+     * Materials that compiled, by their code, most recent last.
+     * @type {Map<string, THREE.RawShaderMaterial>}
+     */
+    this._compiled = new Map();
+  }
+
+  /**
+   * Compiles every pass of `project` with `hostBlock` between header and Common, each with the
+   * uniforms `passUniforms()` gives. Resolves with the frame's steps once all are compiled; if any
+   * fails it rejects with a ShaderCompileError naming each message's tab (for a plain file: its
+   * lines). Every pass that compiled is kept either way.
+   * @param {import('../../shadertoy/multipass.js').MultipassShader} project
+   * @param {string} hostBlock
+   * @param {string} fileName
+   * @param {() => Record<string, {value: any}>} passUniforms
+   * @returns {Promise<Step[]>}
+   */
+  async compileSteps(project, hostBlock, fileName, passUniforms) {
+    const schedule = frameSchedule(project);
+    const multipass = project.common !== null || schedule.length > 1;
+    const sources = Object.fromEntries([['Common', project.common ?? ''], ...project.passes.map((pass) => [pass.name, pass.code])]);
+    const messages = [];
+    /** @type {Step[]} */
+    const steps = [];
+    for (const step of schedule) {
+      const { pass } = step;
+      const composed = composePassShader(pass.code, {
+        common: project.common,
+        hostBlock,
+        kind: pass.kind,
+        name: pass.name,
+        channelTypes: channelTypes(pass),
+      });
+      const check = {
+        userText: (project.common === null ? '' : project.common + '\n') + pass.code,
+        sections: multipass ? composed.sections : null,
+      };
+      try {
+        steps.push({ ...step, material: await this._compileMaterial(composed, check, passUniforms) });
+      } catch (error) {
+        if (!error.messages) throw error;
+        // an error in Common is the same error in every pass that includes it: said once
+        const said = new Set(messages.map((m) => JSON.stringify([m.pass, m.line, m.message])));
+        messages.push(...error.messages.filter((m) => m.pass !== 'Common' || !said.has(JSON.stringify([m.pass, m.line, m.message]))));
+      }
+    }
+    if (messages.length) {
+      for (const step of steps) this._remember(step.material.fragmentShader, step.material);
+      const report = multipass ? formatPassMessages(messages, sources) : formatShaderMessages(messages, project.passes[0].code, fileName);
+      throw new ShaderCompileError(report, messages);
+    }
+    for (const step of steps) this._remember(step.material.fragmentShader, step.material);
+    return steps;
+  }
+
+  /**
+   * One pass's material, compiled (or the one kept from before for the same code).
+   * @param {{code: string, firstSourceLine: number}} composed
+   * @param {{userText: string, sections: import('../../shadertoy/header.js').PassSection[] | null}} check
+   * @param {() => Record<string, {value: any}>} passUniforms
+   */
+  async _compileMaterial({ code, firstSourceLine }, { userText, sections }, passUniforms) {
+    // three.js writes `#version` itself (glslVersion), ahead of its own #defines
+    const body = code.slice(code.indexOf('\n') + 1);
+    const cached = this._compiled.get(body);
+    if (cached) return cached;
+    const material = new THREE.RawShaderMaterial({
+      glslVersion: THREE.GLSL3,
+      vertexShader: VERTEX_SHADER,
+      fragmentShader: body,
+      uniforms: passUniforms(),
+      depthTest: false,
+      depthWrite: false,
+      toneMapped: false,
+    });
+    this.stagingMesh.material = material;
+    // compile() creates the program now; compileAsync then waits for it without blocking, where
+    // the driver can (KHR_parallel_shader_compile; asking three.js for it would warn otherwise)
+    const compiled = this.three.extensions.has('KHR_parallel_shader_compile')
+      ? this.three.compileAsync(this.stagingScene, this.camera)
+      : Promise.resolve(this.three.compile(this.stagingScene, this.camera));
+    this.stagingMesh.material = null;
+    await compiled;
+
+    // Asking for the uniforms makes three.js check the program, calling onShaderError on failure.
+    const program = /** @type {{currentProgram: {getUniforms: () => unknown}}} */ (this.three.properties.get(material)).currentProgram;
+    const check = { userText, sections, body, firstBodyLine: firstSourceLine - 1, error: null };
+    this._compiling = check;
+    try {
+      program.getUniforms();
+    } finally {
+      this._compiling = null;
+    }
+    if (check.error) {
+      material.dispose();
+      throw check.error;
+    }
+    return material;
+  }
+
+  /** Keeps the most recent compiled materials (MATERIALS_KEPT); disposes the ones that fall out. */
+  _remember(body, material) {
+    this._compiled.delete(body);
+    this._compiled.set(body, material);
+    for (const [key, old] of this._compiled) {
+      if (this._compiled.size <= MATERIALS_KEPT) break;
+      this._compiled.delete(key);
+      if (!this._inUse(old)) old.dispose();
+    }
+  }
+
+  /** Forgets the compiled materials but the ones on screen (their programs died with a lost context). */
+  forgetCompiled() {
+    for (const material of this._compiled.values()) if (!this._inUse(material)) material.dispose();
+    this._compiled.clear();
+  }
+
+  /** three.js's hook for a program that did not link: turn the logs into a ShaderCompileError. */
+  _onShaderError(gl, program, vertexShader, fragmentShader) {
+    const check = this._compiling;
+    if (!check) return;
+    const offset = userLineOffset(gl.getShaderSource(fragmentShader) ?? '', check.body, check.firstBodyLine, check.userText);
+    const log = gl.getShaderInfoLog(fragmentShader) ?? '';
+    const fragment = check.sections
+      ? parsePassShaderLog(log, offset, check.sections)
+      : parseShaderLog(log, offset, check.userText.split('\n').length).map((m) => ({ ...m, pass: null }));
+    const messages = [
+      ...fragment,
+      ...parseShaderLog(gl.getShaderInfoLog(vertexShader) ?? '', null, 0).map((m) => ({
+        ...m,
+        pass: null,
+        message: `vertex shader: ${m.message}`,
+      })),
+    ];
+    if (messages.length === 0) {
+      messages.push(...parseShaderLog(gl.getProgramInfoLog(program) ?? 'link failed', null, 0).map((m) => ({ ...m, pass: null })));
+    }
+    check.error = new ShaderCompileError('', messages);
+  }
+}

@@ -1,0 +1,156 @@
+// The render worker's messages, written once: both sides import this module, the page's client
+// (app/render-client.js) to ask and listen, the worker (gpu/render-worker.js) to answer and tell,
+// each typed against the tables below (after MapLibre's typed actor messages). Three kinds:
+//
+// - requests, page → worker, each answered exactly once by a reply with the same id, holding its
+//   result or its error;
+// - commands, page → worker, never answered;
+// - events, worker → page, unprompted.
+//
+// A change (a compile that succeeds, a uniform, a channel) while a frame is being drawn starts
+// that frame again from its first band: what the page shows next has the change throughout.
+
+import { ShaderCompileError, WebGL2UnavailableError } from './errors.js';
+
+/** @typedef {import('../../shadertoy/multipass.js').MultipassShader} MultipassShader */
+/** @typedef {import('../../shadertoy/controls.js').Control} Control */
+
+/**
+ * The inputs of one drawn frame, for a drawing buffer of width × height (Shadertoy's uniforms,
+ * as the page's clock, mouse and keyboard set them: app/shadertoy-inputs.js).
+ * @typedef {object} FrameInputs
+ * @property {number} width
+ * @property {number} height
+ * @property {number} time iTime
+ * @property {number} delta iTimeDelta
+ * @property {number} frameRate iFrameRate
+ * @property {number} frame iFrame
+ * @property {number[]} mouse iMouse: [x, y, z, w]
+ * @property {number[]} date iDate: [year, month (0-based), day, seconds since midnight]
+ * @property {Uint8Array} [keyboard] Shadertoy's keyboard texture (keyboard.js), for the passes that read it
+ */
+
+/**
+ * A frame the worker finished for the page.
+ * @typedef {object} DrawnFrame
+ * @property {ImageBitmap} bitmap the picture, for the page's canvas
+ * @property {Uint8Array | null} pixels RGBA8, rows top to bottom, alpha 1, when asked for (readBack)
+ * @property {number[]} gpuTimes GPU times (ms) of frames whose timer queries came in with this one
+ *   (gpu-timer.js; empty where the browser does not measure them)
+ */
+
+/**
+ * Requests: name → [what the page sends, what the reply holds].
+ * @typedef {object} Requests
+ * @property {[{project: MultipassShader, hostBlock: string, fileName: string}, null]} compile every
+ *   pass of a shader, with `hostBlock` after Shadertoy's header; a failure is a ShaderCompileError
+ *   and the last shader that compiled keeps running
+ * @property {[{inputs: FrameInputs, readBack: boolean}, DrawnFrame]} frame a frame for the page,
+ *   drawn band by band; a newer frame replaces one that has not started
+ * @property {[{inputs: FrameInputs, width: number, height: number, allPasses: boolean}, Uint8Array]} capture
+ *   the same frame at another size, off screen (allPasses: every pass, buffers included, at their
+ *   size: a recorded frame); RGBA8, rows top to bottom, alpha 1
+ * @property {[{inputs: FrameInputs, n: number}, number[]]} bench n whole frames back to back, each
+ *   one draw waited for: their times in ms
+ */
+
+/**
+ * Commands: name → what the page sends.
+ * @typedef {object} Commands
+ * @property {{}} init start: the worker answers with the `ready` or `failed` event
+ * @property {{}} clearBuffers Restart: every buffer of a multipass shader to 0
+ * @property {{controls: Control[], values: Record<string, unknown>}} controlUniforms the live
+ *   controls as uniforms, with their values
+ * @property {{name: string, value: unknown}} controlUniform one live control's new value
+ * @property {{index: number, image: ImageBitmap | null}} channel an image into iChannel0..3 (null: black)
+ * @property {{}} loseContext WEBGL_lose_context, for tests of a lost context
+ * @property {{}} restoreContext
+ */
+
+/**
+ * Events: name → what the worker sends.
+ * @typedef {object} Events
+ * @property {{maxSize: number, info: Record<string, string>}} ready the worker has a WebGL2
+ *   context: its largest side, and what GPU and driver it runs on
+ * @property {{name: string, message: string}} failed no context (name 'WebGL2UnavailableError')
+ * @property {{lost: boolean}} context the context was lost (true) or restored (false); a restored
+ *   context has no shader: the page compiles again
+ * @property {{}} bandStarted a band went to the GPU
+ * @property {{kind: 'frame' | 'capture', y: number, height: number, bitmap: ImageBitmap | null}} band
+ *   the GPU finished a band of a frame or a capture, `y` rows of `height` done (the last band
+ *   too); now and then with a bitmap of a frame as far as it got
+ */
+
+/**
+ * A message on the wire.
+ * @typedef {{kind: 'request', id: number, type: keyof Requests, params: any}
+ *   | {kind: 'command', type: keyof Commands, params: any}
+ *   | {kind: 'event', type: keyof Events, params: any}
+ *   | {kind: 'reply', id: number, result?: any, error?: WireError}} Message
+ */
+
+/** An error as it crosses: enough to make it again on the other side. @typedef {{name: string, message: string, report?: string, messages?: any[]}} WireError */
+
+/** @param {any} error @returns {WireError} */
+export function toWire(error) {
+  return { name: error?.name ?? 'Error', message: error?.message ?? String(error), report: error?.report, messages: error?.messages };
+}
+
+/** The error a reply carries, as it was thrown. @param {WireError} wire @returns {Error} */
+export function fromWire(wire) {
+  if (wire.messages) return new ShaderCompileError(wire.report, wire.messages);
+  if (wire.name === 'WebGL2UnavailableError') return new WebGL2UnavailableError();
+  return new Error(wire.message);
+}
+
+/**
+ * What in a message's parameters moves to the other side instead of being copied: bitmaps and
+ * the buffers of byte arrays, at the top level of `params`.
+ * @param {unknown} params
+ * @returns {Transferable[]}
+ */
+export function transferables(params) {
+  const values = params instanceof Uint8Array ? [params] : params && typeof params === 'object' ? Object.values(params) : [];
+  /** @type {Transferable[]} */
+  const out = [];
+  for (const value of values) {
+    if (typeof ImageBitmap !== 'undefined' && value instanceof ImageBitmap) out.push(value);
+    else if (value instanceof Uint8Array && value.byteLength) out.push(value.buffer);
+  }
+  return out;
+}
+
+/**
+ * The worker's side: answers requests with `requests` (a result or a promise of one), carries
+ * out `commands`, and returns how to send events.
+ * @param {{postMessage: (message: Message, transfer: Transferable[]) => void, onmessage: any}} scope the worker's global scope
+ * @param {{[K in keyof Requests]: (params: Requests[K][0]) => Requests[K][1] | Promise<Requests[K][1]>}} requests
+ * @param {{[K in keyof Commands]: (params: Commands[K]) => void}} commands
+ */
+export function serve(scope, requests, commands) {
+  scope.onmessage = async ({ data }) => {
+    const message = /** @type {Message} */ (data);
+    if (message.kind === 'command') {
+      const command = commands[message.type];
+      if (!command) throw new Error(`render worker: no command ${message.type}`);
+      command(message.params);
+      return;
+    }
+    if (message.kind !== 'request') throw new Error(`render worker: a ${message.kind} message from the page`);
+    const request = /** @type {(params: any) => any} */ (requests[message.type]);
+    try {
+      if (!request) throw new Error(`render worker: no request ${message.type}`);
+      const result = await request(message.params);
+      scope.postMessage({ kind: 'reply', id: message.id, result }, transferables(result));
+    } catch (error) {
+      scope.postMessage({ kind: 'reply', id: message.id, error: toWire(error) }, []);
+    }
+  };
+  /**
+   * Sends an event to the page.
+   * @template {keyof Events} K
+   * @param {K} type
+   * @param {Events[K]} params
+   */
+  return (type, params) => scope.postMessage({ kind: 'event', type, params }, transferables(params));
+}

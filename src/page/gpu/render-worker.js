@@ -1,0 +1,263 @@
+// The render worker: the page's GPU work, off the page's main thread. It owns an OffscreenCanvas
+// of its own (not one transferred from the page: a transferred canvas ties the page's main
+// thread to the GPU, and one endless draw then freezes the whole page), draws frames there in
+// bands (band-planner.js), polls a fence after each band instead of waiting for the GPU, and
+// hands each finished frame to the page as an ImageBitmap, which the page's canvas shows.
+// Nothing the page's script does ever waits for the GPU; the page (app/render-client.js) sees
+// the bands come in and knows when they stop coming. What it is asked and what it answers is
+// protocol.js's.
+
+import { ShaderRenderer } from './renderer.js';
+import { writeUniforms } from './uniforms.js';
+import { BandPlanner } from './band-planner.js';
+import { flipRows } from '../../shared/pixels.js';
+import { serve } from './protocol.js';
+
+/** @typedef {import('./protocol.js').FrameInputs} FrameInputs */
+/** @typedef {import('./protocol.js').DrawnFrame} DrawnFrame */
+
+/** How often an unfinished band's fence is looked at (browsers clamp shorter timeouts to ~4 ms). */
+const POLL_MS = 2;
+/** How often a frame that is still being drawn is shown as far as it got. */
+const PRESENT_EVERY_MS = 250;
+
+/**
+ * @typedef {object} Job a frame or a capture under way
+ * @property {'frame' | 'capture'} kind
+ * @property {FrameInputs} inputs
+ * @property {number} width
+ * @property {number} height
+ * @property {boolean} readBack
+ * @property {any} target the render target drawn into
+ * @property {number} step the pass being drawn (an index into renderer.steps; a capture draws
+ *   only the last, the Image pass, over the buffers as they are)
+ * @property {number} y rows of it done
+ * @property {boolean} redo something changed while a band was being drawn: it starts again
+ * @property {boolean} [allPasses] a capture that draws every pass (a recorded frame)
+ * @property {(result: any) => void} resolve
+ * @property {(error: Error) => void} reject
+ */
+
+/** @type {ShaderRenderer | null} */
+let renderer = null;
+const planner = new BandPlanner();
+/** @type {Job | null} */
+let job = null;
+/** Jobs waiting for the one under way. @type {Job[]} */
+const waiting = [];
+/** The band the GPU is drawing. @type {{sync: WebGLSync, rows: number, started: number} | null} */
+let band = null;
+let lastPresent = 0;
+/** WEBGL_lose_context, kept from the loss it caused for the restore. @type {WEBGL_lose_context | null} */
+let loseContext = null;
+
+/**
+ * A frame or capture, queued; resolves when it is done.
+ * @param {Omit<Job, 'step' | 'y' | 'redo' | 'resolve' | 'reject'>} fields
+ */
+function enqueue(fields) {
+  return new Promise((resolve, reject) => {
+    waiting.push({ ...fields, step: 0, y: 0, redo: false, resolve, reject });
+    pump();
+  });
+}
+
+/** Something the picture depends on changed: the frame under way starts again, and its cost is
+ * learnt again (a control can make a shader far heavier). */
+function changed() {
+  planner.forget();
+  if (!job) return;
+  job.y = 0;
+  job.redo = Boolean(band); // the band in flight has the old state
+}
+
+/** Starts the next band, if the GPU is free and there is something to draw. */
+function pump() {
+  if (band || !renderer || renderer.contextLost) return;
+  if (!job) {
+    job = waiting.shift() ?? null;
+    if (!job) return;
+    if (job.kind === 'frame' && (job.width !== renderer.width || job.height !== renderer.height)) {
+      renderer.setSize(job.width, job.height);
+      planner.forget();
+    }
+  }
+  if (!renderer.hasProgram) {
+    job.reject(new Error('no shader has compiled'));
+    job = null;
+    return pump();
+  }
+  const gl = renderer.gl;
+  const steps = renderer.steps;
+  // a capture draws only the Image pass over the buffers as they are, unless it is a recorded
+  // frame of a multipass shader (allPasses); a new shader meanwhile may have fewer passes
+  if ((job.kind === 'capture' && !job.allPasses) || job.step >= steps.length) job.step = steps.length - 1;
+  const step = steps[job.step];
+  const first = job.step === 0 && job.y === 0;
+  const last = job.step === steps.length - 1;
+  if (first && job.kind === 'frame') {
+    renderer.gpuTimer.begin();
+    if (job.inputs.keyboard) renderer.setKeyboard(job.inputs.keyboard);
+  }
+  const rows = planner.rows(job.width, job.height - job.y);
+  writeUniforms(renderer.uniforms, job.inputs, { width: job.width, height: job.height });
+  const target = renderer.beginStep(step, job.width, job.height) ?? job.target;
+  renderer.drawRows(job.y, job.y + rows, target);
+  if (last && job.y + rows >= job.height && job.kind === 'frame') renderer.gpuTimer.end();
+  const sync = gl.fenceSync(gl.SYNC_GPU_COMMANDS_COMPLETE, 0);
+  gl.flush();
+  band = { sync, rows, started: performance.now() };
+  tell('bandStarted', {});
+  setTimeout(poll, POLL_MS);
+}
+
+function poll() {
+  if (!band || !renderer) return; // the context was lost meanwhile
+  const gl = renderer.gl;
+  if (gl.getSyncParameter(band.sync, gl.SYNC_STATUS) !== gl.SIGNALED) {
+    setTimeout(poll, POLL_MS);
+    return;
+  }
+  gl.deleteSync(band.sync);
+  const { rows, started } = band;
+  band = null;
+  bandDone(rows, performance.now() - started);
+  pump();
+}
+
+/** @param {number} rows @param {number} ms */
+function bandDone(rows, ms) {
+  if (!job || !renderer) return;
+  planner.measured(job.width, rows, ms);
+  if (job.redo) job.redo = false;
+  else job.y += rows;
+  if (job.y >= job.height && job.step < renderer.steps.length - 1) {
+    renderer.endStep(renderer.steps[job.step]); // a buffer is done: the next pass reads it
+    job.step++;
+    job.y = 0;
+  }
+  const done = job.y >= job.height;
+  const now = performance.now();
+  const show = !done && job.kind === 'frame' && now - lastPresent > PRESENT_EVERY_MS;
+  if (show) lastPresent = now;
+  tell('band', { kind: job.kind, y: job.y, height: job.height, bitmap: show ? renderer.present() : null });
+  if (!done) return;
+  const finished = job;
+  job = null;
+  if (finished.kind === 'frame') {
+    lastPresent = now;
+    const pixels = finished.readBack ? readOpaque(finished.target, finished.width, finished.height) : null;
+    /** @type {DrawnFrame} */
+    const drawn = { bitmap: renderer.present(), pixels, gpuTimes: renderer.gpuTimer.poll() };
+    finished.resolve(drawn);
+  } else {
+    const pixels = readOpaque(finished.target, finished.width, finished.height);
+    finished.target.dispose();
+    finished.resolve(pixels);
+  }
+}
+
+/** A target's pixels as the page shows them: rows top to bottom, alpha 1 (the page's canvas has none). */
+function readOpaque(target, width, height) {
+  const pixels = flipRows(renderer.readTarget(target), width, height);
+  for (let i = 3; i < pixels.length; i += 4) pixels[i] = 255;
+  return pixels;
+}
+
+/** Makes the renderer on a canvas of the worker's own, and follows its context. */
+function start() {
+  const canvas = new OffscreenCanvas(1, 1);
+  try {
+    renderer = new ShaderRenderer(canvas);
+  } catch (error) {
+    tell('failed', { name: error.name, message: error.message });
+    return;
+  }
+  canvas.addEventListener('webglcontextlost', (event) => {
+    event.preventDefault(); // tells the browser we want it back (three.js does too)
+    band = null;
+    for (const lost of [job, ...waiting]) lost?.reject(new Error('the GPU context was lost'));
+    job = null;
+    waiting.length = 0;
+    tell('context', { lost: true });
+  });
+  canvas.addEventListener('webglcontextrestored', () => {
+    // three.js has rebuilt its state; programs and textures are made again from our objects
+    renderer.forgetCompiled();
+    planner.forget();
+    tell('context', { lost: false });
+  });
+  tell('ready', { maxSize: renderer.maxSize, info: renderer.info() });
+}
+
+const tell = serve(
+  /** @type {any} */ (self),
+  {
+    async compile({ project, hostBlock, fileName }) {
+      try {
+        await renderer.compile(project, hostBlock, fileName);
+        changed();
+        return null;
+      } finally {
+        pump();
+      }
+    },
+
+    frame({ inputs, readBack }) {
+      // a frame the page asks for replaces one that has not started yet
+      const stale = waiting.findIndex((queued) => queued.kind === 'frame');
+      if (stale >= 0) waiting.splice(stale, 1)[0].reject(new Error('replaced by a newer frame'));
+      const { width, height } = inputs;
+      return enqueue({ kind: 'frame', inputs, width, height, readBack, target: renderer.frameTarget });
+    },
+
+    capture({ inputs, width, height, allPasses }) {
+      return enqueue({ kind: 'capture', inputs, width, height, readBack: true, target: renderer.makeTarget(width, height), allPasses });
+    },
+
+    bench({ inputs, n }) {
+      const times = [];
+      renderer.setSize(inputs.width, inputs.height);
+      writeUniforms(renderer.uniforms, inputs);
+      for (let i = 0; i < n; i++) {
+        const begun = performance.now();
+        renderer.render();
+        renderer.readTarget(renderer.frameTarget, 0, 0, 1, 1); // waits until the GPU has finished
+        times.push(performance.now() - begun);
+      }
+      return times;
+    },
+  },
+  {
+    init: start,
+
+    clearBuffers() {
+      renderer.buffers.clear();
+      changed();
+    },
+
+    controlUniforms({ controls, values }) {
+      renderer.setControlUniforms(controls, values);
+      changed();
+    },
+
+    controlUniform({ name, value }) {
+      renderer.setControlUniform(name, value);
+      changed();
+    },
+
+    channel({ index, image }) {
+      renderer.setChannel(index, image);
+      changed();
+    },
+
+    loseContext() {
+      loseContext = renderer.gl.getExtension('WEBGL_lose_context');
+      loseContext?.loseContext();
+    },
+
+    restoreContext() {
+      loseContext?.restoreContext(); // the extension is not to be had while the context is lost
+    },
+  },
+);

@@ -1,0 +1,345 @@
+// Draws a Shadertoy Image pass: one fullscreen triangle with a RawShaderMaterial on a three.js
+// WebGLRenderer (WebGL2), inside the render worker (render-worker.js) on an OffscreenCanvas of
+// its own. Compiling is done off to the side, so a shader that fails to compile never replaces
+// the last one that worked.
+//
+// Frames are drawn into a render target that keeps them (the frame target), in bands of rows
+// (drawRows: one scissored draw each, so a heavy frame is many short draws), and copied to the
+// canvas only to be shown (present: the canvas's drawing buffer is handed to the page as an
+// ImageBitmap, which leaves the canvas blank).
+//
+// Compiling every pass, with its errors mapped to the user's lines and the material cache, is
+// pass-compiler.js's; what each pass reads in its channels, and the sampler objects it reads
+// buffers with, channel-bindings.js's.
+
+import * as THREE from 'three';
+import { GpuTimer } from './gpu-timer.js';
+import { blackTexture, shadertoyUniforms } from './uniforms.js';
+import { PassBuffers } from './pass-buffers.js';
+import { WebGL2UnavailableError } from './errors.js';
+import { PassCompiler, VERTEX_SHADER } from './pass-compiler.js';
+import { ChannelSamplers, bindChannels, imageTexture, ownChannelUniforms } from './channel-bindings.js';
+
+/** @typedef {import('./pass-compiler.js').Step} Step */
+
+/** Copies the frame target to the canvas pixel for pixel (texelFetch: no filtering, no flip). */
+const COPY_SHADER = `
+precision highp float;
+uniform highp sampler2D frame;
+out vec4 color;
+void main() {
+    color = texelFetch(frame, ivec2(gl_FragCoord.xy), 0);
+}
+`;
+
+/** One triangle whose middle covers clip space [-1, 1]². */
+function fullscreenTriangle() {
+  const geometry = new THREE.BufferGeometry();
+  geometry.setAttribute('position', new THREE.Float32BufferAttribute([-1, -1, 0, 3, -1, 0, -1, 3, 0], 3));
+  return geometry;
+}
+
+export class ShaderRenderer {
+  /** @param {OffscreenCanvas} canvas the worker's own canvas */
+  constructor(canvas) {
+    /** @type {WebGLContextAttributes} */
+    const attributes = {
+      alpha: false,
+      antialias: false,
+      depth: false,
+      stencil: false,
+      preserveDrawingBuffer: false,
+      powerPreference: 'high-performance',
+    };
+    const gl = canvas.getContext('webgl2', attributes);
+    if (!gl) throw new WebGL2UnavailableError();
+    this.gl = gl;
+    /** The GPU time of each frame drawn, where the browser measures it (gpu-timer.js). */
+    this.gpuTimer = new GpuTimer(gl);
+    this.canvas = canvas;
+
+    this.three = new THREE.WebGLRenderer({ canvas, context: gl, ...attributes });
+    this.three.setPixelRatio(1); // we size the drawing buffer in device pixels ourselves
+    this.three.autoClear = false; // the triangle covers every pixel
+
+    /** Shadertoy's uniforms plus the live control uniforms; shared by every material we build. */
+    this.uniforms = shadertoyUniforms(blackTexture());
+
+    const geometry = fullscreenTriangle();
+    this.camera = new THREE.OrthographicCamera(); // required by render(); the shader ignores it
+    this.scene = new THREE.Scene();
+    this.mesh = new THREE.Mesh(geometry, null);
+    this.mesh.frustumCulled = false;
+    this.scene.add(this.mesh);
+    /** Compiles the passes (pass-compiler.js); keeps compiled materials, never disposing one on screen. */
+    this.compiler = new PassCompiler(this.three, geometry, this.camera, (material) =>
+      this.steps.some((step) => step.material === material),
+    );
+
+    /** Where frames are drawn and kept (RGBA8, as the page's canvas): the page shows copies of it. */
+    this.frameTarget = this.makeTarget(1, 1);
+    this.copyScene = new THREE.Scene();
+    const copy = new THREE.Mesh(
+      geometry,
+      new THREE.RawShaderMaterial({
+        glslVersion: THREE.GLSL3,
+        vertexShader: VERTEX_SHADER,
+        fragmentShader: COPY_SHADER,
+        uniforms: { frame: { value: this.frameTarget.texture } },
+        depthTest: false,
+        depthWrite: false,
+      }),
+    );
+    copy.frustumCulled = false;
+    this.copyScene.add(copy);
+    this._copySource = /** @type {THREE.RawShaderMaterial} */ (copy.material).uniforms.frame;
+
+    this._black = this.uniforms.iChannel0.value;
+    this._channels = [null, null, null, null]; // textures loaded into iChannel0..3
+
+    /** The passes of a frame, in order, with their compiled materials (the last is Image). @type {Step[]} */
+    this.steps = [];
+    /** Buffer A–D of a multipass shader. */
+    this.buffers = new PassBuffers(this.three, (source, target, width, height) => this._copy(source, target, width, height));
+    /** Shadertoy's keyboard texture: 256 × 3 bytes, nearest (keyboard.js). */
+    this.keyboard = new THREE.DataTexture(new Uint8Array(256 * 3), 256, 3, THREE.RedFormat, THREE.UnsignedByteType);
+    this.keyboard.needsUpdate = true;
+    /** The sampler objects of the pass being drawn (channel-bindings.js). */
+    this.samplers = new ChannelSamplers(gl, this.three);
+
+    this._serial = 0; // compiles started
+    this._installed = 0; // the compile on screen
+  }
+
+  /** True once some shader has compiled (render() draws nothing before). */
+  get hasProgram() {
+    return this.steps.length > 0;
+  }
+
+  /**
+   * Declares the live (`const`) controls as uniforms, with `values`. Entries of an older control
+   * list stay: the shader still on screen may use them until its successor compiles.
+   */
+  setControlUniforms(controls, values) {
+    for (const c of controls) {
+      if (c.kind !== 'uniform') continue;
+      this.uniforms[c.name] ??= { value: null };
+      this.setControlUniform(c.name, values[c.name]);
+    }
+  }
+
+  setControlUniform(name, value) {
+    const uniform = this.uniforms[name];
+    if (!uniform) return;
+    // three.js takes plain arrays for vecN; bools go in as ints
+    uniform.value = Array.isArray(value) ? value.slice() : typeof value === 'boolean' ? Number(value) : value;
+  }
+
+  /**
+   * Compiles every pass of `project` (a Shadertoy shader: Common, buffers, Image) with
+   * `hostBlock` between header and Common. Resolves once all are compiled: then they become the
+   * drawn shader; if any fails it rejects with a ShaderCompileError naming each message's tab
+   * (for a plain file: its lines), and the previous shader stays.
+   * @param {import('../../shadertoy/multipass.js').MultipassShader} project
+   * @param {string} hostBlock
+   * @param {string} [fileName]
+   */
+  async compile(project, hostBlock, fileName = 'shader') {
+    const serial = ++this._serial;
+    const steps = await this.compiler.compileSteps(project, hostBlock, fileName, () => this._passUniforms());
+    if (serial < this._installed) return; // a newer compile got in first
+    this._installed = serial;
+    this.steps = steps;
+    this.mesh.material = steps[steps.length - 1].material;
+    /** @type {Map<string, import('../../shadertoy/multipass.js').Sampler>} */
+    const wanted = new Map();
+    for (const step of steps) if (step.target !== 'screen') wanted.set(step.target, { filter: 'nearest', wrap: 'clamp', vflip: false });
+    for (const step of steps)
+      for (const binding of step.bindings)
+        if (binding.source === 'buffer' && binding.sampler?.filter === 'mipmap')
+          wanted.set(binding.buffer, { filter: 'mipmap', wrap: 'clamp', vflip: false });
+    this.buffers.use(wanted);
+  }
+
+  /**
+   * A pass's uniforms: Shadertoy's and the controls', shared by every pass (one write reaches them
+   * all), but its own channels and their resolutions.
+   */
+  _passUniforms() {
+    return { ...this.uniforms, ...ownChannelUniforms(this._black) };
+  }
+
+  /**
+   * Binds what a pass reads, for a frame of width × height, and returns where it draws: a
+   * buffer's target, or null for the Image pass (the caller's target).
+   * @param {Step} step
+   * @param {number} width
+   * @param {number} height
+   */
+  beginStep(step, width, height) {
+    const uniforms = step.material.uniforms;
+    for (const name of Object.keys(this.uniforms)) if (!(name in uniforms)) uniforms[name] = this.uniforms[name]; // controls added later
+    bindChannels(step, width, height, { buffers: this.buffers, keyboard: this.keyboard, channels: this._channels, black: this._black });
+    this.mesh.material = step.material;
+    step.material.uniformsNeedUpdate = true; // the same material drawn again may read other textures
+    this.samplers.use(step);
+    return step.target === 'screen' ? null : this.buffers.writeTarget(step.target);
+  }
+
+  /** A pass has drawn all of its rows. @param {Step} step */
+  endStep(step) {
+    if (step.target !== 'screen') this.buffers.swap(step.target);
+  }
+
+  /** The keyboard texture's bytes for the next frame (Shadertoy's 256 × 3: keyboard.js). @param {Uint8Array} data */
+  setKeyboard(data) {
+    this.keyboard.image.data.set(data);
+    this.keyboard.needsUpdate = true;
+  }
+
+  /** Forgets the compiled materials but the ones on screen (their programs died with a lost context). */
+  forgetCompiled() {
+    this.compiler.forgetCompiled();
+  }
+
+  /** True between webglcontextlost and webglcontextrestored. */
+  get contextLost() {
+    return this.gl.isContextLost();
+  }
+
+  /**
+   * The largest drawing buffer or render target side this context takes, in device pixels.
+   * Zero while the context is lost (the caller keeps its last size then).
+   */
+  get maxSize() {
+    const gl = this.gl;
+    if (gl.isContextLost()) return 0;
+    const dims = gl.getParameter(gl.MAX_VIEWPORT_DIMS);
+    return Math.min(gl.getParameter(gl.MAX_RENDERBUFFER_SIZE), gl.getParameter(gl.MAX_TEXTURE_SIZE), dims[0], dims[1]);
+  }
+
+  /**
+   * Puts an image into iChannel0..3 (null: back to the 1×1 black texture), sampled as Shadertoy
+   * samples an image by default (channel-bindings.js: imageTexture).
+   * @param {number} index 0..3
+   * @param {ImageBitmap|null} image
+   */
+  setChannel(index, image) {
+    this._channels[index]?.dispose();
+    const texture = image ? imageTexture(image) : null;
+    this._channels[index] = texture;
+    this.uniforms[`iChannel${index}`].value = texture ?? this._black;
+    const resolution = this.uniforms.iChannelResolution.value;
+    resolution.splice(index * 3, 3, image?.width ?? 0, image?.height ?? 0, image ? 1 : 0);
+  }
+
+  /**
+   * An RGBA8 render target, as the page's canvas: the frame target, and one of its own for a
+   * frame drawn at another size (a screenshot, a recording).
+   * @param {number} width
+   * @param {number} height
+   */
+  makeTarget(width, height) {
+    return new THREE.WebGLRenderTarget(width, height, { depthBuffer: false, stencilBuffer: false, generateMipmaps: false });
+  }
+
+  /** Sizes the frame target and the canvas, in device pixels; what is in the target is lost on a change. */
+  setSize(width, height) {
+    if (this.frameTarget.width === width && this.frameTarget.height === height) return;
+    this.frameTarget.setSize(width, height);
+    this.three.setSize(width, height, false);
+    this.buffers.resize(width, height);
+  }
+
+  /**
+   * Draws `source` into `target` texel for texel over width × height from the lower left.
+   * @param {THREE.Texture} source
+   * @param {THREE.WebGLRenderTarget} target
+   * @param {number} width
+   * @param {number} height
+   */
+  _copy(source, target, width, height) {
+    this._copySource.value = source;
+    target.scissor.set(0, 0, width, height);
+    target.scissorTest = true;
+    this.three.setRenderTarget(target);
+    try {
+      this.three.render(this.copyScene, this.camera);
+    } finally {
+      this.three.setRenderTarget(null);
+      this._copySource.value = this.frameTarget.texture;
+    }
+  }
+
+  get width() {
+    return this.frameTarget.width;
+  }
+
+  get height() {
+    return this.frameTarget.height;
+  }
+
+  /**
+   * Draws rows [y0, y1) of the current shader into `target` (default: the frame target): one
+   * draw, scissored to those rows. The caller writes the uniforms first.
+   * @param {number} y0 first row, from the bottom
+   * @param {number} y1 one past the last row
+   * @param {THREE.WebGLRenderTarget} [target]
+   */
+  drawRows(y0, y1, target = this.frameTarget) {
+    if (!this.hasProgram) return false;
+    target.scissor.set(0, y0, target.width, y1 - y0);
+    target.scissorTest = y0 > 0 || y1 < target.height;
+    this.three.setRenderTarget(target);
+    this.samplers.bind();
+    try {
+      this.three.render(this.scene, this.camera);
+    } finally {
+      this.samplers.unbind(); // a sampler left on a unit would override every texture drawn there later
+      this.three.setRenderTarget(null);
+    }
+    return true;
+  }
+
+  /** Draws the whole frame at once, each pass in one draw (the benchmark's way). */
+  render() {
+    for (const step of this.steps) {
+      this.drawRows(0, this.height, this.beginStep(step, this.width, this.height) ?? this.frameTarget);
+      this.endStep(step);
+    }
+    return this.hasProgram;
+  }
+
+  /**
+   * The frame target as the page shows it: copied to the canvas, whose drawing buffer is handed
+   * over as an ImageBitmap (the canvas starts blank after).
+   * @returns {ImageBitmap}
+   */
+  present() {
+    this.three.setRenderTarget(null);
+    this.three.render(this.copyScene, this.camera);
+    return /** @type {OffscreenCanvas} */ (this.canvas).transferToImageBitmap();
+  }
+
+  /**
+   * Reads a render target (default: the frame target): RGBA8, rows bottom to top. It waits for
+   * the GPU: call it once the draws are done (render-worker.js polls a fence first).
+   */
+  readTarget(target = this.frameTarget, x = 0, y = 0, width = target.width, height = target.height) {
+    const pixels = new Uint8Array(width * height * 4);
+    this.three.readRenderTargetPixels(target, x, y, width, height, pixels);
+    return pixels;
+  }
+
+  /** What GPU and driver we run on. */
+  info() {
+    const gl = this.gl;
+    const debug = gl.getExtension('WEBGL_debug_renderer_info');
+    return {
+      renderer: gl.getParameter(debug ? debug.UNMASKED_RENDERER_WEBGL : gl.RENDERER),
+      vendor: gl.getParameter(debug ? debug.UNMASKED_VENDOR_WEBGL : gl.VENDOR),
+      version: gl.getParameter(gl.VERSION),
+      shadingLanguage: gl.getParameter(gl.SHADING_LANGUAGE_VERSION),
+    };
+  }
+}

@@ -1,0 +1,272 @@
+// Recording: the running shader drawn frame by frame, off screen, at a fixed frame rate and size,
+// into a WebM video (the browser's WebCodecs VideoEncoder, VP9 or VP8, muxed by mediabunny) or a
+// .zip of numbered PNGs (fflate). Frame i has iTime = i / fps, iTimeDelta = 1 / fps,
+// iFrameRate = fps and iFrame = i, whatever the frame costs to draw, so a shader that takes
+// seconds per frame still records smoothly. The live frame loop is paused meanwhile (and plays
+// again after, if it was playing); iMouse is the page's, scaled to the recording's size.
+
+import { BufferTarget, EncodedPacket, EncodedVideoPacketSource, Output, WebMOutputFormat } from 'mediabunny';
+import { zipSync } from 'fflate';
+import { fitGpu } from '../app/canvas-size.js';
+import { shadertoyDate } from '../app/shadertoy-inputs.js';
+
+/** @typedef {import('../app/app.js').RaytracerApp} RaytracerApp */
+/** @typedef {import('../gpu/protocol.js').FrameInputs} FrameInputs */
+
+/**
+ * What to record. `frames` wins over `duration` (seconds); width and height default to the canvas.
+ * @typedef {object} RecordRequest
+ * @property {'webm' | 'png'} [format]
+ * @property {number} [frames]
+ * @property {number} [duration]
+ * @property {number} [fps]
+ * @property {number} [width]
+ * @property {number} [height]
+ */
+
+/**
+ * A finished recording.
+ * @typedef {object} Recording
+ * @property {'webm' | 'png'} format
+ * @property {number} frames
+ * @property {number} fps
+ * @property {number} width
+ * @property {number} height
+ * @property {string} mimeType
+ * @property {string} codec the video codec ('vp9', 'vp8'), or 'png'
+ * @property {Uint8Array} bytes the file
+ */
+
+export const MAX_FRAMES = 36_000;
+export const MAX_FPS = 120;
+
+/** WebCodecs codec strings, best first, with mediabunny's names for them. */
+const CODECS = [
+  { webcodecs: 'vp09.00.10.08', name: /** @type {const} */ ('vp9') },
+  { webcodecs: 'vp8', name: /** @type {const} */ ('vp8') },
+];
+
+/** The error a cancelled recording rejects with. */
+export class RecordingCancelled extends Error {
+  constructor() {
+    super('recording cancelled');
+    this.name = 'RecordingCancelled';
+  }
+}
+
+/** Resolves in a later task: lets the page show progress and take a click on Cancel. */
+const nextTask = () => new Promise((resolve) => setTimeout(resolve, 0));
+
+/**
+ * The request made whole and safe: format, whole frame count, fps, and a size the GPU can draw.
+ * @param {RecordRequest} request
+ * @param {{width: number, height: number}} canvas the default size
+ * @param {number} maxSide the GPU's limit
+ */
+export function recordSettings(request, canvas, maxSide) {
+  /** @type {'webm' | 'png'} */
+  const format = request.format === 'png' ? 'png' : 'webm';
+  const number = (value, fallback) => (Number.isFinite(Number(value)) && Number(value) > 0 ? Number(value) : fallback);
+  const fps = Math.min(MAX_FPS, number(request.fps, 30));
+  const frames = Math.min(MAX_FRAMES, Math.max(1, Math.round(number(request.frames, number(request.duration, 2) * fps))));
+  const wanted = {
+    width: Math.max(1, Math.round(number(request.width, canvas.width))),
+    height: Math.max(1, Math.round(number(request.height, canvas.height))),
+  };
+  const { width, height } = fitGpu(wanted, maxSide, 'recording size');
+  return { format, frames, fps, width, height };
+}
+
+/** The first of VP9, VP8 that this browser's VideoEncoder encodes at this size. */
+async function videoCodec(width, height, fps) {
+  if (typeof VideoEncoder === 'undefined') throw new Error('this browser has no WebCodecs VideoEncoder: record a PNG sequence');
+  for (const codec of CODECS) {
+    const config = { codec: codec.webcodecs, width, height, framerate: fps, bitrate: Math.max(1e6, width * height * fps * 0.2) };
+    const { supported } = await VideoEncoder.isConfigSupported(config).catch(() => ({ supported: false }));
+    if (supported) return { ...codec, config };
+  }
+  throw new Error(`this browser encodes neither VP9 nor VP8 at ${width}×${height}: record a PNG sequence`);
+}
+
+/** WebM: each frame into the VideoEncoder, each chunk it gives into mediabunny's WebM muxer. */
+async function webmWriter({ width, height, fps }) {
+  const codec = await videoCodec(width, height, fps);
+  const output = new Output({ format: new WebMOutputFormat(), target: new BufferTarget() });
+  const source = new EncodedVideoPacketSource(codec.name);
+  output.addVideoTrack(source, { frameRate: fps });
+  await output.start();
+  /** @type {Promise<void>} the packets handed to the muxer, in order */
+  let muxed = Promise.resolve();
+  /** @type {Error | null} */
+  let failure = null;
+  const encoder = new VideoEncoder({
+    output: (chunk, meta) => {
+      muxed = muxed.then(() => source.add(EncodedPacket.fromEncodedChunk(chunk), meta));
+      muxed.catch((error) => (failure ??= error));
+    },
+    error: (error) => (failure ??= error),
+  });
+  encoder.configure(codec.config);
+  const check = () => {
+    if (failure) throw failure;
+  };
+  return {
+    codec: codec.name,
+    mimeType: 'video/webm',
+    /** @param {Uint8Array} rgba rows top to bottom @param {number} i */
+    async add(rgba, i) {
+      check();
+      const frame = new VideoFrame(rgba, {
+        format: 'RGBA',
+        codedWidth: width,
+        codedHeight: height,
+        timestamp: Math.round((i * 1e6) / fps),
+        duration: Math.round(1e6 / fps),
+      });
+      try {
+        encoder.encode(frame, { keyFrame: i % Math.max(1, Math.round(fps * 2)) === 0 });
+      } finally {
+        frame.close();
+      }
+      // backpressure: a software encoder may fall behind the (cheap) frames of a small shader
+      while (encoder.encodeQueueSize > 2) await new Promise((resolve) => encoder.addEventListener('dequeue', resolve, { once: true }));
+      await muxed;
+      check();
+    },
+    async finish() {
+      await encoder.flush();
+      await muxed;
+      check();
+      encoder.close();
+      await output.finalize();
+      return new Uint8Array(/** @type {ArrayBuffer} */ (/** @type {BufferTarget} */ (output.target).buffer));
+    },
+    async cancel() {
+      if (encoder.state !== 'closed') encoder.close();
+      await output.cancel().catch(() => {});
+    },
+  };
+}
+
+/** RGBA rows top to bottom → PNG bytes. */
+async function pngBytes(rgba, width, height) {
+  const canvas = new OffscreenCanvas(width, height);
+  const context = /** @type {OffscreenCanvasRenderingContext2D} */ (canvas.getContext('2d'));
+  context.putImageData(new ImageData(new Uint8ClampedArray(rgba.buffer, rgba.byteOffset, rgba.byteLength), width, height), 0, 0);
+  const blob = await canvas.convertToBlob({ type: 'image/png' });
+  return new Uint8Array(await blob.arrayBuffer());
+}
+
+/** PNG sequence: frame-0000.png, frame-0001.png, ... in a .zip (stored: PNGs are compressed). */
+function pngWriter({ width, height, frames }) {
+  /** @type {Record<string, Uint8Array>} */
+  const files = {};
+  const digits = Math.max(4, String(frames - 1).length);
+  return {
+    codec: 'png',
+    mimeType: 'application/zip',
+    /** @param {Uint8Array} rgba @param {number} i */
+    async add(rgba, i) {
+      files[`frame-${String(i).padStart(digits, '0')}.png`] = await pngBytes(rgba, width, height);
+    },
+    async finish() {
+      return zipSync(files, { level: 0 });
+    },
+    async cancel() {},
+  };
+}
+
+/** One recording at a time, of one app; the toolbar's dialog and window.raytracer share it. */
+export class Recorder {
+  /** @param {RaytracerApp} app */
+  constructor(app) {
+    this.app = app;
+    /** @type {AbortController | null} */
+    this._abort = null;
+  }
+
+  get busy() {
+    return this._abort !== null;
+  }
+
+  /** Stops the recording under way: its promise rejects with RecordingCancelled, nothing is made. */
+  cancel() {
+    this._abort?.abort();
+  }
+
+  /**
+   * Records the running shader.
+   * @param {RecordRequest} request
+   * @param {(done: number, total: number) => void} [onProgress] after each frame
+   * @returns {Promise<Recording>}
+   */
+  async record(request, onProgress = () => {}) {
+    if (this.busy) throw new Error('a recording is already under way');
+    const abort = new AbortController();
+    this._abort = abort;
+    const app = this.app;
+    const wasPlaying = app.inputs.playing;
+    try {
+      await app.compiles.settled();
+      if (!app.compiles.hasProgram || app.gpu.contextLost) throw new Error('nothing to record: no shader is running');
+      const canvas = app.frames.size;
+      // a multipass shader's buffers are the canvas's size: its frames are recorded at that size,
+      // every pass drawn each frame, from cleared buffers (as iFrame starts at 0)
+      const multipass = app.isMultipass;
+      const settings = recordSettings(multipass ? { ...request, ...canvas } : request, canvas, app.gpu.maxSize);
+      if (wasPlaying) app.pause();
+      if (multipass) app.gpu.tell('clearBuffers', {});
+      const writer = settings.format === 'webm' ? await webmWriter(settings) : pngWriter(settings);
+      try {
+        const frame = frameInputs(app, settings.fps);
+        for (let i = 0; i < settings.frames; i++) {
+          if (abort.signal.aborted) throw new RecordingCancelled();
+          if (app.gpu.contextLost) throw new Error('the GPU context was lost while recording');
+          // RGBA8 with alpha 1, as the page shows it (the worker reads it back so)
+          const rgba = await app.gpu.ask('capture', {
+            inputs: frame(i),
+            width: settings.width,
+            height: settings.height,
+            allPasses: multipass,
+          });
+          await writer.add(rgba, i);
+          onProgress(i + 1, settings.frames);
+          await nextTask();
+        }
+        if (abort.signal.aborted) throw new RecordingCancelled();
+        const bytes = await writer.finish();
+        if (abort.signal.aborted) throw new RecordingCancelled();
+        return { ...settings, codec: writer.codec, mimeType: writer.mimeType, bytes };
+      } catch (error) {
+        await writer.cancel();
+        throw error;
+      }
+    } finally {
+      this._abort = null;
+      if (wasPlaying && !app.inputs.playing) app.play();
+    }
+  }
+}
+
+/**
+ * The inputs of recorded frame i: time from the frame number, the page's mouse, the date moving
+ * on with iTime from the start.
+ * @param {RaytracerApp} app
+ * @param {number} fps
+ * @returns {(i: number) => FrameInputs}
+ */
+function frameInputs(app, fps) {
+  const mouse = app.inputs.mouse();
+  const { width, height } = app.frames.size;
+  const start = Date.now();
+  return (i) => ({
+    width,
+    height,
+    time: i / fps,
+    delta: 1 / fps,
+    frameRate: fps,
+    frame: i,
+    mouse,
+    date: shadertoyDate(new Date(start + (i * 1000) / fps)),
+  });
+}

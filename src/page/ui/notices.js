@@ -1,0 +1,189 @@
+// What the page says, in one place: the notes at the top of the canvas that block nothing (what
+// a loaded shader cannot have, a file that could not be read, kept work restored), and the
+// messages in the overlay (ui/overlay.js) about what the app reports: compile errors, a lost
+// context, a frame that may never finish, a page that could not start. The overlay also says,
+// for the tests and the automation, data-error="shader-compile" on <html> while no shader could
+// run, data-context="lost" while the GPU context is gone, data-hung="true" while the watchdog's
+// message shows, and on the canvas data-frame, the number of frames drawn.
+
+import { formatShaderMessages } from '../../shadertoy/shader-errors.js';
+import { formatPassMessages } from '../../shadertoy/pass-errors.js';
+import { projectTabs } from '../io/project-files.js';
+import { goBack } from '../app/gpu-context.js';
+import { element } from './dom.js';
+
+/** @typedef {import('../app/app.js').RaytracerApp} RaytracerApp */
+/** @typedef {import('./overlay.js').Overlay} Overlay */
+/** @typedef {{title: string, detail: string, actions?: Array<{label: string, run: () => void}>}} Notice */
+
+// ---- notes on the canvas ---------------------------------------------------------------------
+
+const NOTE_ID = 'load-notes';
+
+/** A "✕" that closes `note`. @param {HTMLElement} note @param {string} label */
+function closeButton(note, label) {
+  const close = element('button', { type: 'button', 'aria-label': label }, '✕');
+  close.addEventListener('click', () => note.remove());
+  return close;
+}
+
+/**
+ * Shows the note on a loaded shader (replacing the one shown), or removes it when `lines` is
+ * empty.
+ * @param {HTMLElement} parent the stage
+ * @param {string} title
+ * @param {string[]} lines one a line
+ * @param {'note' | 'error'} [kind] an error is marked as one
+ * @returns {HTMLElement | null}
+ */
+export function showLoadNotes(parent, title, lines, kind = 'note') {
+  document.getElementById(NOTE_ID)?.remove();
+  if (!lines.length) return null;
+  const note = element('div', { id: NOTE_ID, class: kind, role: 'status' });
+  const list = element('ul', {}, ...lines.map((line) => element('li', {}, line)));
+  note.append(element('strong', {}, title), closeButton(note, 'Close this note'), list);
+  parent.append(note);
+  return note;
+}
+
+/** Removes the note, if one is shown. */
+export const hideLoadNotes = () => document.getElementById(NOTE_ID)?.remove();
+
+/**
+ * The note that says the page restored kept work, with a button that discards it.
+ * @param {HTMLElement} parent
+ * @param {string} name the restored shader's name
+ * @param {() => void} discard goes back to the file
+ * @returns {HTMLElement}
+ */
+export function showRestoredNote(parent, name, discard) {
+  document.getElementById('restored-note')?.remove();
+  const note = element('div', { id: 'restored-note', role: 'status' });
+  const button = element('button', { type: 'button', title: 'Go back to the file' }, 'Discard edits');
+  button.addEventListener('click', () => {
+    note.remove();
+    discard();
+  });
+  const text = element('span', {}, `Restored ${name} from this browser's storage (your last edits).`);
+  note.append(text, button, closeButton(note, 'Keep edits and close this note'));
+  parent.append(note);
+  return note;
+}
+
+// ---- messages in the overlay ----------------------------------------------------------------
+
+/**
+ * A compile message as the error box shows it: "Buffer A:12: error: ..." for a tab of a
+ * multipass shader, "NAME:12: error: ..." for a single-pass one; the line's text under it.
+ * @param {RaytracerApp} app
+ * @param {string} fileName
+ */
+function messageFormatter(app, fileName) {
+  const tabs = Object.fromEntries(projectTabs(app.project).map((t) => [t.name, t.code]));
+  const source = app.source;
+  return (/** @type {{severity: string, pass?: string | null, line: number | null, message: string}} */ m) =>
+    m.pass ? formatPassMessages([{ ...m, pass: m.pass }], tabs) : formatShaderMessages([m], source, fileName);
+}
+
+/**
+ * The page could not start (no WebGL2, most likely): say so on the page, not in a blank one.
+ * @param {Overlay} overlay
+ * @param {Error} error
+ */
+export function showStartupFailure(overlay, error) {
+  const noWebGL2 = error.name === 'WebGL2UnavailableError';
+  document.documentElement.dataset.error = noWebGL2 ? 'webgl2' : 'startup';
+  overlay.show(noWebGL2 ? 'WebGL2 is not available' : 'The raytracer could not start', error.message);
+}
+
+/**
+ * Shows what the app reports: compile errors, an unreadable control block and a lost context in
+ * the overlay; and, for the tests and the automation, data-error="shader-compile" on <html>
+ * while no shader could run, data-context="lost" while the GPU context is gone, and on the
+ * canvas data-frame, the number of frames drawn.
+ * @param {RaytracerApp} app
+ * @param {Overlay} overlay
+ * @returns {(notice: Notice) => void} shows a notice once the next compile succeeds (instead of
+ *   hiding the overlay)
+ */
+export function showAppOnPage(app, overlay) {
+  const root = document.documentElement.dataset;
+  /** @type {Notice | null} */
+  let pending = null;
+  app.on('compile', (_, error, fileName) => {
+    if (error) {
+      const fallback = app.compiles.hasProgram ? ' (still showing the last version that compiled)' : '';
+      const title = `${fileName} did not compile${fallback}`;
+      if (error.messages?.length) overlay.showMessages(title, error.messages, messageFormatter(app, fileName));
+      else overlay.show(title, error.report ?? error.message);
+      if (!app.compiles.hasProgram) root.error = 'shader-compile';
+      return;
+    }
+    if (app.notice) overlay.show(`Control block of ${fileName} not read`, app.notice);
+    else if (pending) overlay.showActions(pending.title, pending.detail, pending.actions ?? []);
+    else overlay.hide();
+    pending = null;
+    delete root.error;
+  });
+  app.on('context', (_, lost) => {
+    if (lost) {
+      root.context = 'lost';
+      overlay.show(
+        'The GPU context was lost',
+        'The browser took the graphics context away (a driver reset, or too many pages using the GPU). The picture comes back when the browser restores it.',
+      );
+    } else {
+      delete root.context;
+    }
+  });
+  app.on('drawn', () => (app.canvas.dataset.frame = String(app.frames.count)));
+  showWatchdog(app, overlay);
+  return (notice) => (pending = notice);
+}
+
+/**
+ * The watchdog's message (render-client.js): a frame that has gone seconds without progress may
+ * never finish. It offers to go back to the last shader that finished a frame; it goes away by
+ * itself when the drawing goes on. data-hung="true" on <html> while it shows.
+ * @param {RaytracerApp} app
+ * @param {Overlay} overlay
+ */
+function showWatchdog(app, overlay) {
+  const root = document.documentElement.dataset;
+  app.on('hang', (_, seconds) => {
+    if (seconds === null) {
+      if (root.hung) overlay.hide();
+      delete root.hung;
+      return;
+    }
+    const first = !root.hung;
+    root.hung = 'true';
+    if (!first) return; // the message stays as it is; the seconds are in its text from the start
+    const back = app.frames.lastFinished;
+    const detail = [
+      `${app.fileName} has been drawing one frame for ${Math.round(seconds)} s without finishing a band of it: it may never finish (an endless loop, or far too much work per pixel).`,
+      'On a real GPU the browser resets the GPU after several seconds of this, and the page comes back with the last shader that finished a frame. SwiftShader (the CPU renderer) has no such reset: the draw goes on until the browser is closed.',
+      back ? `Going back runs ${back.name} again; the text that hung stays in the editor's undo history (Ctrl+Z).` : '',
+    ]
+      .filter(Boolean)
+      .join('\n');
+    const actions = back
+      ? [
+          {
+            label: `Go back to ${back.name}`,
+            run: () => {
+              overlay.show(`Going back to ${back.name}…`, 'Starting the renderer again.');
+              goBack(app).catch((error) => {
+                console.warn(error.message);
+                overlay.show(
+                  'The GPU did not come back',
+                  `${error.message}: the draw that never ends still holds the GPU. On SwiftShader it does until the browser closes: close the browser and open the page again, and it runs ${back.name}.`,
+                );
+              });
+            },
+          },
+        ]
+      : [];
+    overlay.showActions(`${app.fileName} may never finish`, detail, actions);
+  });
+}

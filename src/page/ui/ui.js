@@ -1,0 +1,229 @@
+// The page's widgets around the canvas, wired to the app: the toolbar (time, the frame-time
+// readout, output: actions.js), the lil-gui panel, the editor, the keys (keys.js: shortcuts and
+// the shader's keyboard), dropping a .glsl file, a Shadertoy JSON export or an image on the
+// page, a status line for short confirmations, and the notes (notices.js).
+
+import { Editor } from './editor.js';
+import { Panel } from './panel.js';
+import { Toolbar } from './toolbar.js';
+import { installRecordDialog } from './record-dialog.js';
+import { installShortcuts, watchKeyboard } from './keys.js';
+import { pageActions } from './actions.js';
+import { showLoadNotes } from './notices.js';
+import { KeptSource } from '../io/kept-source.js';
+import { droppedKind } from '../io/shader-loader.js';
+import { shareLink } from '../io/share-link.js';
+import { serializeProject, shaderNotes } from '../io/project-files.js';
+import { openShader } from '../io/open-shader.js';
+
+/** @typedef {import('../app/app.js').RaytracerApp} RaytracerApp */
+/** @typedef {import('./frame-readout.js').Activity} Activity */
+
+/**
+ * What the page is doing, for the frame-time readout.
+ * @param {RaytracerApp} app
+ * @returns {Activity}
+ */
+function activity(app) {
+  const { progress, count, stillFrames } = app.frames;
+  const fraction = progress ? progress.y / Math.max(1, progress.height) : null;
+  if (count === 0) return { phase: 'first', progress: fraction };
+  if (app.converge.on) return { phase: 'converging', samples: stillFrames, of: app.converge.frames };
+  if (!app.inputs.playing) return { phase: 'paused', progress: fraction };
+  if (app.inputs.speed === 0) return { phase: 'still' };
+  return { phase: 'playing' };
+}
+
+/**
+ * @param {RaytracerApp} app
+ * @returns the page's widgets and actions, for the automation hook and the tests
+ */
+export function installUi(app) {
+  const stage = /** @type {HTMLElement} */ (document.getElementById('stage'));
+  const statusLine = /** @type {HTMLElement} */ (document.getElementById('toast'));
+  /** @type {ReturnType<typeof setTimeout> | undefined} */
+  let toastTimer;
+  /** @param {string} text */
+  const toast = (text) => {
+    statusLine.textContent = text;
+    statusLine.hidden = false;
+    clearTimeout(toastTimer);
+    toastTimer = setTimeout(() => (statusLine.hidden = true), 3000);
+  };
+
+  // ---- widgets -------------------------------------------------------------------------------
+
+  const actions = pageActions(app, {
+    stage,
+    toast,
+    activeTab: () => editor.activeTab,
+    toggleEditor: () => editor.toggle(),
+    screenshotSize: (width, height) => panel.screenshotSize(width, height),
+  });
+  const toolbar = new Toolbar(/** @type {HTMLElement} */ (document.getElementById('toolbar')), actions, () => activity(app));
+  const recording = installRecordDialog(app, toolbar.root, toast);
+  const panel = new Panel({
+    onConverge: (on) =>
+      app.converge.set(on).catch((error) => {
+        console.warn(error.message);
+        toast(error.message);
+        panel.setConverging(app.converge.on, app.converge.available);
+      }),
+    scale: app.canvasSize.scale,
+    cap: app.canvasSize.cap,
+    sizeFixed: Boolean(app.canvasSize.fixed),
+    onScale: (s) => app.setScale(s),
+    onCap: (c) => app.setCap(c),
+    onControl: (name, value) => app.setControls({ [name]: value }, 'panel'),
+    onChannel: (i, file) =>
+      app.setChannel(i, file).then(
+        () => toast(file ? `Loaded ${file.name} into iChannel${i}` : `Emptied iChannel${i}`),
+        (error) => {
+          console.warn(error.message);
+          toast(error.message);
+        },
+      ),
+  });
+  // an edited shader's name: "untitled" after a paste over everything, else "NAME (edited)"
+  const kept = new KeptSource();
+  const editor = new Editor(/** @type {HTMLElement} */ (document.getElementById('editor')), {
+    apply: (project, pasted) =>
+      app
+        .setProject(project, { origin: 'editor', name: kept.nameFor(serializeProject(project), pasted), info: app.projectInfo })
+        .catch(() => {}),
+    pasteJson: (text) => {
+      // a Shadertoy export pasted in: that shader, by its own name
+      pastedShader = true;
+      open(text, 'the pasted text', { origin: 'editor', json: true }, (loaded) =>
+        kept.loadedFile({ name: String(loaded.from.name), source: serializeProject(loaded.project) }),
+      );
+    },
+    onToggle: (open) => toolbar.setEditorOpen(open),
+    onChange: (project) => kept.save(serializeProject(project)),
+  });
+
+  // ---- notes on what a loaded shader cannot have ----------------------------------------------
+
+  /** What the note says now ('' for nothing). */
+  let notesShown = '';
+  /** A shader pasted into the editor is a new one: its notes show even if the last one had the same. */
+  let pastedShader = false;
+  const showNotes = () => {
+    const lines = [...new Set([...app.notes, ...shaderNotes(app.project)])];
+    const key = lines.join('\n');
+    // an edit of the same shader: said already (and maybe closed)
+    if (key === notesShown && app.origin === 'editor' && !pastedShader) return;
+    notesShown = key;
+    pastedShader = false;
+    showLoadNotes(stage, `${app.fileName} runs without some of what it asks for`, lines);
+  };
+
+  /**
+   * Opens a shader's text (io/open-shader.js); a text that cannot be read is said in a note. A
+   * compile error is the overlay's.
+   * @param {string} text
+   * @param {string} what what it is, in the message
+   * @param {import('../io/open-shader.js').ShaderFrom} from
+   * @param {(loaded: ReturnType<typeof import('../io/open-shader.js').readShader>) => void} [onRead] called before it runs
+   */
+  const open = (text, what, from, onRead = () => {}) => {
+    let opened;
+    try {
+      opened = openShader(app, text, from, onRead);
+    } catch (error) {
+      console.warn(`${what}: ${error.message}`);
+      notesShown = '\u0000error'; // goes with the next shader loaded
+      showLoadNotes(stage, `Could not load ${what}`, [error.message], 'error');
+      toast(`Could not load ${what}`);
+      return false;
+    }
+    opened.running.catch(() => {}); // a compile error: the overlay says it
+    return true;
+  };
+
+  const showState = () => {
+    toolbar.update({ playing: app.inputs.playing, time: app.inputs.time, speed: app.inputs.speed, name: app.fileName });
+  };
+  let shownAt = 0;
+  app.on('state', () => {
+    panel.setConverging(app.converge.on, app.converge.available);
+    panel.sync(app.values);
+    panel.setChannelSizes(app.channels.sizes());
+    showState();
+  });
+  app.on('drawn', (_, frame) => {
+    toolbar.readout.drawn(frame);
+    const now = performance.now();
+    if (now - shownAt > 100) {
+      shownAt = now;
+      showState();
+    }
+  });
+  app.on('source', () => {
+    if (app.origin !== 'editor') kept.loadedFile({ name: app.fileName, source: serializeProject(app.project) });
+    panel.setControls(app.controls, app.values);
+    panel.setConverging(app.converge.on, app.converge.available);
+    editor.setProject(app.project, app.fileName);
+    showNotes();
+    document.title = `${app.fileName} · Shadertoy runner`;
+    showState();
+  });
+  app.on('compile', () => {
+    editor.setErrors(app.compiles.errors);
+    showState(); // a paused restart or time change shows once drawn
+  });
+  showState();
+
+  // ---- keys ----------------------------------------------------------------------------------
+
+  installShortcuts({ Space: () => app.togglePlay(), KeyR: () => app.restart(), KeyF: () => actions.toggleFullscreen() });
+  // a key redraws only a shader that reads the keyboard (any other has nothing new to show)
+  watchKeyboard(app.keyboard, () => app.readsKeyboard && app.frames.request());
+  document.addEventListener('fullscreenchange', () => toolbar.setFullscreen(document.fullscreenElement !== null));
+
+  // ---- drag and drop -------------------------------------------------------------------------
+
+  const dropHint = /** @type {HTMLElement} */ (document.getElementById('drop-hint'));
+  let dragDepth = 0;
+  const hasFiles = (event) => [...(event.dataTransfer?.types ?? [])].includes('Files');
+  document.addEventListener('dragenter', (event) => {
+    if (!hasFiles(event)) return;
+    event.preventDefault();
+    dragDepth++;
+    dropHint.hidden = false;
+  });
+  document.addEventListener('dragover', (event) => {
+    if (!hasFiles(event)) return;
+    event.preventDefault();
+    event.dataTransfer.dropEffect = 'copy';
+  });
+  document.addEventListener('dragleave', () => {
+    if (--dragDepth <= 0) {
+      dragDepth = 0;
+      dropHint.hidden = true;
+    }
+  });
+  document.addEventListener('drop', async (event) => {
+    if (!hasFiles(event)) return;
+    event.preventDefault();
+    dragDepth = 0;
+    dropHint.hidden = true;
+    const file = event.dataTransfer.files[0];
+    if (!file) return;
+    const kind = droppedKind(file);
+    if (kind === 'image') {
+      await app.setChannel(0, file).then(
+        () => toast(`Loaded ${file.name} into iChannel0`),
+        (error) => toast(error.message),
+      );
+    } else if (kind === 'shader' || kind === 'json') {
+      if (open(await file.text(), file.name, { name: file.name, origin: 'file', json: kind === 'json' })) toast(`Running ${file.name}`);
+    } else {
+      toast(`${file.name} is neither a shader (.glsl, Shadertoy's .json) nor an image`);
+    }
+  });
+
+  /** The link that reproduces this view (share-link.js). */
+  const shareUrl = async () => (await shareLink(app)).url;
+  return { toast, toolbar, panel, editor, kept, actions, shareUrl, recording, open };
+}
