@@ -24,7 +24,7 @@
 #define TEXTURE 0                                      // ui: Ground texture | Stripes, Checkerboard
 #define TEXTURE_FILTER 1                               // ui: Filter texture over pixel footprint | toggle
 const vec3  CAMERA_TARGET = vec3(0.0, 0.6, 0.0);       // ui: Camera target | -5 .. 5
-const vec2  CAMERA_ORBIT = vec2(30.0, 18.0);           // ui: Camera azimuth, elevation (deg) | -90 .. 90
+const vec2  CAMERA_ORBIT = vec2(30.0, 18.0);           // ui: Camera orbit (deg) | azimuth -180 .. 180, elevation -89 .. 90
 const float CAMERA_DISTANCE = 6.5;                     // ui: Camera distance | 0.1 .. 2000
 const float FIELD_OF_VIEW = 45.0;                      // ui: Vertical field of view (deg) | 0.01 .. 120
 const float ORBIT_SPEED = 4.0;                         // ui: Orbit speed (deg/s) | -30 .. 30
@@ -266,19 +266,42 @@ Hit nearer(Hit hit, vec4 h, int id) {
     return Hit(take ? h.x : hit.t, mix(hit.n, h.yzw, bvec3(take)), take ? id : hit.id);
 }
 
+// The largest of a vector's components in magnitude: the scale of the rounding in a position.
+float maxAbs(vec3 v) {
+    return max(max(abs(v.x), abs(v.y)), abs(v.z));
+}
+
+// How far from the ground's plane (in units of float32's unit roundoff times the size of the
+// numbers involved) a hit point may lie and still be in that plane. An intersector puts its hit
+// within about K u S of its surface, S the distance from the ray's origin plus the object's
+// size (tests/intersectors.test.js holds them to K = 32; the height of a point on a face is off
+// by that however grazing the ray, as the error in t runs along the ray); the plane's own height
+// is off by u |w|. Twice that, so that both sides of a tie land in the band.
+const float GROUND_BAND_ULPS = 64.0;
+
 // The one scene walk, for every ray: the nearest hit with 0 < t < tMax. An eye or reflection
 // ray passes tMax = T_MAX; a shadow ray passes the light's distance, and is blocked when the
 // walk finds anything ("any hit before the light" is "a nearest hit before the light": the
 // same answer, and one copy of the intersector code). Each object is asked only for hits
 // nearer than the best so far. skipId is the convex solid the ray is leaving: it cannot be hit
 // again, so its range is empty (tMax 0).
+//
+// A surface that lies in the ground's own plane (the cone's base and the cube's bottom, at the
+// default controls) is the ground, whatever the rounding: otherwise the nearer of the two is
+// decided by the last bits of two different computations, and from below the ground (the eye
+// under it) the cone's and the cube's colours show through in speckles. So a hit whose point is
+// within the rounding band of the ground's plane, on a ray that meets the ground, is the
+// ground's (the float64 reference decides it the same way).
 Hit traceScene(Scene s, vec3 ro, vec3 rd, int skipId, float tMax) {
-    Hit hit = Hit(tMax, vec3(0.0), ID_NONE);
-    hit = nearer(hit, intersectPlane(ro, rd, s.ground, skipId == ID_GROUND ? 0.0 : hit.t), ID_GROUND);
+    vec4 ground = intersectPlane(ro, rd, s.ground, skipId == ID_GROUND ? 0.0 : tMax);
+    Hit hit = nearer(Hit(tMax, vec3(0.0), ID_NONE), ground, ID_GROUND);
     hit = nearer(hit, intersectSphere(ro, rd, s.sphereCenter, s.sphereRadius, skipId == ID_SPHERE ? 0.0 : hit.t), ID_SPHERE);
     hit = nearer(hit, intersectBox(ro, rd, s.cubeCenter, s.cubeHalfSize, skipId == ID_CUBE ? 0.0 : hit.t), ID_CUBE);
     hit = nearer(hit, intersectCone(ro, rd, s.cone, skipId == ID_CONE ? 0.0 : hit.t), ID_CONE);
-    return hit;
+    float height = dot(s.ground.xyz, ro + hit.t * rd) + s.ground.w;
+    float band = GROUND_BAND_ULPS * EPS32 * (hit.t + maxAbs(ro) + abs(s.ground.w));
+    bool inGroundPlane = all(bvec3(ground.x > 0.0, hit.id != ID_GROUND, abs(height) <= band));
+    return nearer(hit, mix(MISS, ground, bvec4(inGroundPlane)), ID_GROUND);
 }
 
 // ---- materials and texture -------------------------------------------------------------------
@@ -413,8 +436,7 @@ vec3 reprojectOnSurface(Scene s, vec3 p, vec3 n, int id) {
 // Tracing Gems ch. 6, whose constants these are). An ulp of x is 2 EPS32 |x| or less. Only used
 // for rays that start inside a solid, which may hit the same solid again.
 vec3 offsetAlong(vec3 p, vec3 n) {
-    float largest = max(max(abs(p.x), abs(p.y)), abs(p.z));
-    return p + n * max(1.0 / 65536.0, 256.0 * 2.0 * EPS32 * largest);
+    return p + n * max(1.0 / 65536.0, 256.0 * 2.0 * EPS32 * maxAbs(p));
 }
 
 // The cone's radius at a height above its base (0 above the apex).

@@ -1,4 +1,6 @@
 import { describe, expect, test } from 'vitest';
+import fs from 'node:fs';
+import { SHADER_FILE } from './harness/config.js';
 import { ControlBlockError, coerceControlValue, controlDefaults, parseControls } from '../src/shadertoy/controls.js';
 
 const BLOCK = `// a shader
@@ -131,5 +133,33 @@ describe('coerceControlValue', () => {
     ['COUNT', '3.4', 3],
   ])('%s ← %j is %j', (name, value, expected) => {
     expect(coerceControlValue(byName[name], value)).toEqual(expected);
+  });
+});
+
+// Issue 18: the orbit's azimuth was clamped to ±90° (one range for both angles), so the scene
+// could not be seen from behind, and its fields were "x" and "y".
+describe('a vector whose components have names and ranges of their own', () => {
+  const source = fs.readFileSync(SHADER_FILE, 'utf8');
+  const orbit = parseControls(source).find((c) => c.name === 'CAMERA_ORBIT');
+
+  test("the raytracer's orbit: azimuth -180 .. 180, elevation -89 .. 90", () => {
+    expect(orbit.components).toEqual([
+      { name: 'azimuth', min: -180, max: 180 },
+      { name: 'elevation', min: -89, max: 90 },
+    ]);
+    expect(coerceControlValue(orbit, [170, 50]), 'from behind').toEqual([170, 50]);
+    expect(coerceControlValue(orbit, '-200,-95'), 'each clamped to its own range').toEqual([-180, -89]);
+  });
+
+  test('named ranges must name every component, and each range must be a range', () => {
+    const line = (spec) => `#ifndef HOST_CONTROLS\nconst vec3 P = vec3(0); // ui: P | ${spec}\n#endif\n`;
+    expect(() => parseControls(line('a 0 .. 1, b 0 .. 1'))).toThrow(ControlBlockError);
+    expect(() => parseControls(line('a 0 .. 1, b 2 .. 1, c 0 .. 1'))).toThrow(/empty/);
+    expect(parseControls(line('a 0 .. 1, b -1 .. 1 step 0.5, c 0 .. 2'))[0].components[1]).toEqual({
+      name: 'b',
+      min: -1,
+      max: 1,
+      step: 0.5,
+    });
   });
 });

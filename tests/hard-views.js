@@ -72,6 +72,11 @@ export const HARD_VIEWS = [
     params: { time: 0, SPHERE_CENTER: [-0.5, 0.8, -1.1], SPHERE_REFLECTIVITY: 0.9, CUBE_REFLECTIVITY: 0.9, BOUNCES: 4 },
   },
   {
+    name: 'below-ground',
+    what: "the eye under the ground: the cone's base and the cube's bottom lie in the ground's plane, and which is nearer is decided by rounding unless the ground wins the tie",
+    params: { time: 0, CAMERA_ORBIT: [30, -20] },
+  },
+  {
     name: 'grazing-light',
     what: 'a light 0.3 above the ground and far to the side (shadow rays nearly parallel to the ground: acne territory)',
     params: { time: 0, LIGHT_POSITION: [-10, 0.3, 2] },

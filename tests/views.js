@@ -56,6 +56,9 @@ export const VIEWS = [
   { name: 'one-sample', params: { time: 0, SAMPLES: 1 } },
   // ... and which pixels take the grid (magenta), over the picture in grey.
   { name: 'aa-pixels', params: { time: 0, SHOW_AA_PIXELS: 1 } },
+  // The eye under the ground: its underside, plain, where the cone's base and the cube's bottom
+  // lie in its plane (they used to show through in speckles: issue 18).
+  { name: 'below-ground', params: { time: 0, CAMERA_ORBIT: [30, -20] } },
 ];
 
 // ------------------------------------------------------------------------------------------------

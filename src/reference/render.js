@@ -64,14 +64,26 @@ function makeScene(s) {
     [ID_CONE, (ro, rd) => intersectCone(ro, rd, s.CONE_BASE, coneApex, s.CONE_RADIUS, 0)],
   ];
 
-  function trace(ro, rd, skipId) {
+  /**
+   * The nearest hit from ro along rd, leaving out skipId. A hit whose point lies within the
+   * shader's rounding band of the ground's plane, on a ray that meets the ground, is the ground's
+   * (traceScene in the shader: a surface in the ground's plane is the ground, whatever the
+   * rounding). The band is the shader's float32 one, in the shader's eye-relative terms.
+   */
+  function trace(ro, rd, skipId, eye) {
     let best = null;
+    let ground = null;
     for (const [id, intersect] of objects) {
       if (id === skipId) continue;
       const h = intersect(ro, rd);
+      if (id === ID_GROUND && h[0] > 0) ground = { t: h[0], n: [h[1], h[2], h[3]], id };
       if (h[0] > 0 && (!best || h[0] < best.t)) best = { t: h[0], n: [h[1], h[2], h[3]], id };
     }
-    return best;
+    if (!ground || best.id === ID_GROUND) return best;
+    const fromEye = sub(ro, eye);
+    const height = ro[1] + best.t * rd[1];
+    const band = s.GROUND_BAND_ULPS * s.EPS32 * (best.t + Math.max(...fromEye.map(Math.abs)) + Math.abs(eye[1]));
+    return Math.abs(height) <= band ? ground : best;
   }
 
   function occluded(ro, rd, lightDist, skipId) {
@@ -121,7 +133,7 @@ function makeScene(s) {
     let coneWidth = 0;
     let skipId = ID_NONE;
     for (let bounce = 0; bounce <= s.BOUNCES; bounce++) {
-      const hit = trace(ro, rd, skipId);
+      const hit = trace(ro, rd, skipId, eye);
       if (!hit) return addScaled(color, mix(s.SKY_HORIZON, s.SKY_ZENITH, Math.min(Math.max(rd[1], 0), 1)), throughput);
       const { t, n, id } = hit;
       const inside = dot(rd, n) > 0;

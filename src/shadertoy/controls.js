@@ -19,7 +19,8 @@
 //
 // After `// ui:` comes the label, then `|` and the range: `min .. max` (optionally `step s`),
 // `toggle` (0 or 1), or a comma list of choices (numbers are the values themselves; words are
-// labels whose values are 0, 1, 2, ...).
+// labels whose values are 0, 1, 2, ...). A vector may name each component and give it a range
+// of its own: `// ui: Camera orbit (deg) | azimuth -180 .. 180, elevation -89 .. 90`.
 
 import { HOST_CONTROLS_MACRO } from './header.js';
 
@@ -41,6 +42,8 @@ const CONST_LINE = new RegExp(String.raw`^\s*const\s+(float|int|bool|vec2|vec3|v
  * @property {number} [step]
  * @property {boolean} [toggle] shown as a checkbox (0 or 1)
  * @property {Array<{label: string, value: number}>} [options] a list of choices
+ * @property {Array<{name: string, min: number, max: number, step?: number}>} [components] a
+ *   vector's components, each named and with a range of its own
  * @property {number} [line] the 1-based line of the shader that declares it
  */
 
@@ -74,22 +77,39 @@ function parseValue(type, text, line) {
   return parts;
 }
 
-/** Parses the `label | range` annotation after `// ui:`. */
-function parseAnnotation(text, line) {
+const RANGE = String.raw`(${NUMBER})\s*\.\.\s*(${NUMBER})(?:\s+step\s+(${NUMBER}))?`;
+
+/** A `min .. max [step s]` range, or null. */
+function parseRange(spec, line) {
+  const range = spec.match(new RegExp(`^${RANGE}$`));
+  if (!range) return null;
+  const min = Number(range[1]);
+  const max = Number(range[2]);
+  if (!(min < max)) throw new ControlBlockError(`range ${spec} is empty`, line);
+  return { min, max, ...(range[3] !== undefined ? { step: Number(range[3]) } : {}) };
+}
+
+/**
+ * Parses the `label | range` annotation after `// ui:`.
+ * @param {string} text
+ * @param {number} line
+ * @param {number} size how many components the control has
+ */
+function parseAnnotation(text, line, size) {
   const bar = text.indexOf('|');
   const label = (bar < 0 ? text : text.slice(0, bar)).trim();
   const spec = bar < 0 ? '' : text.slice(bar + 1).trim();
   if (!label) throw new ControlBlockError('control has no label after "// ui:"', line);
   if (spec === '') return { label };
   if (spec === 'toggle') return { label, toggle: true, min: 0, max: 1, step: 1 };
-  const range = spec.match(new RegExp(String.raw`^(${NUMBER})\s*\.\.\s*(${NUMBER})(?:\s+step\s+(${NUMBER}))?$`));
-  if (range) {
-    const min = Number(range[1]);
-    const max = Number(range[2]);
-    if (!(min < max)) throw new ControlBlockError(`range ${spec} is empty`, line);
-    return { label, min, max, ...(range[3] !== undefined ? { step: Number(range[3]) } : {}) };
-  }
+  const range = parseRange(spec, line);
+  if (range) return { label, ...range };
   const items = spec.split(',').map((s) => s.trim());
+  const named = items.map((item) => item.match(/^([A-Za-z]\w*)\s+(.+)$/));
+  if (size > 1 && named.every((m) => m && parseRange(m[2], line))) {
+    if (items.length !== size) throw new ControlBlockError(`${items.length} named ranges for ${size} components`, line);
+    return { label, components: named.map((m) => ({ name: m[1], ...parseRange(m[2], line) })) };
+  }
   if (items.length < 2 || items.some((s) => s === '')) throw new ControlBlockError(`cannot read range "${spec}"`, line);
   const numeric = items.every((s) => new RegExp(`^${NUMBER}$`).test(s));
   const options = items.map((s, i) => ({ label: s, value: numeric ? Number(s) : i }));
@@ -125,7 +145,13 @@ export function parseControls(source) {
     if (define) {
       const value = Number(define[2]);
       const isInt = /^[-+]?\d+$/.test(define[2]);
-      control = { name: define[1], kind: 'define', type: isInt ? 'int' : 'float', default: value, ...parseAnnotation(define[3], lineNo) };
+      control = {
+        name: define[1],
+        kind: 'define',
+        type: isInt ? 'int' : 'float',
+        default: value,
+        ...parseAnnotation(define[3], lineNo, 1),
+      };
     } else if (constant) {
       const [, type, name, value, annotation] = constant;
       control = {
@@ -133,7 +159,7 @@ export function parseControls(source) {
         kind: 'uniform',
         type: /** @type {Control['type']} */ (type),
         default: parseValue(type, value, lineNo),
-        ...parseAnnotation(annotation, lineNo),
+        ...parseAnnotation(annotation, lineNo, VECTOR_SIZES[type]),
       };
     } else {
       throw new ControlBlockError(
@@ -168,7 +194,8 @@ export function controlDefaults(controls) {
  */
 export function coerceControlValue(control, value) {
   const size = VECTOR_SIZES[control.type];
-  const one = (v) => {
+  /** @param {unknown} v @param {{min?: number, max?: number}} range */
+  const one = (v, range = control) => {
     if (control.type === 'bool') {
       if (v === true || v === 'true' || v === 1 || v === '1') return true;
       if (v === false || v === 'false' || v === 0 || v === '0') return false;
@@ -180,14 +207,14 @@ export function coerceControlValue(control, value) {
       const values = control.options.map((o) => o.value);
       return values.reduce((best, x) => (Math.abs(x - n) < Math.abs(best - n) ? x : best), values[0]);
     }
-    if (control.min !== undefined) n = Math.min(control.max, Math.max(control.min, n));
+    if (range.min !== undefined) n = Math.min(range.max, Math.max(range.min, n));
     if (control.type === 'int') n = Math.round(n);
     return n;
   };
   if (size === 1) return one(Array.isArray(value) ? value[0] : value);
   const parts = Array.isArray(value) ? value : String(value).split(',');
   if (parts.length !== size) return undefined;
-  const out = parts.map(one);
+  const out = parts.map((v, i) => one(v, control.components?.[i] ?? control));
   return out.some((v) => v === undefined) ? undefined : out;
 }
 

@@ -152,12 +152,14 @@ export class Panel {
     if (size) {
       const sub = folder.addFolder(c.label).close(); // keeps the panel short; click to open
       this._view[c.name] = {};
-      for (const axis of COMPONENTS.slice(0, size)) {
+      COMPONENTS.slice(0, size).forEach((axis, i) => {
+        // a component with a name and range of its own (controls.js), else x, y, z, w in the vector's range
+        const component = c.components?.[i];
         this._view[c.name][axis] = 0;
-        listen(this._numberWidget(sub, this._view[c.name], axis, c).name(axis), () =>
+        listen(this._numberWidget(sub, this._view[c.name], axis, component ?? c).name(component?.name ?? axis), () =>
           COMPONENTS.slice(0, size).map((a) => this._view[c.name][a]),
         );
-      }
+      });
       return;
     }
     if (c.options) {
@@ -175,10 +177,14 @@ export class Panel {
     }
   }
 
-  _numberWidget(gui, object, property, c) {
-    const controller = c.min !== undefined ? gui.add(object, property, c.min, c.max, c.step) : gui.add(object, property);
-    if (c.type === 'int') controller.step(1);
-    else if (c.step !== undefined) controller.step(c.step);
+  /**
+   * A slider (or a number field, without a range) for one number.
+   * @param {{min?: number, max?: number, step?: number, type?: string}} range the control's, or its component's
+   */
+  _numberWidget(gui, object, property, range) {
+    const controller = range.min !== undefined ? gui.add(object, property, range.min, range.max, range.step) : gui.add(object, property);
+    if (range.type === 'int') controller.step(1);
+    else if (range.step !== undefined) controller.step(range.step);
     return controller;
   }
 }
