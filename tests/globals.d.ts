@@ -80,6 +80,7 @@ export interface RaytracerHook {
   setSpeed(speed: number): void;
   /** iMouse [x, y, z, w] in device pixels, until the next click */
   setMouse(mouse: number[]): void;
+  resetView(): void;
   /** The next frame the page draws by itself, and its iFrame. Asks for no frame. */
   nextFrame(): Promise<Base64Frame & { iFrame: number }>;
   /** The render worker's WebGL context lost / restored through WEBGL_lose_context. */

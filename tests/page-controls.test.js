@@ -98,7 +98,7 @@ describe('time', () => {
       });
       expect(drawn).toBeGreaterThan(10);
       await (await button(page, 'Pause')).click();
-      expect(await page.$eval('#toolbar .fps', (e) => e.textContent)).toBe('paused');
+      expect(await page.$eval('#toolbar .fps', (e) => e.textContent)).toBe('Paused');
     });
   });
 });

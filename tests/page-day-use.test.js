@@ -4,7 +4,7 @@
 // and carrying an edited shader in its fragment; a refused ?shader= said on the page; Fullscreen.
 import { afterAll, describe, expect, test } from 'vitest';
 import { disconnect, openPage } from './harness/page.js';
-import { button, overlayText, pixel, readPixels, solid, withPage } from './page-helpers.js';
+import { button, overlayText, pixel, readPixels, recordReadouts, solid, withPage } from './page-helpers.js';
 
 afterAll(disconnect);
 
@@ -213,26 +213,7 @@ describe('the frame-time readout', () => {
     // the real clock (no deterministic injection): what is measured is the browser's real speed
     const { page, errors, context } = await openPage({ deterministic: false });
     try {
-      // Each time the readout changes, the frame rate the page really reached: from when it drew
-      // each frame (the canvas's data-frame attribute), over the two seconds up to the last one.
-      await page.evaluateOnNewDocument(() => {
-        /** @type {number[]} */
-        const drawnAt = [];
-        /** @type {Array<[string, number, number]>} */
-        const samples = [];
-        /** @type {any} */ (window).__readouts = samples;
-        new MutationObserver((records) => {
-          for (const record of records) {
-            if (record.type === 'attributes') drawnAt.push(performance.now());
-            else if (record.target instanceof Element && record.target.matches('#toolbar .fps')) {
-              const last = drawnAt[drawnAt.length - 1];
-              const recent = drawnAt.filter((x) => last - x <= 2000);
-              const fps = recent.length < 2 ? 0 : ((recent.length - 1) * 1000) / (last - recent[0]);
-              samples.push([record.target.textContent, fps, last - drawnAt[0]]);
-            }
-          }
-        }).observe(document, { subtree: true, childList: true, attributeFilter: ['data-frame'] });
-      });
+      await recordReadouts(page);
       await page.goto(`${context.baseUrl}/?size=640x360&SAMPLES=4`, { waitUntil: 'load' });
       await page.waitForFunction(() => window.raytracer, { polling: 50 });
       await page.evaluate(() => window.raytracer.ready);

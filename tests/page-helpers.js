@@ -289,3 +289,31 @@ export async function waitForCursorLine(page, line) {
     .catch(() => {});
   return cursorLine(page);
 }
+
+/**
+ * Records, from the page's start, each line the frame-time readout shows, in window.__readouts as
+ * [text, the frame rate the page really reached then, ms since its first frame]: the rate from
+ * when it drew each frame (the canvas's data-frame attribute), over the two seconds up to the
+ * last one. Call before the page loads.
+ * @param {import('puppeteer-core').Page} page
+ */
+export async function recordReadouts(page) {
+  await page.evaluateOnNewDocument(() => {
+    /** @type {number[]} */
+    const drawnAt = [];
+    /** @type {Array<[string, number, number]>} */
+    const samples = [];
+    /** @type {any} */ (window).__readouts = samples;
+    new MutationObserver((records) => {
+      for (const record of records) {
+        if (record.type === 'attributes') drawnAt.push(performance.now());
+        else if (record.target instanceof Element && record.target.matches('#toolbar .fps')) {
+          const last = drawnAt[drawnAt.length - 1] ?? 0;
+          const recent = drawnAt.filter((x) => last - x <= 2000);
+          const fps = recent.length < 2 ? 0 : ((recent.length - 1) * 1000) / (last - recent[0]);
+          samples.push([record.target.textContent, fps, drawnAt.length ? last - drawnAt[0] : -1]);
+        }
+      }
+    }).observe(document, { subtree: true, childList: true, attributeFilter: ['data-frame'] });
+  });
+}

@@ -117,7 +117,9 @@ describe('the editor', () => {
         expect(alert).toContain('notDeclaredAnywhere');
         expect(alert).toContain(broken.error);
         expect(alert).toContain('still showing the last version that compiled');
-        await page.$eval('.cm-scroller', (s) => s.scrollTo(0, 0)); // the paste left it at the end
+        // the paste left it at the end; unwrapped, line `line` is on the first screen
+        await (await button(page, 'Wrap')).click();
+        await page.$eval('.cm-scroller', (s) => s.scrollTo(0, 0));
         await expect.poll(() => errorMarkerLines(page)).toContain(line);
         expect(sameImage(await readPixels(page), before), 'the previous image stays').toBe(true);
 

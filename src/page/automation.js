@@ -16,7 +16,8 @@
 //                         Shadertoy's JSON export (an object or its text).
 //   setConverging(on, {frames}?)  Promise: "Converge when still" on or off (app.setConverging):
 //                         frames: how many still frames to draw (default 4096).
-//   play(), pause(), togglePlay(), restart(), setTime(seconds), setSpeed(s), setMouse([x, y, z, w])
+//   play(), pause(), togglePlay(), restart(), setTime(seconds), setSpeed(s), setMouse([x, y, z, w]),
+//   resetView()          iMouse back to how the page opened (the toolbar's "Reset view")
 //   nextFrame()           Promise<{width, height, data, iFrame}>: the next frame the page draws by
 //                         itself (after a click, a key, a play tick), read back; rows top to
 //                         bottom. Asks for no frame.
@@ -130,6 +131,7 @@ export function installAutomation(app, ready, ui) {
     setTime: (seconds) => app.setTime(seconds),
     setSpeed: (speed) => app.setSpeed(speed),
     setMouse: (mouse) => app.setMouse(mouse),
+    resetView: () => app.resetView(),
 
     // read in the same task as the frame was drawn (no preserveDrawingBuffer)
     async nextFrame() {
@@ -231,6 +233,7 @@ export function installFailedAutomation(error) {
     setTime() {},
     setSpeed() {},
     setMouse() {},
+    resetView() {},
     info: () => ({ error: error.message }),
   };
 }

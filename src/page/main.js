@@ -7,7 +7,7 @@ import { RaytracerApp } from './app/app.js';
 import { installAutomation, installFailedAutomation } from './automation.js';
 import { Overlay } from './ui/overlay.js';
 import { installUi } from './ui/ui.js';
-import { showAppOnPage, showRestoredNote, showStartupFailure } from './ui/notices.js';
+import { showAppOnPage, showKeptOffer, showRestoredNote, showStartupFailure, showValueNotes } from './ui/notices.js';
 import { CHANNEL_PARAMS, parseUrlParams } from './io/url-params.js';
 import { fetchShader, shaderName } from './io/shader-loader.js';
 import { HangGuard, watchHangs } from './io/hang-guard.js';
@@ -31,6 +31,27 @@ const BUILTIN_NAME = 'shaders/raytrace.glsl';
 const builtin = (notice) => ({ project: singlePass(builtinSource), from: { name: BUILTIN_NAME, origin: 'builtin' }, notice });
 
 /**
+ * The shader a link carries in its fragment (#source=), or the built-in raytracer with a notice
+ * when it cannot be read; null when the fragment holds none.
+ * @param {string} hash
+ * @returns {Promise<FirstSource | null>}
+ */
+async function linkedShader(hash) {
+  try {
+    const shared = await sourceFromHash(hash);
+    if (!shared) return null;
+    const { project, from } = readShader(shared.source, { name: shared.name, origin: 'editor' });
+    return { project, from: { ...from, name: shared.name } };
+  } catch (error) {
+    console.warn(`The shader in the link's #source= could not be read: ${error.message}`);
+    return builtin({
+      title: 'Could not read the shader in this link',
+      detail: `${error.message.startsWith('its ') ? `The link's ${error.message.slice(4)}` : `The link's shader: ${error.message}`}.\nShowing the built-in raytracer (${BUILTIN_NAME}) instead.`,
+    });
+  }
+}
+
+/**
  * The first shader: the one a link carries (#source=), the ?shader= file, or the built-in
  * raytracer (also when those cannot be had or read: then with a notice that says so). A text
  * that is Shadertoy's JSON export (a .json file, or any text that looks like JSON) is read as one.
@@ -38,19 +59,8 @@ const builtin = (notice) => ({ project: singlePass(builtinSource), from: { name:
  * @returns {Promise<FirstSource>}
  */
 async function initialSource(params) {
-  try {
-    const shared = await sourceFromHash(location.hash);
-    if (shared) {
-      const { project, from } = readShader(shared.source, { name: shared.name, origin: 'editor' });
-      return { project, from: { ...from, name: shared.name } };
-    }
-  } catch (error) {
-    console.warn(`The shader in the link's #source= could not be read: ${error.message}`);
-    return builtin({
-      title: 'Could not read the shader in this link',
-      detail: `${error.message}\nShowing the built-in raytracer instead.`,
-    });
-  }
+  const linked = await linkedShader(location.hash);
+  if (linked) return linked;
   if (params.refusedShader) {
     const { url, why } = params.refusedShader;
     return builtin({ title: `Could not load ${url}`, detail: `${why}.\nShowing the built-in raytracer (${BUILTIN_NAME}) instead.` });
@@ -69,22 +79,52 @@ async function initialSource(params) {
   }
 }
 
+/** A console warning as the page's note says it: without the console's "who says". @param {string} warning */
+const plainWarning = (warning) => warning.replace(/^(URL parameter |URL: )/, '');
+
+/** Whether this load is the same page again (a reload, back or forward), not a link opened afresh. */
+function reopened() {
+  const navigation = /** @type {PerformanceNavigationTiming | undefined} */ (performance.getEntriesByType?.('navigation')[0]);
+  return navigation?.type === 'reload' || navigation?.type === 'back_forward';
+}
+
 /**
  * Work is never lost (io/kept-source.js): edits kept for the page's shader (the ?shader= file, the
- * built-in one, or the shader a link carries), every tab of a multipass one, come back, with a
- * note that can discard them.
+ * built-in one, or the shader a link carries), every tab of a multipass one, come back on a
+ * reload, with a note that can discard them. A link opened afresh runs what it names: kept edits
+ * of that shader are set aside and offered, never run in its place.
  * @param {RaytracerApp} app
- * @param {ReturnType<typeof installUi>} ui
+ * @param {{kept: import('./io/kept-source.js').KeptSource}} ui the page's kept edits
  * @param {string | undefined} shader the ?shader= parameter
  * @param {FirstSource} first what the page loaded
  */
-function restoreKeptWork(app, ui, shader, { project, from }) {
+function keptWork(app, ui, shader, { project, from }) {
+  const stage = /** @type {HTMLElement} */ (document.getElementById('stage'));
   const file = { name: from.name, source: serializeProject(project) };
   const kept = ui.kept.open(from.origin === 'editor' ? sharedKey(file) : (shader ?? BUILTIN_NAME), file);
-  if (!kept) return;
-  app.loadProject(deserializeProject(kept.source), { name: kept.name, origin: 'editor', info: from.info ?? null });
-  showRestoredNote(document.getElementById('stage'), kept.name, () => {
-    app.setProject(project, from).catch(() => {});
+  /** @param {{name: string, source: string}} edits */
+  const load = (edits) =>
+    app.loadProject(deserializeProject(edits.source), { name: edits.name, origin: 'editor', info: from.info ?? null });
+  if (kept && reopened()) {
+    load(kept);
+    const note = showRestoredNote(stage, kept.name, () => app.setProject(project, from).catch(() => {}));
+    // the note belongs to the text it restored: once that is edited or replaced, Discard would
+    // throw away what it did not restore
+    const stale = (/** @type {string} */ text) => text !== kept.source && note.remove();
+    ui.kept.watch(stale);
+    app.on('source', () => stale(serializeProject(app.project)));
+    return;
+  }
+  if (kept) ui.kept.setAside();
+  const earlier = ui.kept.earlier();
+  if (!earlier) return;
+  showKeptOffer(stage, earlier.name, {
+    open: () => {
+      ui.kept.forgetEarlier();
+      load(earlier);
+      app.compiles.compile().catch(() => {});
+    },
+    discard: () => ui.kept.forgetEarlier(),
   });
 }
 
@@ -110,6 +150,7 @@ function avoidHungShader(app, notice) {
 async function start() {
   const canvas = /** @type {HTMLCanvasElement} */ (document.getElementById('view'));
   const overlay = new Overlay(document.getElementById('overlay'));
+  const stage = /** @type {HTMLElement} */ (document.getElementById('stage'));
   const params = parseUrlParams(location.search, location.href);
   for (const warning of params.warnings) console.warn(warning);
 
@@ -134,7 +175,7 @@ async function start() {
   const noticeAfterCompile = showAppOnPage(app, overlay);
   if (params.time !== undefined) app.inputs.setTime(params.time);
   if (params.speed !== undefined) app.inputs.setSpeed(params.speed);
-  if (params.mouse) app.inputs.setMouse(params.mouse);
+  if (params.mouse) app.inputs.setMouse(params.mouse, { start: true });
   const ui = installUi(app);
   overlay.onLine = (line, pass) => ui.editor.goToLine(line, pass);
   installAutomation(app, app.ready, ui);
@@ -150,11 +191,22 @@ async function start() {
   app.loading = first.then((loaded) => {
     if (loaded.notice) noticeAfterCompile(loaded.notice);
     app.loadProject(loaded.project, loaded.from);
-    restoreKeptWork(app, ui, params.shader, loaded);
+    keptWork(app, ui, params.shader, loaded);
     avoidHungShader(app, noticeAfterCompile);
-    app.applyControls(params.controls, 'URL');
+    const { warnings } = app.applyControls(params.controls, 'URL');
+    showValueNotes(stage, [...params.warnings, ...warnings].map(plainWarning));
     app.compiles.compile().catch(() => {}); // shown on the page; `ready` rejects
     app.frames.request();
+  });
+  // A second link opened in this tab that differs only in its fragment loads no page: its
+  // #source= is opened here, as a link opened afresh is.
+  window.addEventListener('hashchange', async () => {
+    const linked = await linkedShader(location.hash);
+    if (!linked) return;
+    if (linked.notice) noticeAfterCompile(linked.notice);
+    app.loadProject(linked.project, linked.from);
+    keptWork(app, ui, undefined, linked);
+    app.compiles.compile().catch(() => {});
   });
   return app;
 }

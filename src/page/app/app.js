@@ -215,7 +215,7 @@ export class RaytracerApp extends Emitter {
    * @returns {Promise<void>}
    */
   setControls(changes, from = 'setControls') {
-    const recompile = this.applyControls(changes, from);
+    const { recompile } = this.applyControls(changes, from);
     if (recompile)
       this.compiles.compile().catch(() => {}); // errors are shown on the page
     else this.frames.request();
@@ -223,14 +223,17 @@ export class RaytracerApp extends Emitter {
   }
 
   /**
-   * setControls without drawing or compiling.
+   * setControls without drawing or compiling. Values it cannot use as given are warned about on
+   * the console and returned as `warnings` (what was used instead, and why).
    * @param {Record<string, unknown>} changes
    * @param {string} [from] who asks, in warnings
-   * @returns {boolean} true if a compile-time control changed
+   * @returns {{recompile: boolean, warnings: string[]}} recompile: a compile-time control changed
    */
   applyControls(changes, from = 'setControls') {
     let recompile = false;
-    for (const { control, value } of readControlChanges(this.controls, changes, from)) {
+    const { read, warnings } = readControlChanges(this.controls, changes, from);
+    for (const warning of warnings) console.warn(warning);
+    for (const { control, value } of read) {
       const name = control.name;
       const changed = JSON.stringify(value) !== JSON.stringify(this.values[name]);
       this.values[name] = value;
@@ -243,7 +246,7 @@ export class RaytracerApp extends Emitter {
       }
     }
     this.emit('state');
-    return recompile;
+    return { recompile, warnings };
   }
 
   // ---- time ------------------------------------------------------------------------------------
@@ -283,12 +286,21 @@ export class RaytracerApp extends Emitter {
   /** @param {number} speed */
   setSpeed(speed) {
     this.inputs.setSpeed(Math.max(0, Number(speed) || 0));
+    this.frames.restartInterval(); // the frames before were at another speed (or none, at 0×)
     this.emit('state');
+    this.frames.request();
   }
 
   /** @param {number[]} mouse iMouse, [x, y, z, w] in device pixels, until the next click */
   setMouse(mouse) {
     this.inputs.setMouse(mouse);
+    this.frames.request();
+  }
+
+  /** iMouse back to how the page opened (the raytracer's camera back to its rest view). */
+  resetView() {
+    this.inputs.resetMouse();
+    this.emit('state');
     this.frames.request();
   }
 

@@ -26,33 +26,38 @@ export function carriedOverValues(controls, oldControls, oldValues) {
 
 /**
  * Reads changes ({NAME: value}; vectors as arrays or "x,y,z") against the controls, coerced into
- * range. Unknown names and unreadable values are warned about and left out; a value written as
- * text and brought into range is warned about and kept.
+ * range. Unknown names and unreadable values are left out; a value written as text and brought
+ * into range is kept. Each of those is said in `warnings`: what was used instead, and why.
  * @param {Control[]} controls
  * @param {Record<string, unknown>} changes
  * @param {string} from who asks, in the warnings
- * @returns {Array<{control: Control, value: unknown}>}
+ * @returns {{read: Array<{control: Control, value: unknown}>, warnings: string[]}}
  */
 export function readControlChanges(controls, changes, from) {
   const read = [];
+  const warnings = [];
   for (const [name, raw] of Object.entries(changes)) {
     const control = controls.find((c) => c.name === name);
     if (!control) {
-      console.warn(`${from}: ${name} ignored: no such shader control.`);
+      warnings.push(`${from}: ${name} ignored: the shader has no control of that name.`);
       continue;
     }
     const value = coerceControlValue(control, raw);
+    const shown = (v) => (Array.isArray(v) ? v.join(',') : String(v));
     if (value === undefined) {
-      console.warn(`${from}: ${name}=${JSON.stringify(raw)} ignored: not a valid ${control.type}.`);
+      warnings.push(
+        `${from}: ${name}=${shown(raw)} ignored: not a valid ${control.type}; the shader's value ${shown(control.default)} is used.`,
+      );
       continue;
     }
     if (typeof raw === 'string' && typeof value !== 'boolean') {
       const written = Array.isArray(value) ? raw.split(',').map(Number) : Number(raw);
-      if (JSON.stringify(written) !== JSON.stringify(value)) console.warn(`${from}: ${name}=${raw} is out of range: using ${value}.`);
+      if (JSON.stringify(written) !== JSON.stringify(value))
+        warnings.push(`${from}: ${name}=${raw} is out of range: using ${shown(value)}.`);
     }
     read.push({ control, value });
   }
-  return read;
+  return { read, warnings };
 }
 
 /**

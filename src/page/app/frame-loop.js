@@ -74,9 +74,13 @@ export class FrameLoop {
     if (!this._raf && !this._drawing) this._raf = requestAnimationFrame((now) => this._tick(now));
   }
 
-  /** Whether frames follow one another by themselves: playing, or converging a still view. */
+  /**
+   * Whether frames follow one another by themselves: playing (at a speed above 0: at 0× the
+   * clock stands still, and every frame would be the last one again), or converging a still view.
+   */
   get running() {
-    return this.app.inputs.playing || this.app.converge.wantsFrame(this.stillFrames);
+    const { playing, speed } = this.app.inputs;
+    return (playing && speed > 0) || this.app.converge.wantsFrame(this.stillFrames);
   }
 
   /** @param {number} now */

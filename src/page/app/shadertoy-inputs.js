@@ -41,6 +41,8 @@ export class ShadertoyInputs {
     this._lastNow = null;
     this._mouse = { x: 0, y: 0, clickX: 0, clickY: 0, down: false, clicked: false, pointerId: null };
     this._fixedMouse = null; // from the URL: used as given until the user clicks
+    /** @type {number[] | null} the mouse the page opened with (resetMouse) */
+    this._startMouse = null;
     /** Called when pointer input changes iMouse (the page re-renders if paused). */
     this.onMouseChange = () => {};
   }
@@ -72,9 +74,21 @@ export class ShadertoyInputs {
   /**
    * Fixes iMouse to these four numbers (device pixels) until the next click.
    * @param {number[]} mouse [x, y, z, w]
+   * @param {{start?: boolean}} [options] start: the page opens with it (resetMouse comes back to it)
    */
-  setMouse([x, y, z, w]) {
+  setMouse([x, y, z, w], { start = false } = {}) {
     this._fixedMouse = [x, y, z, w];
+    if (start) this._startMouse = [x, y, z, w];
+  }
+
+  /**
+   * iMouse as the page opened with it (all 0, or the link's mouse=): a click or a drag on the
+   * canvas sets iMouse as Shadertoy does, and for the raytracer that turns the camera; this puts
+   * it back.
+   */
+  resetMouse() {
+    this._mouse = { x: 0, y: 0, clickX: 0, clickY: 0, down: false, clicked: false, pointerId: null };
+    this._fixedMouse = this._startMouse ? this._startMouse.slice() : null;
   }
 
   /**

@@ -1,14 +1,18 @@
 // Work is never lost, and an edited shader has a name of its own.
 //
 // While the editor's text differs from the file the page loads on a reload (the ?shader= file or
-// the built-in raytracer), it is kept in the browser's localStorage under that file's name; on
-// the next load the page restores it, says so in a note with a "Discard" button that goes back
-// to the file. The kept text carries its name: the file it came from marked as edited
-// ("raytrace.glsl (edited)"), or "untitled" after a paste that replaced the whole text.
+// the built-in raytracer), it is kept in the browser's localStorage under that file's name; a
+// reload restores it, with a note whose "Discard" goes back to the file. A link opened afresh
+// opens what it names: edits kept for that file are set aside (a slot of their own, so that new
+// edits do not overwrite them) and offered, never run in its place. The kept text carries its
+// name: the file it came from marked as edited ("raytrace.glsl (edited)"), or "untitled" after a
+// paste that replaced the whole text.
 
 import { editedName } from './file-names.js';
 
 const PREFIX = 'shadertoy-runner.source:';
+/** The slot of edits set aside by a link that named their file (after the file's own key). */
+const EARLIER = ' (earlier)';
 
 /** @typedef {{name: string, source: string}} NamedSource */
 
@@ -35,6 +39,8 @@ export class KeptSource {
     this.base = null;
     /** Whether a paste replaced the whole text since that file was loaded. */
     this.pasted = false;
+    /** @type {Array<(text: string) => void>} */
+    this._watchers = [];
   }
 
   /** @returns {Storage | null} */
@@ -56,17 +62,52 @@ export class KeptSource {
     this.key = PREFIX + key;
     this.pageFile = file;
     this.loadedFile(file);
+    const kept = this._read(this.key);
+    if (!kept || kept.source === file.source) return null;
+    this.pasted = kept.name === 'untitled';
+    return kept;
+  }
+
+  /** @param {string} key @returns {NamedSource | null} */
+  _read(key) {
     try {
-      const kept = JSON.parse(this.storage?.getItem(this.key) ?? 'null');
-      if (kept && typeof kept.source === 'string' && kept.source !== file.source) {
-        const name = typeof kept.name === 'string' ? kept.name : editedName(file.name);
-        this.pasted = name === 'untitled';
-        return { source: kept.source, name };
-      }
+      const kept = JSON.parse(this.storage?.getItem(key) ?? 'null');
+      if (!kept || typeof kept.source !== 'string') return null;
+      return { source: kept.source, name: typeof kept.name === 'string' ? kept.name : editedName(this.pageFile?.name ?? 'shader') };
     } catch (error) {
       console.warn(`Kept shader source unreadable, ignored: ${error.message}`);
+      return null;
     }
-    return null;
+  }
+
+  /** @param {string} key @param {NamedSource | null} value */
+  _write(key, value) {
+    try {
+      if (value) this.storage?.setItem(key, JSON.stringify(value));
+      else this.storage?.removeItem(key);
+    } catch (error) {
+      console.warn(`Could not keep the shader source in the browser's storage: ${error.message}`);
+    }
+  }
+
+  /** The page opened its file, not the edits kept for it: they move to a slot of their own. */
+  setAside() {
+    if (!this.key) return;
+    const kept = this._read(this.key);
+    if (kept) this._write(this.key + EARLIER, kept);
+    this._write(this.key, null);
+    this.pasted = false;
+  }
+
+  /** The edits a link set aside, if any (and different from the page's file). @returns {NamedSource | null} */
+  earlier() {
+    const earlier = this.key ? this._read(this.key + EARLIER) : null;
+    return earlier && earlier.source !== this.pageFile?.source ? earlier : null;
+  }
+
+  /** The edits set aside are taken back into the editor, or thrown away: their slot is emptied. */
+  forgetEarlier() {
+    if (this.key) this._write(this.key + EARLIER, null);
   }
 
   /**
@@ -92,14 +133,16 @@ export class KeptSource {
   /**
    * Keeps the editor's text while it differs from the page's file (forgets it otherwise).
    * @param {string} text
+   * @param {boolean} [pasted] a paste replaced the whole text (it is "untitled" from now on)
    */
-  save(text) {
-    if (!this.key || !this.storage) return;
-    try {
-      if (this.pageFile && text === this.pageFile.source) this.storage.removeItem(this.key);
-      else this.storage.setItem(this.key, JSON.stringify({ name: this.nameFor(text), source: text }));
-    } catch (error) {
-      console.warn(`Could not keep the shader source in the browser's storage: ${error.message}`);
-    }
+  save(text, pasted = false) {
+    if (!this.key) return;
+    this._write(this.key, this.pageFile && text === this.pageFile.source ? null : { name: this.nameFor(text, pasted), source: text });
+    for (const watch of this._watchers) watch(text);
+  }
+
+  /** Calls `onSave(text)` after every save (the restored note goes once its text is edited). @param {(text: string) => void} onSave */
+  watch(onSave) {
+    this._watchers.push(onSave);
   }
 }

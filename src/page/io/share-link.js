@@ -10,6 +10,8 @@
 //
 // The size is pinned (?size=) only when the user fixed one: a window's size is the sender's, and
 // a phone opening a desktop-sized canvas would see it squeezed with Scale and Max size disabled.
+// The time likewise: a link from a playing page opens playing (a feedback shader then runs from
+// its first frame, as the sender's did), one from a paused page at that instant, paused.
 
 import { formatUrlParams } from './url-params.js';
 import { exportJson, serializeProject } from './project-files.js';
@@ -51,9 +53,26 @@ export async function encodeSource(source) {
   return toBase64Url(await pipe(new TextEncoder().encode(source), new CompressionStream('deflate-raw')));
 }
 
-/** The inverse of encodeSource; rejects on anything that is not one. @param {string} encoded */
+/**
+ * The inverse of encodeSource. Rejects, saying what is wrong in words (not the browser's
+ * "Failed to fetch" or atob's exception), on anything that is not one: text that is not
+ * base64url, or data that does not inflate to UTF-8 (most often a link cut short).
+ * @param {string} encoded
+ */
 export async function decodeSource(encoded) {
-  return new TextDecoder('utf-8', { fatal: true }).decode(await pipe(fromBase64Url(encoded), new DecompressionStream('deflate-raw')));
+  let bytes;
+  try {
+    bytes = fromBase64Url(encoded);
+  } catch (error) {
+    throw new Error('its #source= is not a shader this page wrote (it is not base64url text)', { cause: error });
+  }
+  try {
+    return new TextDecoder('utf-8', { fatal: true }).decode(await pipe(bytes, new DecompressionStream('deflate-raw')));
+  } catch (error) {
+    throw new Error(`its #source= does not unpack to a shader: the link is cut short or damaged (${encoded.length} characters)`, {
+      cause: error,
+    });
+  }
 }
 
 /**
@@ -79,7 +98,8 @@ export async function shareLink(app) {
   const query = formatUrlParams({
     shader: app.origin === 'url' ? app.shaderUrl : null,
     size: app.canvasSize.fixed,
-    time: app.inputs.time,
+    // a playing page's link plays; a paused one (the user fixed the time) shows that instant
+    time: app.inputs.playing ? null : app.inputs.time,
     mouse: app.inputs.mouse(),
     speed: app.inputs.speed,
     channels: app.channels.urls,

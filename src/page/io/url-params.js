@@ -19,7 +19,7 @@
 // them against the shader's controls (coerceControlValue), as it does for the panel and the
 // automation hook. formatUrlParams writes the same contract back (the "Copy link" button).
 
-import { MAX_SCALE, MAX_SIZE, MIN_SCALE, clampSize } from '../app/canvas-size.js';
+import { MAX_PIXELS, MAX_SCALE, MAX_SIZE, MIN_SCALE, clampSize } from '../app/canvas-size.js';
 
 /** The smallest cap= that caps; cap=0 means no cap, as the panel's "No cap". */
 export const MIN_CAP = 16;
@@ -49,6 +49,17 @@ export function sameOriginUrl(value, base) {
   return { url: url.href };
 }
 
+/** What the page does instead of a page parameter it cannot read (said with the warning). */
+const INSTEAD = {
+  time: 'the clock runs from 0',
+  mouse: 'iMouse is 0,0,0,0',
+  size: 'the canvas follows the window',
+  scale: 'the scale is 1',
+  cap: 'no cap',
+  speed: 'the speed is 1',
+  shader: 'the built-in raytracer runs',
+};
+
 /**
  * A name GLSL ES 3.00 keeps for itself (section 3.7: `gl_` prefixes, and any name with two
  * underscores in a row), so no shader control can have it. `__proto__` is one of them: as a key
@@ -67,7 +78,10 @@ export function parseUrlParams(search, base = 'http://localhost/') {
   /** @type {Record<string, string>} no prototype: any name is just a key (`constructor`, `toString`) */
   const controls = Object.create(null);
   const out = { controls, channels: [], warnings: [] };
-  const warn = (key, value, why) => out.warnings.push(`URL parameter ${key}=${value} ignored: ${why}`);
+  const warn = (key, value, why) => {
+    const instead = INSTEAD[key] ?? (CHANNEL_PARAMS.includes(key) ? 'the channel is black' : '');
+    out.warnings.push(`URL parameter ${key}=${value} ignored: ${why}${instead ? `; ${instead}` : ''}`);
+  };
   const clamped = (key, value, used) => out.warnings.push(`URL parameter ${key}=${value} is out of range: using ${used}`);
   const number = (key, value, min, max, what) => {
     const n = finiteNumbers(value);
@@ -102,7 +116,8 @@ export function parseUrlParams(search, base = 'http://localhost/') {
       const [width, height] = m ? [Number(m[1]), Number(m[2])] : [0, 0];
       if (width >= 1 && height >= 1) {
         const size = clampSize({ width, height });
-        if (size.width !== width || size.height !== height) clamped(key, value, `${size.width}x${size.height}`);
+        if (size.width !== width || size.height !== height)
+          clamped(key, value, `${size.width}x${size.height} (at most ${MAX_SIZE} px a side and ${MAX_PIXELS / 1e6} megapixels)`);
         out.size = size;
       } else warn(key, value, `expected WxH, whole device pixels of at least 1`);
     } else if (key === 'scale') {
@@ -145,7 +160,7 @@ function formatNumber(v) {
  * @param {object} state
  * @param {string} [state.shader] the shader's URL as the page was given it (omitted: built-in)
  * @param {{width:number, height:number} | null} [state.size] a fixed drawing buffer, device pixels (omitted: the window's)
- * @param {number} state.time
+ * @param {number | null} [state.time] a fixed time (omitted: the link plays, from 0)
  * @param {number[]} [state.mouse] iMouse; omitted when all zero
  * @param {number} [state.speed] omitted when 1
  * @param {(string|undefined)[]} [state.channels] image URLs
@@ -155,7 +170,7 @@ export function formatUrlParams({ shader, size, time, mouse, speed = 1, channels
   const query = new URLSearchParams();
   if (shader) query.set('shader', shader);
   if (size) query.set('size', `${size.width}x${size.height}`);
-  query.set('time', formatNumber(time));
+  if (time !== undefined && time !== null) query.set('time', formatNumber(time));
   if (mouse && mouse.some((v) => v !== 0)) query.set('mouse', mouse.map(formatNumber).join(','));
   if (speed !== 1) query.set('speed', formatNumber(speed));
   channels.forEach((url, i) => url && query.set(CHANNEL_PARAMS[i], url));

@@ -46,6 +46,7 @@ export function pageActions(app, { stage, toast, activeTab, toggleEditor, screen
   return {
     togglePlay: () => app.togglePlay(),
     restart: () => app.restart(),
+    resetView: () => app.resetView(),
     /** @param {number} t */
     setTime: (t) => app.setTime(t),
     /** @param {number} s */
@@ -82,7 +83,8 @@ export function pageActions(app, { stage, toast, activeTab, toggleEditor, screen
     exportJson() {
       const name = jsonFileName(app.fileName);
       saveBlob(new Blob([exportJson(app.project, app.projectInfo, fileStem(app.fileName))], { type: 'application/json' }), name);
-      toast(`Saved ${name} (Shadertoy's JSON format, ${projectTabs(app.project).length} tabs)`);
+      const tabs = projectTabs(app.project).length;
+      toast(`Saved ${name} (Shadertoy's JSON format, ${tabs} ${tabs === 1 ? 'tab' : 'tabs'})`);
       return name;
     },
 

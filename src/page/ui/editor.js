@@ -12,7 +12,7 @@ import { indentWithTab } from '@codemirror/commands';
 import { indentUnit } from '@codemirror/language';
 import { lintGutter, setDiagnostics } from '@codemirror/lint';
 import { search } from '@codemirror/search';
-import { EditorState, Prec } from '@codemirror/state';
+import { Compartment, EditorState, Prec } from '@codemirror/state';
 import { EditorView, keymap } from '@codemirror/view';
 import { oneDark } from '@codemirror/theme-one-dark';
 import { TabBar } from './editor-tabs.js';
@@ -57,7 +57,9 @@ export class Editor {
    * @param {(text: string) => void} [actions.pasteJson] a paste left a tab holding JSON (a
    *   Shadertoy export): load it
    * @param {(open: boolean) => void} [actions.onToggle]
-   * @param {(project: MultipassShader) => void} [actions.onChange] a tab's text changed (typed, pasted or set)
+   * @param {(project: MultipassShader, typed: boolean, pastedOver?: boolean) => void} [actions.onChange] a tab's
+   *   text changed: typed or pasted by the user (`typed`; `pastedOver`: a paste replaced the whole
+   *   of a single-pass shader), or set with a new shader
    */
   constructor(root, { apply, pasteJson = () => {}, onToggle = () => {}, onChange = () => {} }) {
     this.root = root;
@@ -89,7 +91,15 @@ export class Editor {
     close.setAttribute('aria-label', 'Close editor');
     close.textContent = '✕';
     close.addEventListener('click', () => this.toggle(false));
-    header.append(this.title, hint, compile, close);
+    // long lines wrap by default: the editor beside the canvas is narrower than many shaders' lines
+    this.wrapping = new Compartment();
+    this.wrapButton = document.createElement('button');
+    this.wrapButton.type = 'button';
+    this.wrapButton.textContent = 'Wrap';
+    this.wrapButton.title = 'Wrap long lines (the editor can also be made wider: drag its lower right corner)';
+    this.wrapButton.setAttribute('aria-pressed', 'true');
+    this.wrapButton.addEventListener('click', () => this.setWrap(this.wrapButton.getAttribute('aria-pressed') !== 'true'));
+    header.append(this.title, hint, this.wrapButton, compile, close);
     root.append(header);
     this.tabBar = new TabBar(root, (name) => this.showTab(name));
 
@@ -115,17 +125,19 @@ export class Editor {
       cpp(),
       indentUnit.of('    '), // as Shadertoy's shaders are written
       oneDark,
+      this.wrapping.of(EditorView.lineWrapping),
       EditorView.contentAttributes.of({ 'aria-label': 'Shader source', spellcheck: 'false', autocapitalize: 'off' }),
       EditorView.updateListener.of((update) => {
         if (!update.docChanged || this._settingProject) return;
         const project = this.project();
-        this.onChange(project);
         const paste = update.transactions.find((tr) => tr.isUserEvent('input.paste'));
+        const whole = Boolean(paste) && replacedAll(paste);
+        // kept under its new name at once: a paste over a whole single-pass shader is a new one
+        this.onChange(project, true, whole && this.tabs.length === 1);
         if (!paste) return;
         // a paste (of a whole shader, or any paste) runs what the editor then holds; JSON pasted
         // over a whole tab is a Shadertoy export
         const text = update.state.doc.toString();
-        const whole = replacedAll(paste);
         if (whole && looksLikeJson(text)) setTimeout(() => pasteJson(text), 0);
         // a paste over a whole single-pass shader is a new shader ("untitled"); over one tab of a
         // multipass one, an edit of that shader
@@ -136,8 +148,22 @@ export class Editor {
     this.tabs = [{ name: 'Image', state: this.view.state }];
   }
 
+  /**
+   * Wraps long lines, or not, in every tab.
+   * @param {boolean} on
+   */
+  setWrap(on) {
+    this.wrapButton.setAttribute('aria-pressed', String(on));
+    const effects = this.wrapping.reconfigure(on ? EditorView.lineWrapping : []);
+    this.view.dispatch({ effects });
+    for (const tab of this.tabs) if (tab.name !== this.active) tab.state = tab.state.update({ effects }).state;
+    this._wrap = on;
+  }
+
   /** @param {string} doc */
   _newState(doc) {
+    if (this._wrap === false)
+      return EditorState.create({ doc, extensions: this.extensions }).update({ effects: this.wrapping.reconfigure([]) }).state;
     return EditorState.create({ doc, extensions: this.extensions });
   }
 
@@ -225,7 +251,7 @@ export class Editor {
     this._settingProject = false;
     if (changed) {
       this.setErrors([]);
-      this.onChange(this.project());
+      this.onChange(this.project(), false);
     }
   }
 

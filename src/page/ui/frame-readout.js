@@ -74,6 +74,7 @@ export class FrameReadout {
     /** The phase the graph's frames belong to: another starts the graph again. */
     this._phase = '';
     setInterval(() => this.refresh(), REFRESH_MS);
+    this.refresh();
   }
 
   /**
@@ -115,7 +116,7 @@ export class FrameReadout {
     const percent = (/** @type {number | null} */ p) => (p === null ? '' : ` · ${Math.floor(p * 100)}%`);
     let line;
     if (now.phase === 'first') line = `Drawing the first frame${percent(now.progress)}`;
-    else if (now.phase === 'paused') line = now.progress === null ? 'paused' : `paused · drawing${percent(now.progress)}`;
+    else if (now.phase === 'paused') line = now.progress === null ? 'Paused' : `Paused · drawing a frame${percent(now.progress)}`;
     else if (now.phase === 'still') line = 'Speed 0× · time stands still';
     else if (now.phase === 'converging')
       line = now.samples >= now.of ? `Converged · ${now.samples} samples` : `Converging · ${now.samples} samples${this._speed(' · ')}`;

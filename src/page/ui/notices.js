@@ -27,47 +27,116 @@ function closeButton(note, label) {
   return close;
 }
 
+/** The column of notes at the top right of the stage (made on first use). @param {HTMLElement} stage */
+function notesColumn(stage) {
+  let column = document.getElementById('notes');
+  if (!column) {
+    column = element('div', { id: 'notes' });
+    stage.append(column);
+  }
+  return column;
+}
+
 /**
- * Shows the note on a loaded shader (replacing the one shown), or removes it when `lines` is
- * empty.
- * @param {HTMLElement} parent the stage
+ * Shows a note at the top right of the canvas (replacing the one with its id), or removes it
+ * when `lines` is empty.
+ * @param {HTMLElement} stage
+ * @param {string} id
  * @param {string} title
  * @param {string[]} lines one a line
  * @param {'note' | 'error'} [kind] an error is marked as one
  * @returns {HTMLElement | null}
  */
-export function showLoadNotes(parent, title, lines, kind = 'note') {
-  document.getElementById(NOTE_ID)?.remove();
+function showNote(stage, id, title, lines, kind = 'note') {
+  document.getElementById(id)?.remove();
   if (!lines.length) return null;
-  const note = element('div', { id: NOTE_ID, class: kind, role: 'status' });
+  const note = element('div', { id, class: kind, role: 'status' });
   const list = element('ul', {}, ...lines.map((line) => element('li', {}, line)));
   note.append(element('strong', {}, title), closeButton(note, 'Close this note'), list);
+  notesColumn(stage).append(note);
+  return note;
+}
+
+/**
+ * The note on a loaded shader: what it cannot have (media its JSON names, its sound passes), or
+ * why a file could not be read as a shader (`kind` 'error').
+ * @param {HTMLElement} stage
+ * @param {string} title
+ * @param {string[]} lines
+ * @param {'note' | 'error'} [kind]
+ */
+export const showLoadNotes = (stage, title, lines, kind = 'note') => showNote(stage, NOTE_ID, title, lines, kind);
+
+/**
+ * The note on what the page did with values it could not use as given (a link's, the panel's or
+ * the hook's are checked alike): each line says what was used instead, and why.
+ * @param {HTMLElement} stage
+ * @param {string[]} lines
+ */
+export const showValueNotes = (stage, lines) => showNote(stage, 'value-notes', 'Some values were not used as given', lines);
+
+/**
+ * A note at the top left of the canvas about kept work, with its buttons, replacing any other.
+ * @param {HTMLElement} parent
+ * @param {string} id
+ * @param {string} text
+ * @param {Array<{label: string, title: string, run: () => void}>} actions each closes the note
+ * @param {string} closeLabel
+ */
+function keptWorkNote(parent, id, text, actions, closeLabel) {
+  for (const old of ['restored-note', 'kept-offer']) document.getElementById(old)?.remove();
+  const note = element('div', { id, class: 'kept-note', role: 'status' }, element('span', {}, text));
+  for (const { label, title, run } of actions) {
+    const button = element('button', { type: 'button', title }, label);
+    button.addEventListener('click', () => {
+      note.remove();
+      run();
+    });
+    note.append(button);
+  }
+  note.append(closeButton(note, closeLabel));
   parent.append(note);
   return note;
 }
 
-/** Removes the note, if one is shown. */
-export const hideLoadNotes = () => document.getElementById(NOTE_ID)?.remove();
-
 /**
- * The note that says the page restored kept work, with a button that discards it.
+ * The note that says the page restored kept work, with a button that discards it. It belongs
+ * to the text it restored: the page removes it once that text is edited or replaced.
  * @param {HTMLElement} parent
  * @param {string} name the restored shader's name
  * @param {() => void} discard goes back to the file
  * @returns {HTMLElement}
  */
 export function showRestoredNote(parent, name, discard) {
-  document.getElementById('restored-note')?.remove();
-  const note = element('div', { id: 'restored-note', role: 'status' });
-  const button = element('button', { type: 'button', title: 'Go back to the file' }, 'Discard edits');
-  button.addEventListener('click', () => {
-    note.remove();
-    discard();
-  });
-  const text = element('span', {}, `Restored ${name} from this browser's storage (your last edits).`);
-  note.append(text, button, closeButton(note, 'Keep edits and close this note'));
-  parent.append(note);
-  return note;
+  const discardEdits = { label: 'Discard edits', title: 'Go back to the file', run: discard };
+  return keptWorkNote(
+    parent,
+    'restored-note',
+    `Restored ${name} from this browser's storage (your last edits).`,
+    [discardEdits],
+    'Keep edits and close this note',
+  );
+}
+
+/**
+ * The note that offers edits a link's shader has in this browser: the link runs what it names,
+ * and the edits wait, set aside, until opened or thrown away.
+ * @param {HTMLElement} parent
+ * @param {string} name the kept edits' name
+ * @param {{open: () => void, discard: () => void}} choices
+ * @returns {HTMLElement}
+ */
+export function showKeptOffer(parent, name, { open, discard }) {
+  return keptWorkNote(
+    parent,
+    'kept-offer',
+    `This link runs the shader it names. Your edits of it are kept in this browser: ${name}.`,
+    [
+      { label: 'Open my edits', title: 'Run the edits instead (the shader of the link stays a reload away)', run: open },
+      { label: 'Discard them', title: 'Throw the kept edits away', run: discard },
+    ],
+    'Keep them for later and close this note',
+  );
 }
 
 // ---- messages in the overlay ----------------------------------------------------------------

@@ -52,7 +52,8 @@ export function installRecordDialog(app, toolbarRoot, toast) {
   );
   const number = (label, attributes) =>
     /** @type {HTMLInputElement} */ (element('input', { type: 'number', 'aria-label': label, required: true, ...attributes }));
-  const duration = number('Duration (s)', { min: 0.01, step: 0.01, value: 2 });
+  // any duration: frames / fps has as many decimals as it has (100 frames at 30 fps is 3.333 s)
+  const duration = number('Duration (s)', { min: 0.001, step: 'any', value: 2 });
   const frames = number('Frames', { min: 1, max: MAX_FRAMES, step: 1, value: 60 });
   const fps = number('Frames per second', { min: 1, max: MAX_FPS, step: 1, value: 30 });
   const width = number('Width', { min: 1, step: 1 });

@@ -14,6 +14,8 @@ const ICONS = {
   play: '<path d="M4 2.5v11l9.5-5.5z"/>',
   pause: '<path d="M3.5 2.5h3v11h-3zM9.5 2.5h3v11h-3z"/>',
   restart: '<path d="M2.5 2.5h2v11h-2zM13.5 2.5v11L5.5 8z"/>',
+  reset:
+    '<g fill="none" stroke="currentColor" stroke-width="1.5"><circle cx="8" cy="8" r="4.5"/><path d="M8 1v3.5M8 11.5V15M1 8h3.5M11.5 8H15"/></g>',
   edit: '<path d="M11.2 1.8l3 3-8.7 8.7-3.8.8.8-3.8z"/>',
   copy: '<g fill="none" stroke="currentColor" stroke-width="1.5"><path d="M5.5 1.75h8v9.5h-8z"/><path d="M2.75 4.5v9.75h8"/></g>',
   download: '<g fill="none" stroke="currentColor" stroke-width="1.6"><path d="M8 1.5v8.5M4.3 6.6 8 10.3l3.7-3.7M2.5 14h11"/></g>',
@@ -33,7 +35,7 @@ function icon(name) {
 export class Toolbar {
   /**
    * @param {HTMLElement} root the (empty) toolbar element
-   * @param {object} actions callbacks: togglePlay, restart, setTime(s), setSpeed(s), toggleEditor,
+   * @param {object} actions callbacks: togglePlay, restart, resetView, setTime(s), setSpeed(s), toggleEditor,
    *   copyForShadertoy, download, exportJson, screenshot, toggleFullscreen, copyLink
    * @param {() => import('./frame-readout.js').Activity} activity what the page is doing, for the readout
    */
@@ -50,6 +52,16 @@ export class Toolbar {
       icon('restart'),
     );
     restart.addEventListener('click', () => actions.restart());
+    const resetView = element(
+      'button',
+      {
+        type: 'button',
+        'aria-label': 'Reset view',
+        title: 'Reset view: iMouse back to how the page opened (a click or drag on the canvas sets it)',
+      },
+      icon('reset'),
+    );
+    resetView.addEventListener('click', () => actions.resetView());
 
     this.timeSlider = element('input', {
       type: 'range',
@@ -74,14 +86,11 @@ export class Toolbar {
     this.speedSelect.addEventListener('change', () => actions.setSpeed(Number(this.speedSelect.value)));
 
     this.graph = element('canvas', { class: 'graph', width: GRAPH_FRAMES, height: 24, 'aria-hidden': 'true' });
-    this.fpsText = element(
-      'span',
-      {
-        class: 'fps',
-        title: 'GPU time per frame where the browser measures it, else the time between frames; and the frames per second reached',
-      },
-      'paused',
-    );
+    this.fpsText = element('span', {
+      class: 'fps',
+      title:
+        'What the page is doing: drawing the first frame, playing (GPU time per frame where the browser measures it, else the time between frames; and the frames per second reached), paused, converging',
+    });
     /** The graph and the line beside it (frame-readout.js). */
     this.readout = new FrameReadout(this.graph, this.fpsText, activity);
 
@@ -119,7 +128,7 @@ export class Toolbar {
     this.fullscreenButton.setAttribute('aria-pressed', 'false');
 
     root.append(
-      element('div', { class: 'group' }, this.playButton, restart, this.timeSlider, this.timeText, this.speedSelect),
+      element('div', { class: 'group' }, this.playButton, restart, resetView, this.timeSlider, this.timeText, this.speedSelect),
       element('div', { class: 'group meter' }, this.graph, this.fpsText),
       element('div', { class: 'group grow' }, this.nameText),
       element(

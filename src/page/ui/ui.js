@@ -29,7 +29,9 @@ function activity(app) {
   const fraction = progress ? progress.y / Math.max(1, progress.height) : null;
   if (count === 0) return { phase: 'first', progress: fraction };
   if (app.converge.on) return { phase: 'converging', samples: stillFrames, of: app.converge.frames };
-  if (!app.inputs.playing) return { phase: 'paused', progress: fraction };
+  // a frame drawn while paused is said only when it takes more than a band (a heavy one): a
+  // cheap one is on the canvas before anyone could read the line
+  if (!app.inputs.playing) return { phase: 'paused', progress: progress && progress.bands > 1 ? fraction : null };
   if (app.inputs.speed === 0) return { phase: 'still' };
   return { phase: 'playing' };
 }
@@ -99,7 +101,13 @@ export function installUi(app) {
       );
     },
     onToggle: (open) => toolbar.setEditorOpen(open),
-    onChange: (project) => kept.save(serializeProject(project)),
+    // what the user typed is kept, and a shader they made (pasted, restored); a file the page
+    // loaded instead (a dropped one, the one the watchdog went back to) is not theirs to keep, and
+    // leaves what is kept alone
+    onChange: (project, typed, pastedOver = false) => {
+      const text = serializeProject(project);
+      if (typed || app.origin === 'editor' || text === kept.pageFile?.source) kept.save(text, pastedOver);
+    },
   });
 
   // ---- notes on what a loaded shader cannot have ----------------------------------------------
