@@ -187,7 +187,7 @@ export function judge(k, got) {
   // On a rim, where two faces meet, either face's normal is right (`normals` lists them).
   const angleTo = (m) => Math.acos(Math.min(1, (n[0] * m[0] + n[1] * m[1] + n[2] * m[2]) / length));
   const angle = Math.min(...(k.normals ?? [want.slice(1)]).map(angleTo));
-  const angleTol = (k.expect === 'agree' ? tangentTolerance(S) : K * U * S) / Math.min(curvatureRadius(k), S) + K * U;
+  const angleTol = tTol / Math.min(curvatureRadius(k), S) + K * U;
   verdict.angleRatio = angle / angleTol;
   if (angle > angleTol) say(`normal off by ${angle.toExponential(2)} rad > ${angleTol.toExponential(2)}`);
   return verdict;
