@@ -358,8 +358,12 @@ void torusBend(TorusRay ray, vec3 t, out vec3 dF, out vec3 ddF) {
 // Each F' root is found by Newton's method from the end of its piece where Fourier's condition
 // holds (F' and F''' of one sign; F''' has the sign of t - tc), so its iterates move
 // monotonically and never leave the piece; each g root by Newton's method on g, bisecting
-// whenever a step would leave the bracket. The four roots are solved as one vec4.
-// The origin is first moved to the bounding sphere (Wald), then everything runs in units of R.
+// whenever a step would leave the bracket (a safeguarded Newton, as Numerical Recipes' rtsafe).
+// The four roots are solved as one vec4. The origin is first moved to the bounding sphere (Wald,
+// Ray Tracing Gems II ch. 34), then everything runs in units of R.
+// Measured (tests/intersectors.test.js, 1,800 hard rays): worst t error 0.3 K u S on transversal
+// hits; a textbook Ferrari solve of the expanded quartic in its place gets 81% of rays from 1e3,
+// 16% of a tube r = 1e-3 R and 32% of near-axial rays wrong (those all fake hits in the hole).
 vec4 intersectTorus(vec3 ro, vec3 rd, Torus torus, float tMax) {
     vec3 toCenter = torus.center - ro;
     float along = dot(toCenter, rd);
@@ -416,10 +420,11 @@ vec4 intersectTorus(vec3 ro, vec3 rd, Torus torus, float tMax) {
     // its sign says nothing more.
     float tNoise = 8.0 * EPS32 * (hi + 1.0);
     float gNoise = 2.0 * EPS32 * (hi + 1.0);
-    // Trips (tests/intersectors.test.js counts them on its 1,600 torus rays): 5 or fewer for 98%,
-    // at most 8 but for a triple zero of F' (a ray whose closest approach to the axis is also an
-    // inflection, m2 = a^2), which Newton approaches linearly and the cap of 12 stops. SwiftShader
-    // runs the 4 pixels of a quad until the last is done, so the loop ends on its last needed trip.
+    // Trips (tests/intersectors.test.js counts them on the 1,600 of its torus rays that reach
+    // this loop): 5 or fewer for 98%, at most 8 but for a triple zero of F' (a ray whose closest
+    // approach to the axis is also an inflection, m2 = a^2), which Newton approaches linearly and
+    // the cap of 12 stops. SwiftShader runs the 4 pixels of a quad until the last is done, so the
+    // loop ends on its last needed trip.
     for (int trip = 1;; trip++) {
         vec3 dF, ddF;
         torusBend(ray, crit, dF, ddF);
