@@ -337,14 +337,15 @@ vec4 torusDistance(TorusRay ray, vec4 t, out vec4 slope) {
 
 // F(t) = (rho - 1)^2 + y^2 - k^2 = g (g + 2k) has the roots, critical points and monotone
 // pieces of g. Half its first and second derivatives, at three parameters (|rd| = 1, u = t - tc):
-//   F'/2 = yd y + a u (rho - 1) / rho,    F''/2 = 1 - a m2 / rho^3.
+//   F'/2 = yd y + a u (1 - 1 / rho),    F''/2 = 1 - a m2 / rho^3,
+// both from one inversesqrt (they only place the critical points: a few ulps do not matter).
 // rho = 0 only where m2 = 0 and u = 0: there F'/2 = yd y and F''/2 = 1.
 void torusBend(TorusRay ray, vec3 t, out vec3 dF, out vec3 ddF) {
     vec3 u = t - ray.tc;
-    vec3 rho = sqrt(ray.m2 + ray.a * u * u);
-    vec3 safe = mix(rho, vec3(1.0), equal(rho, vec3(0.0)));
-    dF = ray.yd * (ray.yo + ray.yd * t) + ray.a * u * (rho - 1.0) / safe;
-    ddF = 1.0 - ray.a * (ray.m2 / (safe * safe)) / safe;
+    vec3 rho2 = ray.m2 + ray.a * u * u;
+    vec3 inv = mix(inversesqrt(rho2), vec3(0.0), equal(rho2, vec3(0.0)));
+    dF = ray.yd * (ray.yo + ray.yd * t) + ray.a * u * (1.0 - inv);
+    ddF = 1.0 - ray.a * ray.m2 * inv * inv * inv;
 }
 
 // The torus by root isolation, never by a closed-form quartic (a resolvent cubic's small root
@@ -401,6 +402,10 @@ vec4 intersectTorus(vec3 ro, vec3 rd, Torus torus, float tMax) {
     float lo = max(max(-bo - h, 0.0), level ? 0.0 : min(slabA, slabB));
     float hi = min(-bo + h, level ? T_MAX : max(slabA, slabB));
     bool inRange = all(bvec3(h2 >= 0.0, lo < hi, any(bvec2(!level, abs(ray.yo) <= slab))));
+    // A ray with no range gets the empty one, [lo, lo]: both loops below end on their first trip
+    // (and clamp() never sees its ends crossed, which GLSL leaves undefined). Without this, pixels
+    // that miss ran the loops on nonsense and the torus cost 7 cones instead of 3.
+    hi = all(bvec2(inBound, inRange)) ? hi : lo;
 
     // The pieces of F': [lo, tc - s], [tc - s, tc + s], [tc + s, hi], clipped to the range. The
     // cube root rho_b = (a m2)^(1/3) from pow, then one Newton step (pow is held to no accuracy).
@@ -440,15 +445,27 @@ vec4 intersectTorus(vec3 ro, vec3 rd, Torus torus, float tMax) {
     }
 
     // The four gaps between lo <= c1 <= c2 <= c3 <= hi; a root where g changes sign across one.
+    // g(hi) is not evaluated: hi ends the widened range, outside the torus, so g(hi) > 0, and
+    // g(c3) + (hi - c3) bounds it (g changes by at most 1 per unit of t), which is all the chord
+    // start below needs (it is g(hi) for a ray leaving the tube square on).
     vec4 left = vec4(lo, crit), right = vec4(crit, hi);
     vec4 slope;
     vec4 gLeft = torusDistance(ray, left, slope);
-    vec4 gRight = torusDistance(ray, right, slope);
+    vec4 gRight = vec4(gLeft.yzw, max(gLeft.w + (hi - crit.z), gNoise));
     bvec4 insideLeft = lessThan(gLeft, vec4(0.0));
     bvec4 crosses = notEqual(insideLeft, lessThan(gRight, vec4(0.0)));
+    // Only the first root past the origin is wanted: a gap after the first one that crosses and
+    // starts past 0 (its root is at least its start) is dropped, so the loop does not wait for
+    // roots nobody uses. (A crossing gap that starts at 0 may hold the root t = 0 of an origin on
+    // the surface, not a hit: the next one is kept too.) Products of 0/1 vectors are ANDs.
+    const vec4 GAP = vec4(0.0, 1.0, 2.0, 3.0);
+    vec4 firstGaps = mix(vec4(4.0), GAP, bvec4(vec4(crosses) * vec4(greaterThan(left, vec4(0.0)))));
+    float first = min(min(firstGaps.x, firstGaps.y), min(firstGaps.z, firstGaps.w));
+    crosses = bvec4(vec4(crosses) * vec4(lessThanEqual(GAP, vec4(first))));
     // Start where the chord across the gap crosses 0: g is a distance, close to linear. Trips on
-    // the test rays: 5 or fewer for 90%, at most 9 (near-tangent rays, where Newton's convergence
-    // is linear); the cap of 16 is never reached there.
+    // the test rays: 5 or fewer for 92%, at most 11 (near-tangent rays, where Newton's convergence
+    // is linear); the cap of 16 is never reached there. Cost on SwiftShader (npm run
+    // bench:primitives, one call a pixel at 640x360): about 3 times the cone's, the loops ~15% of it.
     vec4 root = mix(0.5 * (left + right), left + (right - left) * gLeft / (gLeft - gRight), crosses);
     for (int trip = 1;; trip++) {
         vec4 g = torusDistance(ray, root, slope);
@@ -472,13 +489,6 @@ vec4 intersectTorus(vec3 ro, vec3 rd, Torus torus, float tMax) {
         root = next;
         if (any(bvec2(done, trip == 16))) break;
     }
-    // Polish: one more Newton step on g from where the loop stopped (a midpoint of a bracket
-    // below tNoise, a Newton step below it, or a point where g is noise), kept only as a
-    // correction of rounding size: where g is noise and g' near 0 (a grazing ray at its double
-    // root) the step would be noise over g', and a jump.
-    vec4 g = torusDistance(ray, root, slope);
-    vec4 polished = root - g / mix(slope, vec4(1.0), equal(slope, vec4(0.0)));
-    root = mix(root, clamp(polished, left, right), lessThanEqual(abs(polished - root), vec4(tNoise)));
 
     // The first root past the origin (the gaps are in order along the ray).
     vec4 found = mix(vec4(T_MAX), root, crosses);
