@@ -167,12 +167,17 @@ export function judge(k, got) {
     return verdict;
   }
   if (!hitWant) return verdict;
-  // A ray meeting the surface at a grazing angle: a position error e across the surface moves the
-  // hit along the ray by e / sin(angle), more than the tangent tolerance allows below sqrt(u).
-  const tTol = Math.max(k.expect === 'agree' ? tangentTolerance(S) : K * U * S, k.grazing ? (K * U * S) / Math.sin(k.grazing) : 0);
+  // A hit's t is conditioned by the angle at which the ray meets the surface: a position error e
+  // across the surface moves the hit along the ray by e / |rd.n|. So an 'agree' case (which may
+  // be tangent) is held to K u S / |rd.n| where that is below the tangent tolerance: a far family
+  // (S = 1e4: tangent tolerance 14 units) would otherwise pass a transversal hit on a wrong root.
+  // `grazing` states a small angle explicitly, and loosens a 'hit' case to K u S / sin(grazing).
+  const incidence = Math.abs(k.rd[0] * want[1] + k.rd[1] * want[2] + k.rd[2] * want[3]) / Math.hypot(...k.rd);
+  const conditioned = (K * U * S) / Math.max(incidence, Number.MIN_VALUE);
+  const base = k.expect === 'agree' ? Math.max(K * U * S, Math.min(tangentTolerance(S), conditioned)) : K * U * S;
+  const tTol = Math.max(base, k.grazing ? (K * U * S) / Math.sin(k.grazing) : 0);
   const dt = Math.abs(got[0] - want[0]);
   verdict.tRatio = dt / (K * U * S);
-  const incidence = Math.abs(k.rd[0] * want[1] + k.rd[1] * want[2] + k.rd[2] * want[3]) / Math.hypot(...k.rd);
   if (incidence >= 0.1) verdict.tTransversal = verdict.tRatio;
   if (dt > tTol) say(`|t error| ${dt.toExponential(2)} > ${tTol.toExponential(2)} (S = ${S.toPrecision(3)})`);
   const length = Math.hypot(...n);
