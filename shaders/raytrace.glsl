@@ -1,10 +1,12 @@
-// Analytic raytracer: a striped ground plane, a sphere, a cube and a cone, lit by one point light,
-// with hard shadows and mirror reflections. A Shadertoy Image-tab shader: paste it as it is.
-// Drag to orbit; all tunables are in the control block below.
+// Analytic raytracer: a striped ground plane, a sphere, a cube and a cone (or, by SCENE, a
+// cylinder or a torus in its place), lit by one point light, with hard shadows and mirror
+// reflections. A Shadertoy Image-tab shader: paste it as it is. Drag to orbit; all tunables are
+// in the control block below.
 //
 // Numerical choices, each explained where it is made:
 // - every position is relative to the eye, so a scene far from the origin keeps its digits;
-// - the sphere and cone quadratics use cancellation-free discriminants and stable roots;
+// - the sphere, cone and cylinder quadratics use cancellation-free discriminants and stable
+//   roots; the torus is solved by root isolation on its unexpanded distance, never as a quartic;
 // - no global epsilon: secondary rays skip the convex solid they leave, and a ray that starts
 //   inside a solid is pushed off its surface by a few ulps;
 // - the ground texture is filtered over each sample's footprint: exactly for the eye ray (the
@@ -23,6 +25,7 @@
 #define SHADOWS 1                                      // ui: Shadows | toggle
 #define TEXTURE 0                                      // ui: Ground texture | Stripes, Checkerboard
 #define TEXTURE_FILTER 1                               // ui: Filter texture over pixel footprint | toggle
+#define SCENE 0                                        // ui: Scene (the new object) | Cone, Cylinder, Torus
 const vec3  CAMERA_TARGET = vec3(0.0, 0.6, 0.0);       // ui: Camera target | -5 .. 5
 const vec2  CAMERA_ORBIT = vec2(30.0, 18.0);           // ui: Camera orbit (deg) | azimuth -180 .. 180, elevation -89 .. 90
 const float CAMERA_DISTANCE = 6.5;                     // ui: Camera distance | 0.1 .. 2000
@@ -36,11 +39,19 @@ const vec3  CUBE_HALF_SIZE = vec3(0.5);                // ui: Cube half size | 0
 const vec3  CONE_BASE = vec3(1.2, 0.0, 1.1);           // ui: Cone base centre | -4 .. 4
 const float CONE_RADIUS = 0.55;                        // ui: Cone base radius | 0.05 .. 2
 const float CONE_HEIGHT = 1.7;                         // ui: Cone height | 0.05 .. 4
+const vec3  CYLINDER_BASE = vec3(1.2, 0.0, 1.1);       // ui: Cylinder base centre | -4 .. 4
+const float CYLINDER_RADIUS = 0.45;                    // ui: Cylinder radius | 0.05 .. 2
+const float CYLINDER_HEIGHT = 1.3;                     // ui: Cylinder height | 0.05 .. 4
+const vec3  TORUS_CENTER = vec3(1.2, 0.545, 1.1);      // ui: Torus centre | -4 .. 4
+const vec3  TORUS_AXIS = vec3(0.9, 1.0, 0.2);          // ui: Torus axis (any length) | -1 .. 1
+const vec2  TORUS_RADII = vec2(0.55, 0.17);            // ui: Torus radii | major 0.05 .. 2, minor 0.005 .. 2
 const vec3  LIGHT_POSITION = vec3(-2.5, 6.0, 4.5);     // ui: Light position | -10 .. 10
 const float GROUND_REFLECTIVITY = 0.15;                // ui: Ground reflectivity | 0 .. 1
 const float SPHERE_REFLECTIVITY = 0.35;                // ui: Sphere reflectivity | 0 .. 1
 const float CUBE_REFLECTIVITY = 0.25;                  // ui: Cube reflectivity | 0 .. 1
 const float CONE_REFLECTIVITY = 0.2;                   // ui: Cone reflectivity | 0 .. 1
+const float CYLINDER_REFLECTIVITY = 0.3;               // ui: Cylinder reflectivity | 0 .. 1
+const float TORUS_REFLECTIVITY = 0.3;                  // ui: Torus reflectivity | 0 .. 1
 #endif
 
 // ---- constants -------------------------------------------------------------------------------
@@ -511,11 +522,24 @@ vec4 intersectTorus(vec3 ro, vec3 rd, Torus torus, float tMax) {
 }
 
 // ---- the scene -------------------------------------------------------------------------------
+// The new object of each scene: its colour and reflectivity, and how curved it is as a mirror
+// (objectMirrorRadius, below).
+#if SCENE == 0
+#define OBJECT_COLOR CONE_COLOR
+#define OBJECT_REFLECTIVITY CONE_REFLECTIVITY
+#elif SCENE == 1
+#define OBJECT_COLOR CYLINDER_COLOR
+#define OBJECT_REFLECTIVITY CYLINDER_REFLECTIVITY
+#else
+#define OBJECT_COLOR TORUS_COLOR
+#define OBJECT_REFLECTIVITY TORUS_REFLECTIVITY
+#endif
+
 const int ID_NONE = -1;
 const int ID_GROUND = 0;
 const int ID_SPHERE = 1;
 const int ID_CUBE = 2;
-const int ID_CONE = 3;
+const int ID_OBJECT = 3;  // the assignment's new object: the cone, the cylinder or the torus (SCENE)
 
 // Everything is traced relative to the eye: positions near the eye keep all their digits even
 // when the scene (and the camera with it) sits far from the origin.
@@ -525,9 +549,15 @@ struct Scene {
     vec3 cubeCenter;
     float sphereRadius;
     vec3 cubeHalfSize;
+#if SCENE == 0
     Cone cone;
+#elif SCENE == 1
+    Cylinder cylinder;
+#else
+    Torus torus;
+#endif
     vec3 light;
-    vec4 reflectivity;  // ground, sphere, cube, cone
+    vec4 reflectivity;  // ground, sphere, cube, the new object
     vec2 textureOrigin; // world xz of the eye, reduced modulo the texture period (2)
 };
 
@@ -538,8 +568,16 @@ Scene sceneRelativeTo(vec3 eyeLocal) {
     s.cubeCenter = CUBE_CENTER - eyeLocal;
     s.sphereRadius = SPHERE_RADIUS;
     s.cubeHalfSize = CUBE_HALF_SIZE;
-    s.reflectivity = vec4(GROUND_REFLECTIVITY, SPHERE_REFLECTIVITY, CUBE_REFLECTIVITY, CONE_REFLECTIVITY);
+    s.reflectivity = vec4(GROUND_REFLECTIVITY, SPHERE_REFLECTIVITY, CUBE_REFLECTIVITY, OBJECT_REFLECTIVITY);
+#if SCENE == 0
     s.cone = makeCone(CONE_BASE - eyeLocal, CONE_BASE + vec3(0.0, CONE_HEIGHT, 0.0) - eyeLocal, CONE_RADIUS, 0.0);
+#elif SCENE == 1
+    s.cylinder = makeCylinder(CYLINDER_BASE - eyeLocal, CYLINDER_BASE + vec3(0.0, CYLINDER_HEIGHT, 0.0) - eyeLocal, CYLINDER_RADIUS);
+#else
+    // An axis of length 0 means none: upright. The tube is no wider than the hole's radius.
+    vec3 axis = dot(TORUS_AXIS, TORUS_AXIS) > 0.0 ? TORUS_AXIS : vec3(0.0, 1.0, 0.0);
+    s.torus = makeTorus(TORUS_CENTER - eyeLocal, axis, TORUS_RADII.x, min(TORUS_RADII.y, TORUS_RADII.x));
+#endif
     s.light = LIGHT_POSITION - eyeLocal;
     // mod() of each term separately keeps the sum small: SCENE_ORIGIN may be ~1e4 or more.
     s.textureOrigin = mod(SCENE_ORIGIN.xz, 2.0) + mod(eyeLocal.xz, 2.0);
@@ -589,7 +627,15 @@ Hit traceScene(Scene s, vec3 ro, vec3 rd, int skipId, float tMax) {
     Hit hit = nearer(Hit(tMax, vec3(0.0), ID_NONE), ground, ID_GROUND);
     hit = nearer(hit, intersectSphere(ro, rd, s.sphereCenter, s.sphereRadius, skipId == ID_SPHERE ? 0.0 : hit.t), ID_SPHERE);
     hit = nearer(hit, intersectBox(ro, rd, s.cubeCenter, s.cubeHalfSize, skipId == ID_CUBE ? 0.0 : hit.t), ID_CUBE);
-    hit = nearer(hit, intersectCone(ro, rd, s.cone, skipId == ID_CONE ? 0.0 : hit.t), ID_CONE);
+    // Only the scene's own new object is traced (SCENE is fixed at compile time).
+    float tObject = skipId == ID_OBJECT ? 0.0 : hit.t;
+#if SCENE == 0
+    hit = nearer(hit, intersectCone(ro, rd, s.cone, tObject), ID_OBJECT);
+#elif SCENE == 1
+    hit = nearer(hit, intersectCylinder(ro, rd, s.cylinder, tObject), ID_OBJECT);
+#else
+    hit = nearer(hit, intersectTorus(ro, rd, s.torus, tObject), ID_OBJECT);
+#endif
     float height = dot(s.ground.xyz, ro + hit.t * rd) + s.ground.w;
     float band = GROUND_BAND_ULPS * EPS32 * (hit.t + maxAbs(ro) + abs(s.ground.w));
     bool inGroundPlane = all(bvec3(ground.x > 0.0, hit.id != ID_GROUND, abs(height) <= band));
@@ -601,6 +647,8 @@ Hit traceScene(Scene s, vec3 ro, vec3 rd, int skipId, float tMax) {
 const vec3  SPHERE_COLOR = vec3(0.85, 0.18, 0.12);
 const vec3  CUBE_COLOR = vec3(0.15, 0.35, 0.85);
 const vec3  CONE_COLOR = vec3(0.85, 0.2, 0.75);        // magenta, as in the assignment
+const vec3  CYLINDER_COLOR = vec3(0.2, 0.7, 0.35);
+const vec3  TORUS_COLOR = vec3(0.95, 0.7, 0.15);
 const vec3  STRIPE_COLOR = vec3(0.8, 0.5, 0.2);        // the assignment's (fract(x) + 0.3) * colour
 const float STRIPE_OFFSET = 0.3;
 const vec3  CHECKER_LIGHT = vec3(0.9);
@@ -612,7 +660,7 @@ const float SPECULAR = 0.5;
 const float SHININESS = 40.0;
 
 vec3 objectColor(int id) {
-    return id == ID_SPHERE ? SPHERE_COLOR : (id == ID_CUBE ? CUBE_COLOR : CONE_COLOR);
+    return id == ID_SPHERE ? SPHERE_COLOR : (id == ID_CUBE ? CUBE_COLOR : OBJECT_COLOR);
 }
 
 // The two ground patterns, each with its first and second integrals (P1' = P, P2' = P1), both
@@ -720,20 +768,62 @@ vec3 shadeLocal(vec3 l, vec3 n, vec3 rd, vec3 albedo, float facing, bool lit) {
 vec3 reprojectOnSurface(Scene s, vec3 p, vec3 n, int id) {
     vec3 onGround = vec3(p.x, -s.ground.w, p.z);
     vec3 onSphere = s.sphereCenter + s.sphereRadius * n;
-    return mix(mix(p, onSphere, bvec3(id == ID_SPHERE)), onGround, bvec3(id == ID_GROUND));
+    vec3 onSurface = mix(mix(p, onSphere, bvec3(id == ID_SPHERE)), onGround, bvec3(id == ID_GROUND));
+#if SCENE == 2
+    // The torus's point from its core circle: the nearest point of the core, then the tube's
+    // radius along the normal. Rays leave the torus from here, and may meet it again (reenters),
+    // so the start must be off the surface by more than the point's error: this puts that error
+    // at a few roundings of the point's coordinates, where the intersector's t leaves up to
+    // K u S (S the distance the ray came), and the step off it can be small (leaveTorus).
+    vec3 q = p - s.torus.center;
+    vec3 radial = q - dot(q, s.torus.axis) * s.torus.axis;
+    vec3 core = s.torus.center + s.torus.majorRadius * normalize(radial);
+    onSurface = mix(onSurface, core + (s.torus.tube * s.torus.majorRadius) * n, bvec3(all(bvec2(id == ID_OBJECT, dot(radial, radial) > 0.0))));
+#endif
+    return onSurface;
 }
 
 // Moves p off its surface along n by 256 ulps of its largest coordinate, and by at least
 // 2^-16 near the origin: a float form of the integer-ulp offset of Waechter and Binder (Ray
 // Tracing Gems ch. 6, whose constants these are). An ulp of x is 2 EPS32 |x| or less. Only used
-// for rays that start inside a solid, which may hit the same solid again.
+// for rays that may hit the surface they start on again: from inside a solid, or leaving a solid
+// that is not convex (the torus).
 vec3 offsetAlong(vec3 p, vec3 n) {
     return p + n * max(1.0 / 65536.0, 256.0 * 2.0 * EPS32 * maxAbs(p));
 }
 
-// The cone's radius at a height above its base (0 above the apex).
-float coneRadiusAt(float heightAboveBase) {
-    return CONE_RADIUS * max(1.0 - heightAboveBase / CONE_HEIGHT, 0.0);
+// The radius of curvature of the new object's surface at p, as a mirror (its most curved
+// direction): the cone's side curves with radius r(y) across its axis (0 at the apex), the
+// cylinder's with its radius, the torus's across its tube with the tube's radius.
+float objectMirrorRadius(Scene s, vec3 p) {
+#if SCENE == 0
+    return CONE_RADIUS * max(1.0 - (p.y - s.cone.base.y) / CONE_HEIGHT, 0.0);
+#elif SCENE == 1
+    return CYLINDER_RADIUS;
+#else
+    return s.torus.tube * s.torus.majorRadius;
+#endif
+}
+
+// A point on the torus's surface (re-projected: its error a few roundings of its coordinates)
+// moved outward by 16 ulps of its largest coordinate: past that error, and 16 times less than
+// offsetAlong's step, which seen from 1e3 away is 3e-2, two pixels of a telephoto view (measured:
+// reflections off a torus 1e3 away, 0.67% of pixels over 2/255 against float64 with offsetAlong,
+// 0.04% with this; the property test holds either way).
+vec3 leaveTorus(vec3 p, vec3 n) {
+    return p + n * max(1.0 / 65536.0, 16.0 * 2.0 * EPS32 * maxAbs(p));
+}
+
+// Whether a ray that leaves the surface of `id` can meet that surface again: not for the ground
+// and the convex solids, which the scene walk then skips; for the torus it can (its hole, its
+// inner wall), so such a ray starts a few ulps off the surface, outside, and the torus stays in
+// the walk (tests/intersector-properties.test.js checks this rule on the GPU).
+bool reenters(int id) {
+#if SCENE == 2
+    return id == ID_OBJECT;
+#else
+    return false;
+#endif
 }
 
 // An eye ray, and how its direction changes across the footprint of its sample along image x and
@@ -796,7 +886,8 @@ vec3 radiance(Scene s, EyeRay eye, float coneSpread, out vec3 key, out vec3 keyN
         float facing = dot(n, l);
         bool lit = all(bvec2(!inside, facing > 0.0));
 #if SHADOWS
-        bool blocked = traceScene(s, p, l, id, lightDist).id != ID_NONE;
+        bool meetsAgain = reenters(id);
+        bool blocked = traceScene(s, mix(p, leaveTorus(p, n), bvec3(meetsAgain)), l, meetsAgain ? ID_NONE : id, lightDist).id != ID_NONE;
         lit = all(bvec2(lit, !blocked));
 #endif
         vec3 local = shadeLocal(l, n, rd, albedo, facing, lit);
@@ -814,16 +905,18 @@ vec3 radiance(Scene s, EyeRay eye, float coneSpread, out vec3 key, out vec3 keyN
         throughput *= mirror;
 
         // A curved mirror widens the ray cone: 2 * width * curvature (flat faces add nothing).
-        // The cone's side curves with radius r(y) across its axis; near the apex r(y) -> 0, so
-        // the curvature is capped at that of a mirror as small as the cone's own footprint.
+        // Where the new object's radius of curvature -> 0 (the cone's apex), the curvature is
+        // capped at that of a mirror as small as the cone's own footprint.
         float sphereSpread = 2.0 * coneWidth / s.sphereRadius;
-        float coneSideSpread = 2.0 * coneWidth / max(coneRadiusAt(p.y - s.cone.base.y), coneWidth);
-        coneSpread += id == ID_SPHERE ? sphereSpread : (id == ID_CONE ? coneSideSpread : 0.0);
+        float objectSpread = 2.0 * coneWidth / max(objectMirrorRadius(s, p), coneWidth);
+        coneSpread += id == ID_SPHERE ? sphereSpread : (id == ID_OBJECT ? objectSpread : 0.0);
         rd = reflect(rd, n);
-        // Leaving a convex solid: it cannot be hit again, so skip it. From inside: stay
-        // eligible, and start a few ulps inside the surface.
-        ro = mix(p, offsetAlong(p, -n), bvec3(inside));
-        hit = traceScene(s, ro, rd, inside ? ID_NONE : id, T_MAX);
+        // Leaving a convex solid: it cannot be hit again, so skip it. From inside, or leaving a
+        // solid it may meet again: stay eligible, and start a few ulps off the surface on the
+        // side the ray goes.
+        bool again = any(bvec2(inside, reenters(id)));
+        ro = mix(p, inside ? offsetAlong(p, -n) : leaveTorus(p, n), bvec3(again));
+        hit = traceScene(s, ro, rd, again ? ID_NONE : id, T_MAX);
         key.z = bounce == 0 ? float(hit.id) : key.z;
         if (hit.id == ID_NONE) {
             color += throughput * skyColor(rd);

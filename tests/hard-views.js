@@ -77,6 +77,44 @@ export const HARD_VIEWS = [
     params: { time: 0, CAMERA_ORBIT: [30, -20] },
   },
   {
+    name: 'torus-far',
+    what: 'the torus scene from 1e3 away (its quartic would lose most of its digits there; float32 spacing at 1e3 is 6e-5)',
+    params: { time: 0, SCENE: 2, CAMERA_DISTANCE: 1000, FIELD_OF_VIEW: 0.35 },
+    // 6 pixels of 57,600 over 2/255 where the cone's scene has 3 (telephoto-1e3): two where the
+    // torus's silhouette or its shadow's edge lands on the other side, and four 3 or 4 levels
+    // off in its reflections, whose start and normal carry the rounding of the 1e3 distance
+    // (the reflection starts moved off the torus by 32 ulps of 1e3: 2e-3). Measured with the
+    // starts moved by offsetAlong's 512 ulps instead: 0.67% of a closer view. One pixel over the
+    // 0.01% bound; the bound for this view.
+    maxOver2: 1.2e-4,
+    // With adaptive anti-aliasing, as for telephoto-1e3: 16 times as many rays graze each edge
+    // within rounding (20 pixels of 57,600 here, the same flips, not a new error).
+    adaptiveMaxOver2: 4e-4,
+  },
+  {
+    name: 'torus-thin',
+    what: "a torus whose tube is 1% of its radius, close up (the expanded quartic loses 13 of float32's 24 bits at r = 1e-2 R)",
+    params: { time: 0, SCENE: 2, TORUS_RADII: [0.55, 0.0055], CAMERA_TARGET: [1.2, 0.545, 1.1], CAMERA_DISTANCE: 2.2 },
+  },
+  {
+    name: 'torus-grazing',
+    what: "the eye in the torus's equatorial plane: rays tangent to its inner and outer equators and grazing its top and bottom circles",
+    params: {
+      time: 0,
+      SCENE: 2,
+      TORUS_AXIS: [0, 1, 0],
+      TORUS_CENTER: [1.2, 0.5, 1.1],
+      CAMERA_TARGET: [1.2, 0.5, 1.1],
+      CAMERA_ORBIT: [30, 0],
+      CAMERA_DISTANCE: 2.5,
+    },
+  },
+  {
+    name: 'cylinder-down-the-axis',
+    what: "looking straight down the cylinder's axis (rays along the axis: a = 0 in its quadratic, only the caps can be hit)",
+    params: { time: 0, SCENE: 1, CAMERA_TARGET: [1.2, 0.65, 1.1], CAMERA_ORBIT: [30, 90], CAMERA_DISTANCE: 3 },
+  },
+  {
     name: 'grazing-light',
     what: 'a light 0.3 above the ground and far to the side (shadow rays nearly parallel to the ground: acne territory)',
     params: { time: 0, LIGHT_POSITION: [-10, 0.3, 2] },

@@ -59,6 +59,10 @@ export const VIEWS = [
   // The eye under the ground: its underside, plain, where the cone's base and the cube's bottom
   // lie in its plane (they used to show through in speckles: issue 18).
   { name: 'below-ground', params: { time: 0, CAMERA_ORBIT: [30, -20] } },
+  // The assignment's other new objects, each in the cone's place (SCENE): a cylinder, and a
+  // torus that shows its hole and its inner wall.
+  { name: 'scene-cylinder', params: { time: 0, SCENE: 1 } },
+  { name: 'scene-torus', params: { time: 0, SCENE: 2 } },
 ];
 
 // ------------------------------------------------------------------------------------------------

@@ -14,6 +14,8 @@
 
 import { parseControls, parseConstants, controlDefaults, coerceControlValue } from '../shadertoy/controls.js';
 import { intersectPlane, intersectSphere, intersectBox, intersectCone } from './intersectors.js';
+import { intersectCylinder } from './cylinder.js';
+import { intersectTorus } from './torus.js';
 import { add, sub, scale, addScaled, dot, length, normalize, reflect, mix } from './vec3.js';
 import { PATTERNS, filteredPattern, groundFootprint } from './texture.js';
 import { progressiveJitter } from '../shadertoy/progressive.js';
@@ -23,7 +25,7 @@ const ID_NONE = -1;
 const ID_GROUND = 0;
 const ID_SPHERE = 1;
 const ID_CUBE = 2;
-const ID_CONE = 3;
+const ID_OBJECT = 3; // the new object of the scene (SCENE): cone, cylinder or torus
 const GROUND = [0, 1, 0, 0];
 
 /**
@@ -46,23 +48,65 @@ export function referenceSettings(shaderSource, overrides = {}) {
   return { ...parseConstants(shaderSource), ...values };
 }
 
+/**
+ * The new object of a scene (the shader's SCENE): its intersector, colour, reflectivity, its
+ * radius of curvature as a mirror at a point, and whether a ray leaving it can meet it again.
+ */
+function sceneObject(s) {
+  if (s.SCENE === 1) {
+    const top = add(s.CYLINDER_BASE, [0, s.CYLINDER_HEIGHT, 0]);
+    return {
+      intersect: (ro, rd) => intersectCylinder(ro, rd, s.CYLINDER_BASE, top, s.CYLINDER_RADIUS),
+      color: s.CYLINDER_COLOR,
+      reflectivity: s.CYLINDER_REFLECTIVITY,
+      mirrorRadius: () => s.CYLINDER_RADIUS,
+      reenters: false,
+    };
+  }
+  if (s.SCENE === 2) {
+    const axis = dot(s.TORUS_AXIS, s.TORUS_AXIS) > 0 ? s.TORUS_AXIS : [0, 1, 0];
+    const [major, minorWanted] = s.TORUS_RADII;
+    const minor = Math.min(minorWanted, major);
+    return {
+      intersect: (ro, rd) => intersectTorus(ro, rd, s.TORUS_CENTER, axis, major, minor),
+      color: s.TORUS_COLOR,
+      reflectivity: s.TORUS_REFLECTIVITY,
+      mirrorRadius: () => minor,
+      reenters: true,
+    };
+  }
+  const apex = add(s.CONE_BASE, [0, s.CONE_HEIGHT, 0]);
+  return {
+    intersect: (ro, rd) => intersectCone(ro, rd, s.CONE_BASE, apex, s.CONE_RADIUS, 0),
+    color: s.CONE_COLOR,
+    reflectivity: s.CONE_REFLECTIVITY,
+    mirrorRadius: (p) => s.CONE_RADIUS * Math.max(1 - (p[1] - s.CONE_BASE[1]) / s.CONE_HEIGHT, 0),
+    reenters: false,
+  };
+}
+
 /** A scene tracer bound to one set of settings. */
 function makeScene(s) {
-  const coneApex = add(s.CONE_BASE, [0, s.CONE_HEIGHT, 0]);
-  const colors = { [ID_SPHERE]: s.SPHERE_COLOR, [ID_CUBE]: s.CUBE_COLOR, [ID_CONE]: s.CONE_COLOR };
+  const object = sceneObject(s);
+  const colors = { [ID_SPHERE]: s.SPHERE_COLOR, [ID_CUBE]: s.CUBE_COLOR, [ID_OBJECT]: object.color };
   const reflectivity = {
     [ID_GROUND]: s.GROUND_REFLECTIVITY,
     [ID_SPHERE]: s.SPHERE_REFLECTIVITY,
     [ID_CUBE]: s.CUBE_REFLECTIVITY,
-    [ID_CONE]: s.CONE_REFLECTIVITY,
+    [ID_OBJECT]: object.reflectivity,
   };
   /** @type {Array<[number, (ro: number[], rd: number[]) => readonly number[]]>} */
   const objects = [
     [ID_GROUND, (ro, rd) => intersectPlane(ro, rd, GROUND)],
     [ID_SPHERE, (ro, rd) => intersectSphere(ro, rd, s.SPHERE_CENTER, s.SPHERE_RADIUS)],
     [ID_CUBE, (ro, rd) => intersectBox(ro, rd, s.CUBE_CENTER, s.CUBE_HALF_SIZE)],
-    [ID_CONE, (ro, rd) => intersectCone(ro, rd, s.CONE_BASE, coneApex, s.CONE_RADIUS, 0)],
+    [ID_OBJECT, object.intersect],
   ];
+  /** float64 needs no ulp scheme: a relative 1e-12 step off the surface is far below anything
+   * float32 can resolve and far above float64's own rounding. @param {number[]} p @param {number[]} n @param {number} side */
+  const offAlong = (p, n, side) => addScaled(p, n, side * 1e-12 * (1 + length(p)));
+  /** Whether a ray leaving the surface of `id` may meet it again (the torus: the shader's reenters). */
+  const reenters = (id) => id === ID_OBJECT && object.reenters;
 
   /**
    * The nearest hit from ro along rd, leaving out skipId. A hit whose point lies within the
@@ -114,7 +158,7 @@ function makeScene(s) {
     const l = scale(toLight, 1 / lightDist);
     const facing = dot(n, l);
     if (facing <= 0) return color;
-    if (s.SHADOWS && occluded(p, l, lightDist, id)) return color;
+    if (s.SHADOWS && (reenters(id) ? occluded(offAlong(p, n, 1), l, lightDist, ID_NONE) : occluded(p, l, lightDist, id))) return color;
     const highlight = Math.max(dot(reflect(scale(l, -1), n), scale(rd, -1)), 0) ** s.SHININESS;
     const specular = s.SPECULAR * highlight;
     return [color[0] + facing * albedo[0] + specular, color[1] + facing * albedo[1] + specular, color[2] + facing * albedo[2] + specular];
@@ -158,15 +202,11 @@ function makeScene(s) {
       color = addScaled(color, local, throughput * (1 - mirror));
       throughput *= mirror;
       if (id === ID_SPHERE) coneSpread += (2 * coneWidth) / s.SPHERE_RADIUS;
-      if (id === ID_CONE) {
-        const radiusHere = s.CONE_RADIUS * Math.max(1 - (p[1] - s.CONE_BASE[1]) / s.CONE_HEIGHT, 0);
-        coneSpread += (2 * coneWidth) / Math.max(radiusHere, coneWidth);
-      }
+      if (id === ID_OBJECT) coneSpread += (2 * coneWidth) / Math.max(object.mirrorRadius(p), coneWidth);
       rd = reflect(rd, n);
-      // float64 needs no ulp scheme: a relative 1e-12 step inside the surface is far below
-      // anything float32 can resolve and far above float64's own rounding.
-      ro = inside ? addScaled(p, n, -1e-12 * (1 + length(p))) : p;
-      skipId = inside ? ID_NONE : id;
+      const again = inside || reenters(id);
+      ro = again ? offAlong(p, n, inside ? -1 : 1) : p;
+      skipId = again ? ID_NONE : id;
     }
     return color;
   }

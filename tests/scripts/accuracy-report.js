@@ -1,4 +1,4 @@
-// The accuracy table: every hard view (tests/hard-views.js) and the default view, rendered by the
+// The accuracy table: every hard view (tests/hard-views.js) and each scene's default view, rendered by the
 // page in headless Chromium and compared with the float64 reference twice: with the same rays
 // (arithmetic error alone) and converged (64 jittered samples per pixel, texture point-sampled:
 // the total error, aliasing included). Each view is measured at one sample per pixel and with
@@ -21,7 +21,13 @@ import { DEFAULT_SIZE, viewSize } from '../views.js';
 import { replaceMarkedSection } from './readme-section.js';
 
 const CONVERGED_SAMPLES_PER_AXIS = 8;
-const VIEWS = [{ name: 'default', what: 'the default view', params: { time: 0 } }, ...HARD_VIEWS];
+// The default view of each scene (SCENE: the cone, the cylinder, the torus), then the hard views.
+const VIEWS = [
+  { name: 'default', what: 'the default view', params: { time: 0 } },
+  { name: 'scene-cylinder', what: 'the default view of the cylinder scene', params: { time: 0, SCENE: 1 } },
+  { name: 'scene-torus', what: 'the default view of the torus scene', params: { time: 0, SCENE: 2 } },
+  ...HARD_VIEWS,
+];
 
 const ADAPTIVE = { SAMPLES: 16, ADAPTIVE_AA: 1 };
 
