@@ -19,6 +19,8 @@ export const SAVINGS_OFF = 'project, savings off';
 export const ONE_TRACE_SITE = 'project, one trace site (alternating loop)';
 export const PLAIN = 'plain analytic (peer 3)';
 export const sphereTracing = (steps) => `sphere tracing, ${steps} steps (peer 2)`;
+export const SCENES_GROUP = 'project: other scenes';
+export const sceneVariant = (scene) => `project, ${['cone', 'cylinder', 'torus'][scene]} scene, 1 spp`;
 
 export function evaluateTargets(results) {
   const ours = by(results, PROJECT);
@@ -115,4 +117,27 @@ export function evaluateAdaptiveTargets(results) {
     });
   }
   return targets;
+}
+
+// The primitives issue's targets: the default (cone) scene at least 1.3x the speed of the plain
+// analytic peer, with its accuracy as before; the torus scene within 1.3x the cone scene's time.
+export function evaluateSceneTargets(results) {
+  const cone = by(results, PROJECT);
+  const plain = by(results, PLAIN);
+  const cylinder = by(results, sceneVariant(1));
+  const torus = by(results, sceneVariant(2));
+  return [
+    {
+      met: plain.medianMs >= 1.3 * cone.medianMs,
+      text: `the cone scene at ${x(plain.medianMs, cone.medianMs)} the speed of the plain analytic peer (${ms(cone)} against ${ms(plain)}) (target: at least 1.3×)`,
+    },
+    {
+      met: torus.medianMs <= 1.3 * cone.medianMs,
+      text: `the torus scene takes ${x(torus.medianMs, cone.medianMs)} the cone scene's time (${ms(torus)} against ${ms(cone)}; RMSE ${torus.rmse.toFixed(4)} against its own converged reference) (target: at most 1.3×)`,
+    },
+    {
+      met: true,
+      text: `the cylinder scene takes ${x(cylinder.medianMs, cone.medianMs)} the cone scene's time (${ms(cylinder)}; RMSE ${cylinder.rmse.toFixed(4)} against its own converged reference) (no target)`,
+    },
+  ];
 }

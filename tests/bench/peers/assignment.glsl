@@ -190,7 +190,7 @@ int traceScene(Scene s, vec3 ro, vec3 rd, out float hitDist, out vec3 hitNormal)
     rayPlaneIntersection(ro, rd, s.ground.xyz, s.ground.w, ID_GROUND, hitDist, hitId, hitNormal);
     addSphere(ro, rd, s.sphereCenter, s.sphereRadius, ID_SPHERE, hitDist, hitId, hitNormal);
     addBox(ro, rd, s.cubeCenter, s.cubeHalfSize, ID_CUBE, hitDist, hitId, hitNormal);
-    addCone(ro, rd, s.cone.base, CONE_RADIUS, CONE_HEIGHT, ID_CONE, hitDist, hitId, hitNormal);
+    addCone(ro, rd, s.cone.base, CONE_RADIUS, CONE_HEIGHT, ID_OBJECT, hitDist, hitId, hitNormal);
     return hitId;
 }
 

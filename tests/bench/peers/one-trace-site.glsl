@@ -55,8 +55,8 @@ vec3 radiance(Scene s, EyeRay eye, float coneSpread, out vec3 key, out vec3 keyN
         bool canBeLit = all(bvec2(!inside, facing > 0.0));
         float m = s.reflectivity[id];
         float sphereSpread = 2.0 * width / s.sphereRadius;
-        float coneSideSpread = 2.0 * width / max(coneRadiusAt(p.y - s.cone.base.y), width);
-        float spread = id == ID_SPHERE ? sphereSpread : (id == ID_CONE ? coneSideSpread : 0.0);
+        float coneSideSpread = 2.0 * width / max(objectMirrorRadius(s, p), width);
+        float spread = id == ID_SPHERE ? sphereSpread : (id == ID_OBJECT ? coneSideSpread : 0.0);
         bool needShadow = all(bvec3(newSurface, canBeLit, SHADOWS != 0));
 
         litLocal = mix(litLocal, shadeLocal(l, n, rd, albedo, facing, true), bvec3(newSurface));

@@ -141,7 +141,7 @@ Hit traceScene(Scene s, vec3 ro, vec3 rd, float tMax) {
     h = intersectBox(ro, rd, s.cubeCenter, s.cubeHalfSize);
     if (h.x > 0.0 && h.x < hit.t) hit = Hit(h.x, h.yzw, ID_CUBE);
     h = intersectCone(ro, rd, s.cone.base, s.cone.base + vec3(0.0, CONE_HEIGHT, 0.0), CONE_RADIUS, 0.0);
-    if (h.x > 0.0 && h.x < hit.t) hit = Hit(h.x, h.yzw, ID_CONE);
+    if (h.x > 0.0 && h.x < hit.t) hit = Hit(h.x, h.yzw, ID_OBJECT);
     return hit;
 }
 

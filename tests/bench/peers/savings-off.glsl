@@ -51,7 +51,7 @@ vec3 radiance(Scene s, EyeRay eye, float coneSpread, out vec3 key, out vec3 keyN
         color += throughput * (1.0 - mirror) * local;
         throughput *= mirror;
         if (id == ID_SPHERE) coneSpread += 2.0 * coneWidth / s.sphereRadius;
-        if (id == ID_CONE) coneSpread += 2.0 * coneWidth / max(coneRadiusAt(p.y - s.cone.base.y), coneWidth);
+        if (id == ID_OBJECT) coneSpread += 2.0 * coneWidth / max(objectMirrorRadius(s, p), coneWidth);
         rd = reflect(rd, n);
         ro = inside ? offsetAlong(p, -n) : p;
         skipId = inside ? ID_NONE : id;

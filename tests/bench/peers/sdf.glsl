@@ -125,7 +125,7 @@ float sceneDistance(Scene s, vec3 p, out int id) {
     float dCube = sdBox(p, s.cubeCenter, s.cubeHalfSize);
     if (dCube < d) { d = dCube; id = ID_CUBE; }
     float dCone = sdCone(p, s.cone.base, s.cone.base + vec3(0.0, CONE_HEIGHT, 0.0), CONE_RADIUS);
-    if (dCone < d) { d = dCone; id = ID_CONE; }
+    if (dCone < d) { d = dCone; id = ID_OBJECT; }
     return d;
 }
 
@@ -233,7 +233,7 @@ vec3 radiance(Scene s, EyeRay eye, float coneSpread, out vec3 key, out vec3 keyN
         // The project's widening of the ray cone on curved mirrors (see its radiance): the cone's
         // side has radius CONE_RADIUS (1 - height / CONE_HEIGHT) across its axis.
         if (id == ID_SPHERE) coneSpread += 2.0 * coneWidth / s.sphereRadius;
-        if (id == ID_CONE) {
+        if (id == ID_OBJECT) {
             float radiusHere = CONE_RADIUS * max(1.0 - (hit.y - s.cone.base.y) / CONE_HEIGHT, 0.0);
             coneSpread += 2.0 * coneWidth / max(radiusHere, coneWidth);
         }
