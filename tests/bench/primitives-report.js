@@ -36,7 +36,7 @@ export function primitivesMarkdown({ timed, errors, setup, environment }) {
   const ours = (kind) => rows.find((t) => t.kind === kind && t.form === 'ours');
   const table = rows.map((t) => {
     const e = errors[t.form][t.kind];
-    const vsOurs = t.form === 'ours' ? '1' : `${(t.ns.median / ours(t.kind).ns.median).toFixed(2)}×`;
+    const vsOurs = t.form === 'ours' ? '1×' : `${(t.ns.median / ours(t.kind).ns.median).toFixed(2)}×`;
     return [
       t.form === 'ours' ? `**${t.kind}**` : '',
       FORM_NAMES[t.form],
