@@ -4,8 +4,8 @@
 //   npm run bench:primitives              times and judges; writes tests/bench/primitives.md and
 //                                         the table in README.md (a few minutes)
 //   npm run bench:primitives -- --quick   every program at 32x18, one warm-up and one timed frame,
-//                                         the hard cases judged;
-//                                         writes nothing (a smoke run: it cannot rot)
+//                                         and the hard cases judged; writes nothing (a smoke run,
+//                                         about 25 s, so that it cannot rot)
 //
 // Speed: a micro-benchmark of CALLS intersector calls a pixel at 640x360 (timingMain below), each
 // on its own ray; the same loop with a stand-in that costs nothing but reading the ray is the
@@ -41,6 +41,9 @@ const WARMUP = quick ? 1 : 2;
 // each shape, about there, fills about half the view (the share of the timed rays that hit is in
 // the table). The plane lies 1 below the eye, parallel to the view direction: its horizon halves
 // the view, and the rays near it meet it far away and at a grazing angle, as a ground's do.
+// Both sides run this same call text (the iq peer's #defines rename it): the shape's parameters
+// are constants, so what depends on the shape alone (our makeCone, the ba and m0 of iq's form) the
+// compiler may fold or hoist for either; what depends on the ray it cannot.
 const SHAPES = {
   plane: 'intersectPlane(ro, rd, vec4(up, 1.0 - dot(up, EYE)), T_MAX)',
   sphere: 'intersectSphere(ro, rd, vec3(0.0, 0.5, 0.0), 1.3, T_MAX)',
