@@ -476,7 +476,8 @@ vec4 intersectTorus(vec3 ro, vec3 rd, Torus torus, float tMax) {
     // Start where the chord across the gap crosses 0: g is a distance, close to linear. Trips on
     // the test rays: 5 or fewer for 92%, at most 11 (near-tangent rays, where Newton's convergence
     // is linear); the cap of 16 is never reached there. Cost on SwiftShader (npm run
-    // bench:primitives, one call a pixel at 640x360): about 3 times the cone's, the loops ~15% of it.
+    // bench:primitives, 32 calls a pixel at 640x360): 95 ns a call, 5.2 times the cone's; a
+    // Ferrari closed form costs a third of that and gets half the hard cases wrong.
     vec4 root = mix(0.5 * (left + right), left + (right - left) * gLeft / (gLeft - gRight), crosses);
     for (int trip = 1;; trip++) {
         vec4 g = torusDistance(ray, root, slope);
@@ -826,6 +827,155 @@ bool reenters(int id) {
 #endif
 }
 
+// ---- edges: the first sample's own near-miss tests ------------------------------------------
+// With adaptive anti-aliasing a pixel takes the n x n grid of samples when its first sample lies
+// near an edge it cannot resolve. Each pixel tests its own rays: the eye ray stands for a cone as
+// wide as the pixel's footprint (the ray cone the texture filter uses), and the pixel is near a
+// silhouette when an object's outline passes within that width of the ray, in front of what the
+// ray hit; near a shadow boundary when the shadow ray's cone (from the footprint on the surface
+// to a point at the light) grazes an occluder; near a reflected silhouette when the first
+// reflected ray's cone grazes an outline. Closed forms per primitive, no extra trace. (A host may
+// define EDGE_TESTS 0 before the file: the progressive form, whose samples are points.)
+#ifndef EDGE_TESTS
+#define EDGE_TESTS (ADAPTIVE_AA == 1 && SAMPLES > 1)
+#endif
+
+#if EDGE_TESTS
+// What the first sample's path did at its first surface, recorded by radiance for the edge tests.
+struct FirstPath {
+    float t;            // the eye ray's hit (T_MAX for the sky)
+    vec3 p, l;          // the first surface point, the direction to the light
+    float lightDist;
+    float facing;       // n.l there: a surface facing away from the light has no shadow boundary
+    float width;        // the eye ray's cone width at p
+    vec3 reflected;     // the first reflected ray, from p
+    float reflectedT;   // its hit
+    float spread;       // its cone's widening per unit of distance
+    float reflects;     // 1 when the path reflected at its first surface
+    int id;
+};
+FirstPath firstPath;
+
+// A ray standing for a cone: its width at distance t is w0 + w1 t (w1 < 0: one that narrows to a
+// point at the end, as a shadow ray's towards a point light), tested for outlines up to tEnd.
+struct RayCone {
+    vec3 ro, rd;
+    float w0, w1, tEnd;
+};
+
+float widthAt(RayCone c, float t) {
+    return max(c.w0 + c.w1 * t, 0.0);
+}
+
+// The sphere's outline: the ray passes at |offAxis| from the centre; the outline is within the
+// cone when |offAxis| - r is within its width there, and in front of where the cone ends.
+bool nearSphere(RayCone c, vec3 center, float radius) {
+    vec3 f = center - c.ro;
+    float along = dot(f, c.rd);
+    float off = length(f - along * c.rd);
+    return all(bvec3(abs(off - radius) < widthAt(c, along), along + radius > 0.0, along - radius < c.tEnd));
+}
+
+// A box's outline: the ray hits the box grown by the cone's width (half-sizes + w: each slab's
+// interval wider by w / |rd_i|) and misses it shrunk by w. One slab computation, as intersectBox's.
+bool nearBox(RayCone c, vec3 center, vec3 halfSize) {
+    vec3 o = c.ro - center;
+    float w = widthAt(c, max(-dot(o, c.rd), 0.0));
+    bvec3 parallel = equal(c.rd, vec3(0.0));
+    vec3 inv = 1.0 / mix(c.rd, vec3(1.0), parallel);
+    vec3 tA = (-halfSize - o) * inv, tB = (halfSize - o) * inv;
+    vec3 grow = mix(w * abs(inv), vec3(0.0), parallel);
+    vec3 tIn = mix(min(tA, tB), vec3(-T_MAX), parallel), tOut = mix(max(tA, tB), vec3(T_MAX), parallel);
+    vec3 margin = halfSize - abs(o);  // a parallel axis: how far inside its slab the ray runs
+    vec3 inGrown = tIn - grow, outGrown = tOut + grow, inShrunk = tIn + grow, outShrunk = tOut - grow;
+    float enterGrown = max(max(inGrown.x, inGrown.y), inGrown.z), exitGrown = min(min(outGrown.x, outGrown.y), outGrown.z);
+    float enterShrunk = max(max(inShrunk.x, inShrunk.y), inShrunk.z), exitShrunk = min(min(outShrunk.x, outShrunk.y), outShrunk.z);
+    bool grown = all(bvec4(enterGrown <= exitGrown, exitGrown > 0.0, enterGrown < c.tEnd, !any(lessThan(mix(vec3(1.0), margin + w, parallel), vec3(0.0)))));
+    bool shrunk = all(bvec3(enterShrunk <= exitShrunk, exitShrunk > 0.0, !any(lessThan(mix(vec3(1.0), margin - w, parallel), vec3(0.0)))));
+    return all(bvec2(grown, !shrunk));
+}
+
+// The outline of a capped solid of revolution about the unit axis from base, radius ra + k y at
+// height y in [0, H] (the cone, and the cylinder with k = 0). Along the ray (axial coordinate
+// y(t), distance rho(t) from the axis, rho^2 = m2 + a (t - tc)^2 as for the torus), the distance
+// to the side's generator line is D(t) = (rho - ra - k y) / sqrt(1 + k^2); its extremum is where
+// rho' = k y', at t = tc + u, u = k yd sqrt(m2 / (a (a - k^2 yd^2))) (none for a ray steeper than
+// the side). There the side's outline is within the cone if |D| is. The rims: where the ray
+// crosses a cap's plane at rho, the rim is |rho - r| away in that plane, |rho - r| |yd| across the
+// ray. (The apex is the top rim of radius 0.)
+bool nearRevolution(RayCone c, vec3 base, vec3 axis, float height, float ra, float k, float bound) {
+    vec3 o = c.ro - base;
+    float yo = dot(o, axis), yd = dot(c.rd, axis);
+    vec3 oPerp = o - yo * axis, dPerp = c.rd - yd * axis;
+    float a = dot(dPerp, dPerp);
+    float tc = a > 0.0 ? -dot(oPerp, dPerp) / a : 0.0;
+    vec3 closest = oPerp + tc * dPerp;
+    float m2 = dot(closest, closest);
+    float steep = a * (a - k * k * yd * yd);
+    float u = steep > 0.0 ? k * yd * sqrt(m2 / steep) : 0.0;
+    float tSide = tc + u;
+    float ySide = yo + yd * tSide;
+    float side = abs(sqrt(m2 + a * u * u) - ra - k * ySide) * inversesqrt(1.0 + k * k);
+    float wSide = widthAt(c, tSide);
+    bool nearSide = all(bvec4(steep > 0.0, side < wSide, ySide > -wSide, ySide < height + wSide));
+    vec2 tCap = (vec2(0.0, height) - yo) / yd;
+    vec2 rhoCap = vec2(length(oPerp + tCap.x * dPerp), length(oPerp + tCap.y * dPerp));
+    vec2 rim = abs(rhoCap - vec2(ra, ra + k * height)) * abs(yd);
+    bvec2 nearRim = lessThan(rim, vec2(widthAt(c, tCap.x), widthAt(c, tCap.y)));
+    bool inFront = all(bvec2(tc + bound > 0.0, tc - bound < c.tEnd));
+    bool rims = all(bvec2(yd != 0.0, any(nearRim)));  // a ray parallel to the caps crosses no rim
+    return all(bvec2(inFront, any(bvec2(nearSide, rims))));
+}
+
+// The ground's outline is the horizon: a ray cone that meets it within its own spread of parallel.
+bool nearHorizon(RayCone c, vec4 plane) {
+    return abs(dot(plane.xyz, c.rd)) < c.w1;
+}
+
+// Whether the cone passes near an outline of the scene: every object but `skipId` (the convex
+// solid a secondary ray leaves, whose own outline is not in its way).
+bool nearOutline(Scene s, RayCone c, int skipId) {
+    bool sphere = all(bvec2(skipId != ID_SPHERE, nearSphere(c, s.sphereCenter, s.sphereRadius)));
+    bool cube = all(bvec2(skipId != ID_CUBE, nearBox(c, s.cubeCenter, s.cubeHalfSize)));
+#if SCENE == 0
+    bool object = nearRevolution(c, s.cone.base, s.cone.axis, s.cone.height, s.cone.ra, s.cone.slope, s.cone.boundRadius);
+#elif SCENE == 1
+    bool object = nearRevolution(c, s.cylinder.base, s.cylinder.axis, s.cylinder.height, s.cylinder.radius, 0.0, s.cylinder.boundRadius);
+#else
+    // The torus's outline has no cheap closed form (its distance from a line is a quartic's
+    // root again). By its definition, the cone hitting the torus with its tube grown by the
+    // cone's width and missing it shrunk, it took two more solves per ray: six per sample, and
+    // SwiftShader runs a quad's every trip through them (the torus scene's adaptive frame went
+    // from seconds to over 90 s at 320x180). So the torus's edges are the quad's to find.
+    bool object = false;
+#endif
+    object = all(bvec2(skipId != ID_OBJECT, object));
+    return any(bvec4(sphere, cube, object, nearHorizon(c, s.ground)));
+}
+
+// How near an outline must pass, in units of the cone's width (a sample's footprint, 1 pixel for
+// the first sample): an outline that crosses the pixel passes within 0.5 of its centre across it
+// (0.71 at its corners). Measured at 640x360 against the converged reference, 16 samples at
+// edges: reach 0.5, RMSE 0.0034 with 1.9% of pixels marked by these tests; 0.65, 0.0033 and 2.6%;
+// 0.8, 0.0033 and 3.0%; 1, 0.0032 and 3.7%. The quad's sharing (mainImage) gives back what 0.5
+// leaves at the corners.
+const float EDGE_REACH = 0.5;
+
+// The first sample's edge tests, from what radiance recorded of its path: (silhouette, shadow
+// boundary, reflected silhouette), each 1 when its cone grazes an outline. pixelSpread is the
+// angle the pixel subtends.
+vec3 firstSampleEdges(Scene s, vec3 eyeDir, float pixelSpread) {
+    FirstPath f = firstPath;
+    float w = EDGE_REACH * f.width;
+    bool silhouette = nearOutline(s, RayCone(vec3(0.0), eyeDir, 0.0, EDGE_REACH * pixelSpread, f.t), ID_NONE);
+    bool lit = all(bvec2(f.id != ID_NONE, f.facing > 0.0));
+    int leaving = reenters(f.id) ? ID_NONE : f.id;  // the torus may shade and mirror itself
+    bool shadow = all(bvec2(lit, nearOutline(s, RayCone(f.p, f.l, w, -w / f.lightDist, f.lightDist), leaving)));
+    bool reflection = all(bvec2(f.reflects > 0.0, nearOutline(s, RayCone(f.p, f.reflected, w, EDGE_REACH * f.spread, f.reflectedT), leaving)));
+    return vec3(silhouette, shadow, reflection);
+}
+#endif
+
 // An eye ray, and how its direction changes across the footprint of its sample along image x and
 // y: ray differentials (Igehy, "Tracing ray differentials", 1999). They give the exact
 // footprint of the sample where the eye ray meets the ground.
@@ -860,6 +1010,9 @@ vec3 radiance(Scene s, EyeRay eye, float coneSpread, out vec3 key, out vec3 keyN
     Hit hit = traceScene(s, ro, rd, ID_NONE, T_MAX);
     key = vec3(float(hit.id), 0.0, float(ID_NONE));
     keyNormal = hit.n;
+#if EDGE_TESTS
+    firstPath = FirstPath(hit.t, vec3(0.0), vec3(0.0), 0.0, 0.0, 0.0, vec3(0.0), T_MAX, 0.0, 0.0, hit.id);
+#endif
     if (hit.id == ID_NONE) return skyColor(rd);
     // Where the eye ray meets the ground, the parallelogram its differentials span on the plane:
     // dp = t (dd - d (n.dd) / (n.d)) with n = +y. Once, before the loop: only the first hit uses it.
@@ -892,6 +1045,15 @@ vec3 radiance(Scene s, EyeRay eye, float coneSpread, out vec3 key, out vec3 keyN
 #endif
         vec3 local = shadeLocal(l, n, rd, albedo, facing, lit);
         key.y = bounce == 0 ? float(lit) : key.y;
+#if EDGE_TESTS
+        if (bounce == 0) {
+            firstPath.p = p;
+            firstPath.l = l;
+            firstPath.lightDist = lightDist;
+            firstPath.facing = facing;
+            firstPath.width = coneWidth;
+        }
+#endif
 
         float mirror = s.reflectivity[id];
         // At the bounce limit the surface keeps all its weight as local colour, so lowering the
@@ -918,6 +1080,14 @@ vec3 radiance(Scene s, EyeRay eye, float coneSpread, out vec3 key, out vec3 keyN
         ro = mix(p, inside ? offsetAlong(p, -n) : leaveTorus(p, n), bvec3(again));
         hit = traceScene(s, ro, rd, again ? ID_NONE : id, T_MAX);
         key.z = bounce == 0 ? float(hit.id) : key.z;
+#if EDGE_TESTS
+        if (bounce == 0) {
+            firstPath.reflected = rd;
+            firstPath.reflectedT = hit.t;
+            firstPath.spread = coneSpread;
+            firstPath.reflects = 1.0;
+        }
+#endif
         if (hit.id == ID_NONE) {
             color += throughput * skyColor(rd);
             break;
@@ -1003,6 +1173,9 @@ void mainImage(out vec4 fragColor, in vec2 fragCoord) {
     float pixelSpread = 2.0 * camera.tanHalfFov / iResolution.y;
     vec3 key, keyNormal;
     bool edge = false;
+    // Which test gave the pixel its extra samples: (silhouette, shadow boundary, reflected
+    // silhouette, the quad's derivatives), for the debug view.
+    vec4 edges = vec4(0.0);
 #if SAMPLES_PER_AXIS == 1
     // One sample at the pixel centre, the whole pixel its footprint, and no loop around it (a
     // loop costs SwiftShader one more pass over its body than it has trips; see radiance).
@@ -1016,21 +1189,39 @@ void mainImage(out vec4 fragColor, in vec2 fragCoord) {
         int cell = max(i - 1, 0);  // (GLSL leaves % of a negative number undefined)
         vec2 offset = (vec2(cell % N, cell / N) + 0.5) / float(N) - 0.5;
         float footprint = i == 0 ? 1.0 : 1.0 / float(N);
-        vec3 c = radiance(s, eyeRay(camera, fragCoord + (i == 0 ? vec2(0.0) : offset), footprint), pixelSpread * footprint, key, keyNormal);
+        EyeRay ray = eyeRay(camera, fragCoord + (i == 0 ? vec2(0.0) : offset), footprint);
+        vec3 c = radiance(s, ray, pixelSpread * footprint, key, keyNormal);
         if (i == 0) {
-            // Near an edge the first sample cannot resolve (a silhouette, a crease, a shadow
-            // boundary, the silhouette of a reflection)? The 2x2 pixel quad knows it for free: the
-            // derivatives of what each pixel's first sample saw. Derivatives are defined only in
+            // Near an edge the first sample cannot resolve? Each pixel asks its own rays
+            // (firstSampleEdges: a silhouette, a shadow boundary, a reflected silhouette within
+            // reach of its cones), and the 2x2 quad adds, from the derivatives of what each of its
+            // pixels' first samples saw, what those cannot see: a crease (a normal that turns by
+            // more than a crease would: the sum of the absolute changes of its components over
+            // the quad, at most ~0.1 across a pixel of the sphere at 640x360, at least 1 across
+            // an edge of the cube), two surfaces meeting, and any change of object, of lit or
+            // shadowed, or of the object in the first reflection. Derivatives are defined only in
             // uniform control flow: trip 0 is, since no pixel can leave the loop before its first
             // exit test, at the bottom. The ground's stripes are already filtered over each
-            // pixel's footprint: they are not in the key.
-            // Any change of object, of lit or shadowed, or of the object seen in the first
-            // reflection; or a normal that turns by more than a crease would (the sum of the
-            // absolute changes of its components over the quad: at most ~0.1 across a pixel of the
-            // sphere at 640x360, at least 1 across an edge of the cube).
+            // pixel's footprint: they are in neither test. Measured (640x360, the default view):
+            // the tests of its own rays mark 1.9% of the pixels (silhouettes 0.8%, shadow
+            // boundaries 0.2%, reflected silhouettes 0.9%), the quad's derivatives 1.0% more, the
+            // quad's sharing (below) 0.7%; the quad test alone marked 2.1% and missed the edges
+            // that run between quads.
             vec3 keyStep = abs(dFdx(key)) + abs(dFdy(key));
             float normalStep = dot(abs(dFdx(keyNormal)) + abs(dFdy(keyNormal)), vec3(1.0));
-            edge = any(bvec2(any(greaterThan(keyStep, vec3(0.0))), normalStep > 0.5));
+            bool quad = any(bvec2(any(greaterThan(keyStep, vec3(0.0))), normalStep > 0.5));
+#if EDGE_TESTS
+            edges = vec4(firstSampleEdges(s, ray.dir, pixelSpread), float(quad));
+#else
+            edges = vec4(0.0, 0.0, 0.0, float(quad));
+#endif
+            // SwiftShader runs a quad's four pixels together through the trips any of them
+            // takes: once one of them takes the extra samples, the others take them too, at no
+            // cost (an edge found in one pixel of a quad runs on into its neighbours).
+            float own = float(any(greaterThan(edges, vec4(0.0))));
+            float marked = max(own, abs(dFdx(own)));
+            marked = max(marked, abs(dFdy(marked)));
+            edge = marked > 0.0;
         }
         linear = i <= 1 ? c : linear + c;
         if (any(bvec2(!edge, i == N * N))) break;
@@ -1047,8 +1238,13 @@ void mainImage(out vec4 fragColor, in vec2 fragCoord) {
     linear /= float(N * N);
 #endif
 #if SHOW_AA_PIXELS
-    // The pixels that took extra samples in magenta, over the picture in grey.
-    linear = edge ? vec3(1.0, 0.0, 1.0) : vec3(0.25 + 0.5 * dot(linear, vec3(0.299, 0.587, 0.114)));
+    // The pixels that took extra samples, over the picture in grey, coloured by the first test
+    // that marked them: magenta a silhouette, yellow a shadow boundary, cyan a reflected
+    // silhouette, green only the quad's derivatives (a crease, two surfaces meeting), blue none
+    // of its own: a pixel of a quad another pixel marked.
+    vec3 marked = edges.x > 0.0 ? vec3(1.0, 0.0, 1.0) : (edges.y > 0.0 ? vec3(1.0, 1.0, 0.0) : (edges.z > 0.0 ? vec3(0.0, 1.0, 1.0) : vec3(0.0, 1.0, 0.0)));
+    marked = any(greaterThan(edges, vec4(0.0))) ? marked : vec3(0.0, 0.0, 1.0);
+    linear = edge ? marked : vec3(0.25 + 0.5 * dot(linear, vec3(0.299, 0.587, 0.114)));
 #endif
     fragColor = vec4(clamp(linear, 0.0, 1.0), 1.0);
 }

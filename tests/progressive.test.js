@@ -27,7 +27,9 @@ const tabs = progressiveTabs(source);
 
 describe('progressive tabs, built from raytrace.glsl', () => {
   test('Buffer A holds the file verbatim, its mainImage renamed by a macro; Common reads no uniform', () => {
-    expect(tabs.bufferA.startsWith('#define mainImage raytraceMainImage\n' + source + '#undef mainImage\n')).toBe(true);
+    expect(tabs.bufferA.startsWith('#define EDGE_TESTS 0\n#define mainImage raytraceMainImage\n' + source + '#undef mainImage\n')).toBe(
+      true,
+    );
     expect(tabs.bufferA.split('\n')[RAYTRACE_FIRST_BUFFER_LINE - 1]).toBe(source.split('\n')[0]);
     expect(tabs.bufferA).toMatch(/void mainImage\(out vec4 fragColor, in vec2 fragCoord\)/);
     expect(tabs.image).toMatch(/void mainImage\(out vec4 fragColor, in vec2 fragCoord\)/);

@@ -211,10 +211,11 @@ void mainImage(out vec4 fragColor, in vec2 fragCoord) {
  */
 export function progressiveTabs(raytraceSource) {
   const controls = parseControls(raytraceSource);
-  // The rename is a macro, so the file's own text (and its line numbers, plus one) stay as they
+  // The rename is a macro, so the file's own text (and its line numbers, plus two) stay as they
   // are; the header's prototype `void mainImage(out vec4, in vec2);` is the tab's own mainImage.
+  // Its samples are points, one a frame: the adaptive anti-aliasing's edge tests are off.
   const bufferA =
-    `#define mainImage raytraceMainImage\n${raytraceSource}${raytraceSource.endsWith('\n') ? '' : '\n'}#undef mainImage\n` +
+    `#define EDGE_TESTS 0\n#define mainImage raytraceMainImage\n${raytraceSource}${raytraceSource.endsWith('\n') ? '' : '\n'}#undef mainImage\n` +
     bufferHelpers(controls) +
     BUFFER_A_MAIN;
   const sampler = { filter: /** @type {const} */ ('nearest'), wrap: /** @type {const} */ ('clamp'), vflip: false };
@@ -254,5 +255,5 @@ export function missingRaytracerFunctions(source) {
   return RAYTRACER_FUNCTIONS.filter((name) => !new RegExp(String.raw`\b\w+\s+${name}\s*\(`).test(source));
 }
 
-/** The line of the Buffer A tab on which raytrace.glsl's line 1 lands (after the rename macro). */
-export const RAYTRACE_FIRST_BUFFER_LINE = 2;
+/** The line of the Buffer A tab on which raytrace.glsl's line 1 lands (after the edge-test switch and the rename macro). */
+export const RAYTRACE_FIRST_BUFFER_LINE = 3;

@@ -17,7 +17,7 @@
 // round, a frame being a draw plus a 1-pixel read-back, so the rendering is what is timed). Its
 // last frame is compared with the converged float64 reference
 // of the project's scene at its default settings (src/reference/, 64 jittered samples per pixel
-// at 640x360, 16 at 1280x720, texture point-sampled): RMSE and the fraction of pixels off by
+// at both sizes, texture point-sampled, so that every variant is ranked at both): RMSE and the fraction of pixels off by
 // more than 2/255 (src/reference/error.js). Writes tests/bench/results.json, results.md, chart.svg, and
 // the table in README.md.
 
@@ -104,7 +104,7 @@ const SIZES = quick
 const COPIES = quick ? 1 : 3;
 const FRAMES = quick ? 1 : 5; // timed frames per copy
 const WARMUP = quick ? 1 : 2; // per copy
-const REFERENCE_SAMPLES_PER_AXIS = (width) => (quick ? 2 : width <= 640 ? 8 : 4);
+const REFERENCE_SAMPLES_PER_AXIS = () => (quick ? 2 : 8);
 const BENCH_DIR = path.join(REPO_ROOT, 'tests', 'bench');
 const read = (file) => fs.readFileSync(file, 'utf8');
 
@@ -198,7 +198,7 @@ async function main() {
   if (!reportOnly)
     await withBenchHarness(async (context) => {
       for (const [width, height] of SIZES) {
-        const perAxis = REFERENCE_SAMPLES_PER_AXIS(width);
+        const perAxis = REFERENCE_SAMPLES_PER_AXIS();
         /** The converged float64 reference of each scene (the default one, 0, for every variant but the scenes'). */
         const references = new Map();
         for (const scene of new Set(VARIANTS.map((v) => v.scene ?? 0))) {

@@ -1,7 +1,34 @@
 // Reading the shader's "Show pixels with extra samples" view (SHOW_AA_PIXELS in
-// shaders/raytrace.glsl): the pixels that took extra samples are pure magenta, every other pixel
-// is grey. Used by the benchmark (what fraction took them) and by the same-ray reference (which
-// pixels to sample as the shader did).
+// shaders/raytrace.glsl): the pixels that took extra samples are a pure colour that names the
+// test that marked them (EDGE_COLOURS), every other pixel is grey. Used by the benchmark (what
+// fraction took them, and by which test) and by the same-ray reference (which pixels to sample
+// as the shader did).
+
+/** The debug view's colours, by the test that marked the pixel (the shader's mainImage). */
+export const EDGE_COLOURS = Object.freeze({
+  silhouette: [255, 0, 255],
+  shadow: [255, 255, 0],
+  reflection: [0, 255, 255],
+  quad: [0, 255, 0],
+  neighbour: [0, 0, 255],
+});
+
+/** Which test marked a pixel of the view (a key of EDGE_COLOURS), or null for a grey one. */
+export function edgeKind(data, i) {
+  for (const [kind, [r, g, b]] of Object.entries(EDGE_COLOURS))
+    if (data[i * 4] === r && data[i * 4 + 1] === g && data[i * 4 + 2] === b) return kind;
+  return null;
+}
+
+/** How many pixels each test marked. @returns {Record<string, number>} */
+export function edgeKindCounts({ width, height, data }) {
+  const counts = Object.fromEntries(Object.keys(EDGE_COLOURS).map((k) => [k, 0]));
+  for (let i = 0; i < width * height; i++) {
+    const kind = edgeKind(data, i);
+    if (kind) counts[kind]++;
+  }
+  return counts;
+}
 
 /**
  * One byte a pixel, rows top to bottom as the image's: 1 where the pixel took extra samples.
@@ -9,7 +36,7 @@
  */
 export function extraSampleMask({ width, height, data }) {
   const mask = new Uint8Array(width * height);
-  for (let i = 0; i < mask.length; i++) mask[i] = data[i * 4] === 255 && data[i * 4 + 1] === 0 && data[i * 4 + 2] === 255 ? 1 : 0;
+  for (let i = 0; i < mask.length; i++) mask[i] = edgeKind(data, i) ? 1 : 0;
   return mask;
 }
 
