@@ -20,7 +20,7 @@
 #ifndef HOST_CONTROLS
 #define SAMPLES 16                                     // ui: Samples per (edge) pixel | 1, 4, 9, 16
 #define ADAPTIVE_AA 1                                  // ui: Adaptive anti-aliasing | toggle
-#define SHOW_AA_PIXELS 0                               // ui: Show pixels with extra samples | toggle
+#define VIEW 0                                         // ui: View | Picture, Normals, Depth, Object, Bounces, Extra samples
 #define BOUNCES 3                                      // ui: Reflection bounce limit | 0 .. 4
 #define SHADOWS 1                                      // ui: Shadows | toggle
 #define TEXTURE 0                                      // ui: Ground texture | Stripes, Checkerboard
@@ -976,6 +976,39 @@ vec3 firstSampleEdges(Scene s, vec3 eyeDir, float pixelSpread) {
 }
 #endif
 
+// ---- debug views -----------------------------------------------------------------------------
+// VIEW 1 to 5 show what the picture is made of (they paste into Shadertoy too); only the chosen
+// view's code is compiled, and VIEW 0, the picture, has none of it.
+#if VIEW == 4
+// The reflections the pixel's first sample traced: radiance sets it once, on its first call
+// (-1 until then).
+int pathBounces = -1;
+#endif
+
+// A debug view's colour for the first surface the pixel centre's ray meets (the Normals, Depth
+// and Object views): its outward normal as a colour, its distance on a scale that shows the
+// whole scene (t / (t + the camera's distance): half grey at the camera's distance, white the
+// sky), or each object's own flat colour (the ground a sand colour, the sky pale blue).
+vec3 firstHitView(Scene s, vec3 dir) {
+    Hit hit = traceScene(s, vec3(0.0), dir, ID_NONE, T_MAX);
+    bool sky = hit.id == ID_NONE;
+#if VIEW == 1
+    return sky ? vec3(0.0) : 0.5 + 0.5 * hit.n;
+#elif VIEW == 2
+    return vec3(sky ? 1.0 : hit.t / (hit.t + CAMERA_DISTANCE));
+#else
+    vec3 own = hit.id == ID_GROUND ? vec3(0.76, 0.6, 0.42) : objectColor(hit.id);
+    return sky ? vec3(0.75, 0.85, 1.0) : own;
+#endif
+}
+
+// The Bounces view's colour for a path that traced `bounces` reflections (0: the eye ray's surface
+// alone, or the sky): dark blue, blue, green, yellow, red for 0 to 4.
+vec3 bouncesView(int bounces) {
+    const vec3 STEPS[5] = vec3[5](vec3(0.1, 0.1, 0.35), vec3(0.1, 0.4, 0.9), vec3(0.1, 0.75, 0.3), vec3(0.95, 0.85, 0.1), vec3(0.9, 0.15, 0.1));
+    return STEPS[min(bounces, 4)];
+}
+
 // An eye ray, and how its direction changes across the footprint of its sample along image x and
 // y: ray differentials (Igehy, "Tracing ray differentials", 1999). They give the exact
 // footprint of the sample where the eye ray meets the ground.
@@ -1012,6 +1045,9 @@ vec3 radiance(Scene s, EyeRay eye, float coneSpread, out vec3 key, out vec3 keyN
     keyNormal = hit.n;
 #if EDGE_TESTS
     firstPath = FirstPath(hit.t, vec3(0.0), vec3(0.0), 0.0, 0.0, 0.0, vec3(0.0), T_MAX, 0.0, 0.0, hit.id);
+#endif
+#if VIEW == 4
+    pathBounces = hit.id == ID_NONE ? max(pathBounces, 0) : pathBounces;
 #endif
     if (hit.id == ID_NONE) return skyColor(rd);
     // Where the eye ray meets the ground, the parallelogram its differentials span on the plane:
@@ -1061,6 +1097,9 @@ vec3 radiance(Scene s, EyeRay eye, float coneSpread, out vec3 key, out vec3 keyN
         // left, a reflection cannot change the 8-bit output: the path ends there.
         if (any(bvec2(bounce == BOUNCES, throughput * mirror < 1.0 / 255.0))) {
             color += throughput * local;
+#if VIEW == 4
+            pathBounces = pathBounces < 0 ? bounce : pathBounces;
+#endif
             break;
         }
         color += throughput * (1.0 - mirror) * local;
@@ -1090,6 +1129,9 @@ vec3 radiance(Scene s, EyeRay eye, float coneSpread, out vec3 key, out vec3 keyN
 #endif
         if (hit.id == ID_NONE) {
             color += throughput * skyColor(rd);
+#if VIEW == 4
+            pathBounces = pathBounces < 0 ? bounce + 1 : pathBounces;
+#endif
             break;
         }
     }
@@ -1169,6 +1211,10 @@ EyeRay eyeRay(Camera c, vec2 pixel, float footprint) {
 void mainImage(out vec4 fragColor, in vec2 fragCoord) {
     Camera camera = orbitCamera();
     Scene s = sceneRelativeTo(camera.eyeLocal);
+#if VIEW >= 1 && VIEW <= 3
+    fragColor = vec4(firstHitView(s, eyeRay(camera, fragCoord, 1.0).dir), 1.0);
+    return;
+#endif
     const int N = SAMPLES_PER_AXIS;
     float pixelSpread = 2.0 * camera.tanHalfFov / iResolution.y;
     vec3 key, keyNormal;
@@ -1237,7 +1283,10 @@ void mainImage(out vec4 fragColor, in vec2 fragCoord) {
     }
     linear /= float(N * N);
 #endif
-#if SHOW_AA_PIXELS
+#if VIEW == 4
+    // (the first sample's path: the pixel centre's)
+    linear = bouncesView(pathBounces);
+#elif VIEW == 5
     // The pixels that took extra samples, over the picture in grey, coloured by the first test
     // that marked them: magenta a silhouette, yellow a shadow boundary, cyan a reflected
     // silhouette, green only the quad's derivatives (a crease, two surfaces meeting), blue none

@@ -9,7 +9,7 @@ import { imageError, formatImageError } from '../src/reference/error.js';
 import { SHADER_FILE } from './harness/config.js';
 import { assertNotBlank } from './harness/images.js';
 import { disconnect, renderView } from './harness/page.js';
-import { extraSampleMask } from './harness/aa-mask.js';
+import { EXTRA_SAMPLES_VIEW, extraSampleMask } from './harness/aa-mask.js';
 import { viewControlProblems } from './views.js';
 import { HARD_VIEWS, MAX_OVER_2, referenceView } from './hard-views.js';
 
@@ -29,11 +29,11 @@ describe('hard views against the same-ray float64 reference', () => {
     expect(error.over2, `${view.name} (${view.what}): ${formatImageError(error)}`).toBeLessThanOrEqual(view.maxOver2 ?? MAX_OVER_2);
   });
 
-  // With adaptive anti-aliasing the same rays are the shader's: the pixels its "Show pixels with
-  // extra samples" view marks take the 4x4 grid, the others their centre. The same bound holds.
+  // With adaptive anti-aliasing the same rays are the shader's: the pixels its "Extra samples" debug
+  // view marks take the 4x4 grid, the others their centre. The same bound holds.
   test.each(HARD_VIEWS.map((v) => [v.name, v]))('%s, adaptive anti-aliasing', async (_, view) => {
     const adaptive = { ...view, params: { ...view.params, SAMPLES: 16, ADAPTIVE_AA: 1 } };
-    const extraSamples = extraSampleMask(await renderView({ ...adaptive, params: { ...adaptive.params, SHOW_AA_PIXELS: 1 } }));
+    const extraSamples = extraSampleMask(await renderView({ ...adaptive, params: { ...adaptive.params, ...EXTRA_SAMPLES_VIEW } }));
     const image = await renderView(adaptive);
     const error = imageError(image, renderReference(source, referenceView(adaptive), { extraSamples }));
     const share = extraSamples.reduce((n, v) => n + v, 0) / extraSamples.length;

@@ -36,3 +36,20 @@ test('raytrace.glsl pasted into Shadertoy compiles and renders the default view'
     hint: "The page does not render the shader's defaults as Shadertoy does.",
   });
 });
+
+// Every choice of the compile-time controls a person edits in the pasted file compiles in
+// Shadertoy's header as it stands: each scene (SCENE) and each debug view (VIEW), the line of the
+// control block changed as a person changes it there.
+const CHOICES = [...[1, 2].map((scene) => ['SCENE', scene]), ...[1, 2, 3, 4, 5].map((view) => ['VIEW', view])];
+test.each(CHOICES)('with #define %s %i, the pasted file compiles and draws in Shadertoy’s header', async (name, value) => {
+  const source = fs.readFileSync(SHADER_FILE, 'utf8');
+  const line = new RegExp(String.raw`^#define ${name} \d+`, 'm');
+  expect(source).toMatch(line);
+  const edited = source.replace(line, `#define ${name} ${value}`);
+  const { code, firstSourceLine } = composeImageShader(edited);
+  const raw = await renderRawShader(code, { width: 32, height: 18 });
+  if (raw.stage)
+    throw new Error(`${name} ${value}: ${mapShaderLog(raw.log, { code, firstSourceLine, source: edited, fileName: rel(SHADER_FILE) })}`);
+  // the Object and Bounces views are a few flat colours by design
+  assertNotBlank(raw, `${name} ${value}`, { minColours: name === 'VIEW' && (value === 3 || value === 4) ? 3 : 16 });
+});

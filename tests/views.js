@@ -54,8 +54,16 @@ export const VIEWS = [
   // One sample per pixel (the default is adaptive anti-aliasing: pixels on an edge take the 4x4
   // grid, the others one sample) ...
   { name: 'one-sample', params: { time: 0, SAMPLES: 1 } },
-  // ... and which pixels take the grid (magenta), over the picture in grey.
-  { name: 'aa-pixels', params: { time: 0, SHOW_AA_PIXELS: 1 } },
+  // ... and which pixels take the grid, over the picture in grey, coloured by the test that
+  // marked them (the VIEW "Extra samples").
+  { name: 'aa-pixels', params: { time: 0, VIEW: 5 } },
+  // The other debug views: the first surface's normal, its distance, each object's flat colour,
+  // the reflections each pixel's path traced.
+  { name: 'view-normals', params: { time: 0, VIEW: 1 } },
+  { name: 'view-depth', params: { time: 0, VIEW: 2 } },
+  // (flatColours: a view of a few flat colours by design, the least it must show)
+  { name: 'view-object', params: { time: 0, VIEW: 3 }, flatColours: 5 },
+  { name: 'view-bounces', params: { time: 0, VIEW: 4 }, flatColours: 4 },
   // The eye under the ground: its underside, plain, where the cone's base and the cube's bottom
   // lie in its plane (they used to show through in speckles: issue 18).
   { name: 'below-ground', params: { time: 0, CAMERA_ORBIT: [30, -20] } },

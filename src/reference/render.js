@@ -5,7 +5,7 @@
 // Two modes:
 // - 'same-rays': the shader's own sample positions and texture filter, so the difference to the
 //   shader's image is arithmetic error alone (with adaptive anti-aliasing, which pixels took extra
-//   samples is the shader's decision, read from its "Show pixels with extra samples" view);
+//   samples is the shader's decision, read from its "Extra samples" debug view);
 // - 'converged': many stratified, jittered samples per pixel and the texture point-sampled, so
 //   the difference is the shader's total error, aliasing included;
 // - 'progressive': the first N samples of the progressive raytracer's own sequence
@@ -247,8 +247,8 @@ function jitter(x, y, i, axis) {
  *   samples); progressive mode the first `samples` (default 64) of the progressive shader's
  *   sequence; rows = [first, end) renders only those rows (to split an image over threads);
  *   extraSamples (same-rays mode, adaptive anti-aliasing on): one byte a pixel, rows top to
- *   bottom, non-zero where the shader took the extra samples (its "Show pixels with extra
- *   samples" view)
+ *   bottom, non-zero where the shader took the extra samples (its "Extra samples" debug
+ *   view)
  * @returns {{width, height, rgb: Float64Array}} display values in [0, 1], 3 per pixel, rows
  *   top to bottom (as the page's readPixels returns them)
  */
@@ -264,7 +264,7 @@ export function renderReference(shaderSource, view, { mode = 'same-rays', sample
   const adaptive = !converged && s.ADAPTIVE_AA === 1 && gridPerAxis > 1;
   if (adaptive && !extraSamples) {
     throw new Error(
-      'reference: adaptive anti-aliasing needs extraSamples, the pixels the shader gave extra samples (its SHOW_AA_PIXELS view)',
+      'reference: adaptive anti-aliasing needs extraSamples, the pixels the shader gave extra samples (its "Extra samples" debug VIEW view)',
     );
   }
   const filter = !converged && s.TEXTURE_FILTER === 1;

@@ -32,7 +32,7 @@ import { rendererLabel, withHarness } from '../harness/setup.js';
 import { replaceMarkedSection } from '../scripts/readme-section.js';
 import { timeShaders } from './timer.js';
 import { renderRawShader } from '../harness/raw-webgl.js';
-import { countExtraSamplePixels } from '../harness/aa-mask.js';
+import { EXTRA_SAMPLES_VIEW, countExtraSamplePixels } from '../harness/aa-mask.js';
 import { composePeer } from './peers/compose-peer.js';
 import { renderReferenceParallel } from './reference.js';
 import { paretoFront, chartSvg } from './chart.js';
@@ -182,11 +182,11 @@ export const VARIANTS = [
 ];
 
 /**
- * The fraction of pixels to which an adaptive variant gave extra samples: its "Show pixels with
- * extra samples" view, rendered once, counted by its magenta.
+ * The fraction of pixels to which an adaptive variant gave extra samples: its "Extra samples" debug
+ * view, rendered once, counted by its colours.
  */
 async function extraSampleFraction(variant, width, height) {
-  const shown = await renderRawShader(project({ SAMPLES: variant.spp, ADAPTIVE_AA: 1, SHOW_AA_PIXELS: 1 }), { width, height });
+  const shown = await renderRawShader(project({ SAMPLES: variant.spp, ADAPTIVE_AA: 1, ...EXTRA_SAMPLES_VIEW }), { width, height });
   if (shown.stage) throw new Error(`${variant.name}, edge view: ${shown.stage}: ${shown.log}`);
   return countExtraSamplePixels(shown) / (width * height);
 }

@@ -1,8 +1,10 @@
-// Reading the shader's "Show pixels with extra samples" view (SHOW_AA_PIXELS in
-// shaders/raytrace.glsl): the pixels that took extra samples are a pure colour that names the
+// Reading the shader's "Extra samples" debug view (VIEW in shaders/raytrace.glsl): the pixels that took extra samples are a pure colour that names the
 // test that marked them (EDGE_COLOURS), every other pixel is grey. Used by the benchmark (what
 // fraction took them, and by which test) and by the same-ray reference (which pixels to sample
 // as the shader did).
+
+/** The shader's debug view of the pixels that took extra samples (VIEW = "Extra samples"; views.test.js checks the number). */
+export const EXTRA_SAMPLES_VIEW = Object.freeze({ VIEW: 5 });
 
 /** The debug view's colours, by the test that marked the pixel (the shader's mainImage). */
 export const EDGE_COLOURS = Object.freeze({

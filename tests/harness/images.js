@@ -57,7 +57,7 @@ export function differingPixels(a, b, levels, { fromRow = 0 } = {}) {
  * (nothing drawn), all-white ones (Shadertoy's colour when mainImage writes nothing) and
  * all-black ones (a dead context or an unlit scene).
  */
-export function blankReason({ width, height, data }) {
+export function blankReason({ width, height, data }, { minColours = 16 } = {}) {
   const n = width * height;
   if (n === 0) return 'the image is empty (0 pixels)';
   const colours = new Set();
@@ -76,13 +76,18 @@ export function blankReason({ width, height, data }) {
   if (colours.size === 1) return `the image is a single colour (rgb ${[...colours][0].toString(16).padStart(6, '0')})`;
   if (white / n > 0.98) return `the image is white (${((100 * white) / n).toFixed(1)}% of pixels)`;
   if (black / n > 0.98) return `the image is black (${((100 * black) / n).toFixed(1)}% of pixels)`;
-  if (colours.size < 16) return `the image has only ${colours.size} colours`;
+  if (colours.size < minColours) return `the image has only ${colours.size} colours`;
   if (transparent) return `${transparent} pixels are not opaque (Shadertoy forces alpha to 1)`;
   return null;
 }
 
-export function assertNotBlank(image, what) {
-  const reason = blankReason(image);
+/**
+ * @param {any} image RGBA8 with width and height
+ * @param {string} what
+ * @param {{minColours?: number}} [options] a view of flat colours by design has fewer
+ */
+export function assertNotBlank(image, what, options) {
+  const reason = blankReason(image, options);
   if (reason) throw new Error(`${what}: not a rendered scene: ${reason}`);
 }
 

@@ -3,7 +3,7 @@
 // (arithmetic error alone) and converged (64 jittered samples per pixel, texture point-sampled:
 // the total error, aliasing included). Each view is measured at one sample per pixel and with
 // adaptive anti-aliasing (16 samples at edges; the same-ray reference takes its extra samples in
-// the pixels the shader's "Show pixels with extra samples" view marks). Writes
+// the pixels the shader's "Extra samples" debug view marks). Writes
 // tests/accuracy/results.json and the table between the accuracy markers in README.md.
 //
 //   npm run accuracy            (about six minutes on two cores)
@@ -14,7 +14,7 @@ import { renderReference } from '../../src/reference/render.js';
 import { imageError } from '../../src/reference/error.js';
 import { REPO_ROOT, SHADER_FILE } from '../harness/config.js';
 import { renderView } from '../harness/page.js';
-import { extraSampleMask } from '../harness/aa-mask.js';
+import { EXTRA_SAMPLES_VIEW, extraSampleMask } from '../harness/aa-mask.js';
 import { rendererLabel, withHarness } from '../harness/setup.js';
 import { HARD_VIEWS, referenceView } from '../hard-views.js';
 import { DEFAULT_SIZE, viewSize } from '../views.js';
@@ -57,7 +57,7 @@ async function main() {
       const one = await measure(source, { ...view, params: { ...view.params, SAMPLES: 1 } });
       process.stdout.write(', adaptive');
       const adaptiveView = { ...view, params: { ...view.params, ...ADAPTIVE } };
-      const mask = extraSampleMask(await renderView({ ...adaptiveView, params: { ...adaptiveView.params, SHOW_AA_PIXELS: 1 } }));
+      const mask = extraSampleMask(await renderView({ ...adaptiveView, params: { ...adaptiveView.params, ...EXTRA_SAMPLES_VIEW } }));
       const adaptive = await measure(source, adaptiveView, mask);
       const extraSampleFraction = mask.reduce((n, v) => n + v, 0) / mask.length;
       console.log(' done');

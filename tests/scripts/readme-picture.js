@@ -2,7 +2,8 @@
 // - public/scene.png: the scene, rendered exactly as the tests render views (the default
 //   controls, adaptive anti-aliasing among them, at time 0);
 // - public/page.png: the page itself at 1280x800 (toolbar, canvas, the panel beside it, the
-//   editor open), as a person sees it.
+//   editor open), as a person sees it;
+// - public/views.png: the shader's debug views (VIEW 0 to 5) side by side, three a row.
 //
 //   npm run picture        writes both
 
@@ -13,6 +14,19 @@ import { harnessContext, openPage, renderView } from '../harness/page.js';
 import { withHarness } from '../harness/setup.js';
 
 const VIEW = { name: 'readme', params: { time: 0 }, size: [960, 540] };
+const DEBUG_VIEW_SIZE = [320, 180];
+
+/** Images of one size side by side, `columns` a row. */
+function montage(images, columns) {
+  const { width, height } = images[0];
+  const rows = Math.ceil(images.length / columns);
+  const out = { width: width * columns, height: height * rows, data: new Uint8Array(width * columns * height * rows * 4) };
+  images.forEach((image, k) => {
+    const [ox, oy] = [(k % columns) * width, Math.floor(k / columns) * height];
+    for (let y = 0; y < height; y++) out.data.set(image.data.subarray(y * width * 4, (y + 1) * width * 4), ((oy + y) * out.width + ox) * 4);
+  });
+  return out;
+}
 const PAGE_VIEWPORT = { width: 1280, height: 800, deviceScaleFactor: 1 };
 
 await withHarness(async (context) => {
@@ -21,6 +35,13 @@ await withHarness(async (context) => {
   const sceneFile = path.join(REPO_ROOT, 'public', 'scene.png');
   writePng(sceneFile, image);
   console.log(`wrote ${rel(sceneFile)} (${image.width}x${image.height}, ${context.environment.renderer})`);
+
+  const views = [];
+  for (let view = 0; view <= 5; view++)
+    views.push(await renderView({ name: `view-${view}`, params: { time: 0, VIEW: view }, size: DEBUG_VIEW_SIZE }));
+  const viewsFile = path.join(REPO_ROOT, 'public', 'views.png');
+  writePng(viewsFile, montage(views, 3));
+  console.log(`wrote ${rel(viewsFile)}`);
 
   const { page, errors } = await openPage();
   try {
