@@ -161,6 +161,37 @@ Cone makeCone(vec3 pa, vec3 pb, float ra, float rb) {
                 length(vec2(0.5 * height, max(ra, rb))));
 }
 
+// The nearest part of a capped solid of revolution hit by a ray, in the solid's axis frame (the
+// ray's axial coordinate yo + yd t, its radial offset oPerp + t dPerp): the side's two roots of
+// a t^2 + 2 b t + c = 0 (disc its discriminant, which each caller computes in its own stable
+// form), taken as c / q and q / a so that neither subtracts nearly equal numbers, each kept when
+// nearer than tBest and between the caps y = 0 and y = height; then the caps, planes y = 0
+// (radius rBase) and y = height (radius rTop; none when 0), inside their discs. A ray parallel
+// to the caps (yd == 0) crosses neither. Returns (t, part): part 1 the side, 2 the base, 3 the
+// top (the last test that moved t), 0 nothing nearer than tBest.
+vec2 nearestCapped(float a, float b, float c, float disc, float yo, float yd, vec3 oPerp, vec3 dPerp, float height, float rBase, float rTop, float tBest) {
+    float q = -(b + (b >= 0.0 ? 1.0 : -1.0) * sqrt(max(disc, 0.0)));
+    // q == 0 only when b == 0 and disc == 0: a tangent ray whose root is t = 0 (or none).
+    float cOverQ = c / q, qOverA = q / a;
+    float t0 = q != 0.0 ? cOverQ : -1.0;
+    float t1 = a != 0.0 ? qOverA : -1.0;
+    float y0 = yo + t0 * yd, y1 = yo + t1 * yd;
+    bool side0 = all(bvec4(disc >= 0.0, t0 > 0.0, t0 < tBest, all(bvec2(y0 >= 0.0, y0 <= height))));
+    tBest = side0 ? t0 : tBest;
+    bool side1 = all(bvec4(disc >= 0.0, t1 > 0.0, t1 < tBest, all(bvec2(y1 >= 0.0, y1 <= height))));
+    tBest = side1 ? t1 : tBest;
+    float tBase = -yo / yd;
+    vec3 wBase = oPerp + tBase * dPerp;
+    bool onBase = all(bvec4(yd != 0.0, tBase > 0.0, tBase < tBest, dot(wBase, wBase) <= rBase * rBase));
+    tBest = onBase ? tBase : tBest;
+    float tTop = (height - yo) / yd;
+    vec3 wTop = oPerp + tTop * dPerp;
+    bool onTop = all(bvec4(yd != 0.0, rTop > 0.0, all(bvec2(tTop > 0.0, tTop < tBest)), dot(wTop, wTop) <= rTop * rTop));
+    tBest = onTop ? tTop : tBest;
+    float part = onTop ? 3.0 : (onBase ? 2.0 : (any(bvec2(side0, side1)) ? 1.0 : 0.0));
+    return vec2(tBest, part);
+}
+
 // With unit axis A, height H, slope k, a point w = p - base has axial coordinate y = A.w and
 // radial offset w_perp = w - y A; the side is |w_perp|^2 = r(y)^2, r(y) = ra + k y, for
 // 0 <= y <= H. On the ray, with o = ro - base, this is a t^2 + 2 b t + c = 0 with
@@ -190,27 +221,9 @@ vec4 intersectCone(vec3 ro, vec3 rd, Cone cone, float tMax) {
     float b = dot(oPerp, dPerp) - cone.slope * yd * rOrigin;
     float c = dot(oPerp, oPerp) - rOrigin * rOrigin;
     float disc = b * b - a * c;
-    float q = -(b + (b >= 0.0 ? 1.0 : -1.0) * sqrt(max(disc, 0.0)));
-    // q == 0 only when b == 0 and disc == 0: a tangent ray whose root is t = 0 (or none).
-    float cOverQ = c / q, qOverA = q / a;
-    float t0 = q != 0.0 ? cOverQ : -1.0;
-    float t1 = a != 0.0 ? qOverA : -1.0;
-    float y0 = yo + t0 * yd, y1 = yo + t1 * yd;
-    float tBest = min(tMax - tShift, T_MAX);
-    bool side0 = all(bvec4(disc >= 0.0, t0 > 0.0, t0 < tBest, all(bvec2(y0 >= 0.0, y0 <= cone.height))));
-    tBest = side0 ? t0 : tBest;
-    bool side1 = all(bvec4(disc >= 0.0, t1 > 0.0, t1 < tBest, all(bvec2(y1 >= 0.0, y1 <= cone.height))));
-    tBest = side1 ? t1 : tBest;
-    // The caps: planes y = 0 and y = H, inside their disc. A ray parallel to them (yd == 0)
-    // crosses neither.
-    float tBase = -yo / yd;
-    vec3 wBase = oPerp + tBase * dPerp;
-    bool onBase = all(bvec4(yd != 0.0, tBase > 0.0, tBase < tBest, dot(wBase, wBase) <= cone.ra * cone.ra));
-    tBest = onBase ? tBase : tBest;
-    float tTop = (cone.height - yo) / yd;
-    vec3 wTop = oPerp + tTop * dPerp;
-    bool onTop = all(bvec4(yd != 0.0, cone.rb > 0.0, all(bvec2(tTop > 0.0, tTop < tBest)), dot(wTop, wTop) <= cone.rb * cone.rb));
-    tBest = onTop ? tTop : tBest;
+    vec2 nearest = nearestCapped(a, b, c, disc, yo, yd, oPerp, dPerp, cone.height, cone.ra, cone.rb, min(tMax - tShift, T_MAX));
+    float tBest = nearest.x;
+    bool onBase = nearest.y == 2.0, onTop = nearest.y == 3.0;
 
     // Side normal: the gradient of |w_perp| - r(y), i.e. (unit radial direction - k A), whose
     // length is sqrt(1 + k^2) because the two parts are orthogonal. Within the hit point's own
@@ -226,7 +239,23 @@ vec4 intersectCone(vec3 ro, vec3 rd, Cone cone, float tMax) {
     vec3 sideNormal = (normalize(radial) - cone.slope * axis) * inversesqrt(1.0 + cone.slope * cone.slope);
     // The last test that moved tBest names the part hit.
     vec3 n = mix(mix(sideNormal, -axis, bvec3(onBase)), axis, bvec3(onTop));
-    return hitOrMiss(all(bvec2(inBound, any(bvec4(side0, side1, onBase, onTop)))), tShift + tBest, n);
+    return hitOrMiss(all(bvec2(inBound, nearest.y > 0.0)), tShift + tBest, n);
+}
+
+// Wald's shift (Ray Tracing Gems II ch. 34): the distance a ray can travel before it reaches a
+// bounding sphere, and whether it meets the sphere at all before tMax. A quadratic's error grows
+// with the square of the distance from its origin, the shift's only linearly, so an intersector
+// first moves the origin there. The shift stops short of the sphere by the rounding of `along` (a
+// few roundings of |ro - centre| <= |along| + bound for a ray that meets the sphere): a sphere
+// that touches the shape (the cylinder's rims, the torus's outer equator) would otherwise let a
+// shifted origin round past the hit. Returns (tShift, 1 when the ray meets the sphere, else 0).
+vec2 shiftToBound(vec3 ro, vec3 rd, vec3 center, float bound, float tMax) {
+    vec3 toCenter = center - ro;
+    float along = dot(toCenter, rd);
+    vec3 offAxis = toCenter - along * rd;
+    float tShift = max(0.0, along - bound - 8.0 * EPS32 * (abs(along) + bound));
+    bool meets = all(bvec3(dot(offAxis, offAxis) <= bound * bound, along + bound > 0.0, tShift < tMax));
+    return vec2(tShift, float(meets));
 }
 
 // Closed capped cylinder of radius r from pa to pb. What depends only on the cylinder (its axis
@@ -257,15 +286,9 @@ Cylinder makeCylinder(vec3 pa, vec3 pb, float radius) {
 // q / a are all guarded) and only the caps can be hit; a ray perpendicular to the axis (A.rd = 0)
 // crosses neither cap plane. The origin is moved to the bounding sphere first, as for the cone.
 vec4 intersectCylinder(vec3 ro, vec3 rd, Cylinder cylinder, float tMax) {
-    vec3 toCenter = cylinder.boundCenter - ro;
-    float along = dot(toCenter, rd);
-    vec3 offAxis = toCenter - along * rd;
-    // The shift stops short of the sphere by the rounding of `along` (a few roundings of |ro -
-    // centre| <= |along| + bound for a ray that meets the sphere): the sphere touches the rims,
-    // and a shifted origin rounded past a rim hit would lose it.
-    float tShift = max(0.0, along - cylinder.boundRadius - 8.0 * EPS32 * (abs(along) + cylinder.boundRadius));
-    bool inBound = all(bvec3(dot(offAxis, offAxis) <= cylinder.boundRadius * cylinder.boundRadius,
-                             along + cylinder.boundRadius > 0.0, tShift < tMax));
+    vec2 shift = shiftToBound(ro, rd, cylinder.boundCenter, cylinder.boundRadius, tMax);
+    float tShift = shift.x;
+    bool inBound = shift.y > 0.0;
 
     vec3 axis = cylinder.axis;
     float r = cylinder.radius;
@@ -278,31 +301,15 @@ vec4 intersectCylinder(vec3 ro, vec3 rd, Cylinder cylinder, float tMax) {
     float c = dot(oPerp, oPerp) - r * r;
     float closest = length(oPerp - (a > 0.0 ? b / a : 0.0) * dPerp);
     float disc = a * (r + closest) * (r - closest);
-    float q = -(b + (b >= 0.0 ? 1.0 : -1.0) * sqrt(max(disc, 0.0)));
-    float cOverQ = c / q, qOverA = q / a;
-    float t0 = q != 0.0 ? cOverQ : -1.0;
-    float t1 = a != 0.0 ? qOverA : -1.0;
-    float y0 = yo + t0 * yd, y1 = yo + t1 * yd;
-    float tBest = min(tMax - tShift, T_MAX);
-    bool side0 = all(bvec4(disc >= 0.0, t0 > 0.0, t0 < tBest, all(bvec2(y0 >= 0.0, y0 <= cylinder.height))));
-    tBest = side0 ? t0 : tBest;
-    bool side1 = all(bvec4(disc >= 0.0, t1 > 0.0, t1 < tBest, all(bvec2(y1 >= 0.0, y1 <= cylinder.height))));
-    tBest = side1 ? t1 : tBest;
-    // The caps: planes y = 0 and y = H, inside their disc.
-    float tBase = -yo / yd;
-    vec3 wBase = oPerp + tBase * dPerp;
-    bool onBase = all(bvec4(yd != 0.0, tBase > 0.0, tBase < tBest, dot(wBase, wBase) <= r * r));
-    tBest = onBase ? tBase : tBest;
-    float tTop = (cylinder.height - yo) / yd;
-    vec3 wTop = oPerp + tTop * dPerp;
-    bool onTop = all(bvec4(yd != 0.0, tTop > 0.0, tTop < tBest, dot(wTop, wTop) <= r * r));
-    tBest = onTop ? tTop : tBest;
+    vec2 nearest = nearestCapped(a, b, c, disc, yo, yd, oPerp, dPerp, cylinder.height, r, r, min(tMax - tShift, T_MAX));
+    float tBest = nearest.x;
+    bool onBase = nearest.y == 2.0, onTop = nearest.y == 3.0;
 
     // The side normal is the radial direction; a side hit lies at |w_perp| = r > 0, so it is never
     // 0/0. The last test that moved tBest names the part hit.
     vec3 sideNormal = normalize(oPerp + tBest * dPerp);
     vec3 n = mix(mix(sideNormal, -axis, bvec3(onBase)), axis, bvec3(onTop));
-    return hitOrMiss(all(bvec2(inBound, any(bvec4(side0, side1, onBase, onTop)))), tShift + tBest, n);
+    return hitOrMiss(all(bvec2(inBound, nearest.y > 0.0)), tShift + tBest, n);
 }
 
 // Closed torus: the solid within r of its core circle, radius R about the axis through the
@@ -377,14 +384,11 @@ void torusBend(TorusRay ray, vec3 t, out vec3 dF, out vec3 ddF) {
 // hits; a textbook Ferrari solve of the expanded quartic in its place gets 81% of rays from 1e3,
 // 16% of a tube r = 1e-3 R and 32% of near-axial rays wrong (those all fake hits in the hole).
 vec4 intersectTorus(vec3 ro, vec3 rd, Torus torus, float tMax) {
-    vec3 toCenter = torus.center - ro;
-    float along = dot(toCenter, rd);
-    vec3 offAxis = toCenter - along * rd;
-    // Short of the sphere by the rounding of `along`, as for the cylinder: the sphere touches the
-    // torus all along its outer equator, where a radial ray's entry root is the sphere's point.
-    float tShift = max(0.0, along - torus.boundRadius - 8.0 * EPS32 * (abs(along) + torus.boundRadius));
-    bool inBound = all(bvec3(dot(offAxis, offAxis) <= torus.boundRadius * torus.boundRadius,
-                             along + torus.boundRadius > 0.0, tShift < tMax));
+    // (the sphere touches the torus all along its outer equator, where a radial ray's entry root
+    // is the sphere's point: shiftToBound stops short of it)
+    vec2 shift = shiftToBound(ro, rd, torus.center, torus.boundRadius, tMax);
+    float tShift = shift.x;
+    bool inBound = shift.y > 0.0;
 
     vec3 axis = torus.axis;
     vec3 o = ((ro - torus.center) + tShift * rd) / torus.majorRadius;

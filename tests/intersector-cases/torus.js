@@ -131,56 +131,48 @@ function aimedFamily(label, s, distance, count, seed) {
   }
   return cases;
 }
+/**
+ * `count` cases of one family: each made by `make(random, frame, around)` from the family's own
+ * random sequence, `around` a unit vector across the axis at a random angle (drawn first).
+ */
+function family(count, seed, s, make) {
+  const random = sequence(seed);
+  const f = frame(s);
+  return Array.from({ length: count }, () => {
+    const phi = 2 * Math.PI * random();
+    return make(random, f, add(scale(f.e1, Math.cos(phi)), scale(f.e2, Math.sin(phi))));
+  });
+}
+const member = (label, i, ray, s, expect, note) => torus(`${label} #${i}`, ray, s, expect, note, { family: label });
+
 // Near-axial rays: from the axis at distance 2 to 1e3, down the axis tilted by `tilt(random)`,
 // offset from the axis by up to `offset` R.
 function axialFamily(label, s, tilt, offset, count, seed) {
-  const random = sequence(seed);
-  const { A, e1, e2 } = frame(s);
-  const cases = [];
-  for (let i = 0; i < count; i++) {
-    const phi = 2 * Math.PI * random();
-    const across = add(scale(e1, Math.cos(phi)), scale(e2, Math.sin(phi)));
+  return family(count, seed, s, (random, { A, e1 }, across) => {
     const height = s.R * 10 ** (0.3 + 2.7 * random());
     const ro = add(s.center, add(scale(A, height), scale(across, offset * s.R * random())));
     const rd = tilted(scale(A, -1), tilt(random), normalize(cross(A, add(across, scale(e1, random())))));
-    cases.push(torus(`${label} #${i}`, { ro, rd }, s, 'agree', `${label}: must agree outside the rounding band`, { family: label }));
-  }
-  return cases;
+    return { ro, rd };
+  }).map((ray, i) => member(label, i, ray, s, 'agree', `${label}: must agree outside the rounding band`));
 }
 // Rays in the equatorial plane through the centre (tilted by up to 1e-6), from `distance`: the
 // roots are at distance -+ (R + r) and -+ (R - r).
 function equatorialFamily(label, s, distance, count, seed) {
-  const random = sequence(seed);
-  const { e1, e2 } = frame(s);
-  const cases = [];
-  for (let i = 0; i < count; i++) {
-    const phi = 2 * Math.PI * random();
-    const dir = tilted(add(scale(e1, Math.cos(phi)), scale(e2, Math.sin(phi))), 1e-6 * random(), e1);
-    cases.push(
-      torus(`${label} #${i}`, { ro: sub(s.center, scale(dir, distance)), rd: dir }, s, 'hit', `${label}: roots at -+(R +- r)`, {
-        family: label,
-      }),
-    );
-  }
-  return cases;
+  return family(count, seed, s, (random, { e1 }, around) => {
+    const dir = tilted(around, 1e-6 * random(), e1);
+    return { ro: sub(s.center, scale(dir, distance)), rd: dir };
+  }).map((ray, i) => member(label, i, ray, s, 'hit', `${label}: roots at -+(R +- r)`));
 }
 // Origins inside the tube (or in the hole), random directions.
 function originFamily(label, s, inTube, count, seed) {
-  const random = sequence(seed);
-  const { A, e1, e2 } = frame(s);
-  const cases = [];
-  for (let i = 0; i < count; i++) {
-    const phi = 2 * Math.PI * random();
-    const radial = add(scale(e1, Math.cos(phi)), scale(e2, Math.sin(phi)));
+  return family(count, seed, s, (random, { A }, radial) => {
     const theta = 2 * Math.PI * random();
     const depth = inTube ? 0.95 * s.r * Math.sqrt(random()) : 0.95 * (s.R - s.r) * Math.sqrt(random());
     const ro = inTube
       ? add(s.center, add(scale(radial, s.R + depth * Math.cos(theta)), scale(A, depth * Math.sin(theta))))
       : add(s.center, add(scale(radial, depth), scale(A, 2 * s.r * (random() - 0.5))));
-    const rd = normalize([random() - 0.5, random() - 0.5, random() - 0.5]);
-    cases.push(torus(`${label} #${i}`, { ro, rd }, s, inTube ? 'hit' : 'agree', `${label}`, { family: label }));
-  }
-  return cases;
+    return { ro, rd: normalize([random() - 0.5, random() - 0.5, random() - 0.5]) };
+  }).map((ray, i) => member(label, i, ray, s, inTube ? 'hit' : 'agree', label));
 }
 
 const thin2 = shape([0, 0, 0], [0, 1, 0], 1, 1e-2);
