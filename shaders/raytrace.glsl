@@ -989,6 +989,7 @@ vec3 firstSampleEdges(Scene s, vec3 eyeDir, float pixelSpread) {
 int pathBounces = -1;
 #endif
 
+#if VIEW >= 1 && VIEW <= 3
 // A debug view's colour for the first surface the pixel centre's ray meets (the Normals, Depth
 // and Object views): its outward normal as a colour, its distance on a scale that shows the
 // whole scene (t / (t + the camera's distance): half grey at the camera's distance, white the
@@ -1005,13 +1006,16 @@ vec3 firstHitView(Scene s, vec3 dir) {
     return sky ? vec3(0.75, 0.85, 1.0) : own;
 #endif
 }
+#endif
 
+#if VIEW == 4
 // The Bounces view's colour for a path that traced `bounces` reflections (0: the eye ray's surface
 // alone, or the sky): dark blue, blue, green, yellow, red for 0 to 4.
 vec3 bouncesView(int bounces) {
     const vec3 STEPS[5] = vec3[5](vec3(0.1, 0.1, 0.35), vec3(0.1, 0.4, 0.9), vec3(0.1, 0.75, 0.3), vec3(0.95, 0.85, 0.1), vec3(0.9, 0.15, 0.1));
     return STEPS[min(bounces, 4)];
 }
+#endif
 
 // An eye ray, and how its direction changes across the footprint of its sample along image x and
 // y: ray differentials (Igehy, "Tracing ray differentials", 1999). They give the exact
