@@ -19,10 +19,13 @@ const steps = (/** @type {number} */ v) => `${(v * 255).toFixed(v * 255 < 0.1 ? 
 export class CompareView {
   /**
    * @param {HTMLElement} stage
+   * @param {HTMLCanvasElement} canvas the page's canvas, which the map covers exactly
    * @param {Comparison} comparison
    * @param {{pin: (x: number, y: number) => void, compare: () => void}} actions
    */
-  constructor(stage, comparison, actions) {
+  constructor(stage, canvas, comparison, actions) {
+    this.stage = stage;
+    this.canvas = canvas;
     this.comparison = comparison;
     /** Which error the map shows: the float32 colours or the canvas's bytes. @type {'float' | 'canvas'} */
     this.showing = 'float';
@@ -80,6 +83,20 @@ export class CompareView {
     this._drawn = null;
     comparison.on('progress', () => this.render());
     comparison.on('result', () => this.render());
+    window.addEventListener('resize', () => this.place());
+  }
+
+  /** Lays the map over the canvas's box (the canvas may be smaller than the stage: a fixed size). */
+  place() {
+    if (this.map.hidden) return;
+    const box = this.canvas.getBoundingClientRect();
+    const stage = this.stage.getBoundingClientRect();
+    Object.assign(this.map.style, {
+      left: `${box.left - stage.left}px`,
+      top: `${box.top - stage.top}px`,
+      width: `${box.width}px`,
+      height: `${box.height}px`,
+    });
   }
 
   render() {
@@ -97,6 +114,7 @@ export class CompareView {
     this.map.hidden = !result || !mapOn;
     this.map.classList.toggle('stale', comparison.stale);
     if (result && (this._drawn?.[0] !== result || this._drawn[1] !== this.showing)) this._draw(result);
+    this.place();
     this.figures.replaceChildren(...this._figures());
   }
 
@@ -160,6 +178,6 @@ function legend() {
     { class: 'legend', title: `Each pixel's largest channel error; below ${LOW}/255 the picture shows, dimmed` },
     bar,
     ticks,
-    element('span', { class: 'unit' }, '|error| in 1/255 steps (log scale); below 0.01, the picture in grey'),
+    element('span', { class: 'unit' }, `|error| in 1/255 steps (log scale); below ${LOW}, the picture in grey`),
   );
 }

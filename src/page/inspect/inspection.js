@@ -44,7 +44,7 @@ export function installInspection(app, { stage, canvas, toast, builtinSource }) 
   };
 
   new InspectorPanel(stage, inspector, { compare });
-  new CompareView(stage, comparison, { pin, compare });
+  const compareView = new CompareView(stage, canvas, comparison, { pin, compare });
 
   // In Inspect mode the canvas's clicks pin pixels: the stage hears them first (capture), and
   // iMouse (app/shadertoy-inputs.js, on the canvas) never does.
@@ -67,7 +67,10 @@ export function installInspection(app, { stage, canvas, toast, builtinSource }) 
     if (!inspector.active) loupe.follow(null);
     mark();
   });
-  app.on('drawn', mark);
+  app.on('drawn', () => {
+    mark();
+    compareView.place();
+  });
   window.addEventListener('resize', mark);
   window.addEventListener('keydown', (event) => {
     if (event.key !== 'Escape' || !inspector.active || !inspector.pinned || isTyping(event)) return;

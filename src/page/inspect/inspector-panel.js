@@ -86,7 +86,12 @@ export class InspectorPanel {
       return;
     }
     if (!readout) {
-      this.body.replaceChildren(element('p', { class: 'hint' }, 'Reading the pixel…'));
+      // a probe waits for the frame under way (the buffers must hold a whole frame)
+      const progress = inspector.app.frames.progress;
+      const waiting = progress
+        ? ` once the frame under way is drawn (${Math.floor((100 * progress.y) / Math.max(1, progress.height))}% so far)`
+        : '';
+      this.body.replaceChildren(element('p', { class: 'hint' }, `Reading the pixel${waiting}…`));
       return;
     }
     this.body.replaceChildren(...this._readout(readout));

@@ -19,6 +19,8 @@ import { readPath } from '../../shadertoy/path-probe.js';
 
 /** Reads of a pinned pixel follow one another at most this often. */
 const MIN_INTERVAL_MS = 100;
+/** What the readout says while the GPU context is gone. */
+const LOST = 'The GPU context was lost: the readout comes back with the picture.';
 
 /** The shader's object ids (shaders/raytrace.glsl: ID_*), the new object's by SCENE. */
 const OBJECTS = { '-1': 'sky', 0: 'ground', 1: 'sphere', 2: 'cube' };
@@ -91,7 +93,11 @@ export class Inspector extends Emitter {
       if (of.width !== frame.width || of.height !== frame.height) this._rescale(frame.width, frame.height);
       this.request();
     });
-    app.on('context', () => this.request());
+    app.on('context', (_, lost) => {
+      if (!lost) return this.request();
+      this.problem = LOST;
+      this.emit('readout');
+    });
   }
 
   /** Inspect on or off (off keeps the pinned pixel, unread, until it is on again). @param {boolean} on */
@@ -182,7 +188,7 @@ export class Inspector extends Emitter {
       probed = await app.gpu.ask('probe', { x: pinned.x, y: pinned.y });
     } catch (error) {
       if (/replaced by a newer/.test(error.message)) return;
-      this.problem = app.gpu.contextLost ? 'The GPU context was lost: the readout comes back with the picture.' : error.message;
+      this.problem = app.gpu.contextLost ? LOST : `Could not read the pixel: ${error.message}.`;
       this.emit('readout');
       return;
     }
