@@ -78,7 +78,7 @@ export class CompareView {
       this.figures,
       legend(),
     );
-    stage.append(this.map, this.root);
+    // on the page from the first comparison on (before, it would be one more <progress> there)
     /** The result drawn on the map, and which error. @type {[ComparisonResult, string] | null} */
     this._drawn = null;
     comparison.on('progress', () => this.render());
@@ -103,6 +103,7 @@ export class CompareView {
     const { comparison } = this;
     const { running, result, error } = comparison;
     this.root.hidden = !running && !result && !error;
+    if (!this.root.hidden && !this.root.isConnected) this.stage.append(this.map, this.root);
     this.progress.hidden = !running;
     if (running) {
       this.phase.textContent = running.of ? `${running.phase}: ${running.rows} of ${running.of} rows` : `${running.phase}…`;
