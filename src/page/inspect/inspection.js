@@ -59,7 +59,10 @@ export function installInspection(app, { stage, canvas, toast, builtinSource }) 
     },
     { capture: true },
   );
-  stage.addEventListener('pointermove', (event) => loupe.follow(inspector.active && event.target === canvas ? event : null));
+  stage.addEventListener('pointermove', (event) => {
+    const over = [canvas, compareView.map].find((target) => target === event.target);
+    loupe.follow(inspector.active && over ? event : null, over);
+  });
   stage.addEventListener('pointerleave', () => loupe.follow(null));
   const mark = () => loupe.mark(inspector.active ? (inspector.pinned ?? null) : null);
   inspector.on('mode', () => {

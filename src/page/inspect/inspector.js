@@ -119,6 +119,7 @@ export class Inspector extends Emitter {
     this.pinned = { x: clamp(x, width), y: clamp(y, height), of: { width, height } };
     this.readout = null;
     this.problem = null;
+    this._lastStart = 0; // a new pin is read at once; only re-reads after frames are spaced
     this.emit('mode');
     this.emit('readout');
     this.request();

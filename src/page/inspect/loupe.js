@@ -1,5 +1,6 @@
 // Where the inspector points on the canvas: in Inspect mode a magnifier follows the cursor (the
-// canvas's pixels around it, enlarged, the one under the cursor framed, its coordinates below),
+// pixels around it, enlarged, of the canvas or of the comparison's heat map over it, the one
+// under the cursor framed, its coordinates below),
 // and the pinned pixel is framed on the canvas itself. Pixels are the frame's (device pixels,
 // y from the bottom, as fragCoord counts them), mapped through the canvas's box.
 
@@ -42,23 +43,25 @@ export class Loupe {
   }
 
   /**
-   * Shows the magnifier at a pointer position (null hides it).
+   * Shows the magnifier at a pointer position (null hides it), enlarging `source` (the canvas, or
+   * the heat map over it: a canvas of the frame's size).
    * @param {{clientX: number, clientY: number} | null} pointer
+   * @param {HTMLCanvasElement} [source]
    */
-  follow(pointer) {
-    const at = pointer && pixelAt(this.canvas, pointer.clientX, pointer.clientY);
+  follow(pointer, source = this.canvas) {
+    const at = pointer && pixelAt(source, pointer.clientX, pointer.clientY);
     if (!at) {
       this.root.hidden = true;
       return;
     }
-    const { height } = this.canvas;
+    const { height } = source;
     const context = this._context;
     context.imageSmoothingEnabled = false;
     context.fillStyle = '#000';
     context.fillRect(0, 0, SPAN * ZOOM, SPAN * ZOOM);
     const half = (SPAN - 1) / 2;
     const top = height - 1 - at.y;
-    context.drawImage(this.canvas, at.x - half, top - half, SPAN, SPAN, 0, 0, SPAN * ZOOM, SPAN * ZOOM);
+    context.drawImage(source, at.x - half, top - half, SPAN, SPAN, 0, 0, SPAN * ZOOM, SPAN * ZOOM);
     context.strokeStyle = '#fff';
     context.lineWidth = 2;
     context.strokeRect(half * ZOOM, half * ZOOM, ZOOM, ZOOM);

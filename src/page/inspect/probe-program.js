@@ -22,12 +22,15 @@ export class ProbeProgram {
     this.compiledKey = null;
     /** The compile under way, by key. @type {{key: string, done: Promise<void>} | null} */
     this._compiling = null;
-    /** A key whose compile failed, with its error: not tried again. @type {{key: string, error: Error} | null} */
+    /** A key whose compile failed with a compile error: not tried again. @type {{key: string, error: Error} | null} */
     this.failed = null;
     /** The worker the probe was compiled in (a new worker after a hang has none). @type {Worker | null} */
     this._worker = null;
-    // a lost context takes the program with it
-    app.on('context', () => (this.compiledKey = null));
+    // a lost context takes the program with it (and a compile it cut short was no verdict)
+    app.on('context', () => {
+      this.compiledKey = null;
+      this.failed = null;
+    });
   }
 
   /** Why the app's shader has no path probe, or null when it has one. */
@@ -82,7 +85,7 @@ export class ProbeProgram {
           this._worker = worker;
         },
         (error) => {
-          this.failed = { key, error };
+          if (error.messages) this.failed = { key, error }; // a compile error; not a lost context
           throw error;
         },
       )

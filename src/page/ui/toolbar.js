@@ -123,20 +123,24 @@ export class Toolbar {
       return b;
     };
 
-    this.fullscreenButton = button(
+    /** A button that stays pressed while what it turns on is on. */
+    const toggle = (label, title, glyph, action) => {
+      const b = button(label, title, glyph, action);
+      b.setAttribute('aria-pressed', 'false');
+      return b;
+    };
+    this.fullscreenButton = toggle(
       'Fullscreen',
       'The canvas alone, on the whole screen (F; Esc leaves)',
       'fullscreen',
       actions.toggleFullscreen,
     );
-    this.fullscreenButton.setAttribute('aria-pressed', 'false');
-    this.inspectButton = button(
+    this.inspectButton = toggle(
       'Inspect',
       'Inspect a pixel: click one on the canvas to pin it and read its colour in float, its buffers and, for the raytracer, its ray path (I; Esc unpins)',
       'inspect',
       actions.toggleInspect,
     );
-    this.inspectButton.setAttribute('aria-pressed', 'false');
 
     root.append(
       element('div', { class: 'group' }, this.playButton, restart, resetView, this.timeSlider, this.timeText, this.speedSelect),
