@@ -1049,6 +1049,9 @@ vec3 radiance(Scene s, EyeRay eye, float coneSpread, out vec3 key, out vec3 keyN
     float throughput = 1.0;
     float coneWidth = 0.0;
     Hit hit = traceScene(s, ro, rd, ID_NONE, T_MAX);
+#ifdef PROBE_PATH
+    probeRay(0, hit.id, hit.t, hit.n, throughput);  // the page's pixel inspector: src/shadertoy/path-probe.js
+#endif
     key = vec3(float(hit.id), 0.0, float(ID_NONE));
     keyNormal = hit.n;
 #if EDGE_TESTS
@@ -1086,6 +1089,9 @@ vec3 radiance(Scene s, EyeRay eye, float coneSpread, out vec3 key, out vec3 keyN
         bool meetsAgain = reenters(id);
         bool blocked = traceScene(s, mix(p, leaveTorus(p, n), bvec3(meetsAgain)), l, meetsAgain ? ID_NONE : id, lightDist).id != ID_NONE;
         lit = all(bvec2(lit, !blocked));
+#endif
+#ifdef PROBE_PATH
+        probeLit(bounce, lit);
 #endif
         vec3 local = shadeLocal(l, n, rd, albedo, facing, lit);
         key.y = bounce == 0 ? float(lit) : key.y;
@@ -1126,6 +1132,9 @@ vec3 radiance(Scene s, EyeRay eye, float coneSpread, out vec3 key, out vec3 keyN
         bool again = any(bvec2(inside, reenters(id)));
         ro = mix(p, inside ? offsetAlong(p, -n) : leaveTorus(p, n), bvec3(again));
         hit = traceScene(s, ro, rd, again ? ID_NONE : id, T_MAX);
+#ifdef PROBE_PATH
+        probeRay(bounce + 1, hit.id, hit.t, hit.n, throughput);
+#endif
         key.z = bounce == 0 ? float(hit.id) : key.z;
 #if EDGE_TESTS
         if (bounce == 0) {

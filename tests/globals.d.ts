@@ -101,8 +101,31 @@ export interface RaytracerHook {
   /** Stops the recording under way: its record() rejects, nothing is made. */
   cancelRecording(): void;
   recording(): { busy: boolean };
+  /** Inspect on, pixel (x, y) pinned (y from the bottom) and read, path and reference included (src/page/inspect/inspector.js). */
+  inspect(x: number, y: number): Promise<Readout>;
+  /** The inspector as it is now. */
+  inspection(): { active: boolean; pinned: { x: number; y: number } | null; problem: string | null; readout: Readout | null };
+  unpin(): void;
+  /** "Compare with float64" on the frame on the canvas (src/page/inspect/compare.js). */
+  compareWithFloat64(): Promise<ComparisonSummary>;
+  /** The comparison's state on the page. */
+  comparison(): {
+    running: { phase: string; rows: number; of: number } | null;
+    error: string | null;
+    stale: boolean;
+    shown: { width: number; height: number } | null;
+  };
   info(): RaytracerInfo;
 }
+
+/** What the pixel inspector read at a pixel. */
+export type Readout = import('../src/page/inspect/inspector.js').Readout;
+
+/** What compareWithFloat64() resolves with: a ComparisonResult without its images. */
+export type ComparisonSummary = Pick<
+  import('../src/page/inspect/compare.js').ComparisonResult,
+  'figures' | 'width' | 'height' | 'extraSampleShare' | 'frame' | 'ms' | 'caveat'
+>;
 
 /** window.__benchmark: the benchmark's programs, set up in its raw WebGL2 page (tests/bench/timer.js). */
 export interface BenchmarkPage {

@@ -9,7 +9,7 @@ import { imageError, formatImageError } from '../src/reference/error.js';
 import { SHADER_FILE } from './harness/config.js';
 import { assertNotBlank } from './harness/images.js';
 import { disconnect, renderView } from './harness/page.js';
-import { EXTRA_SAMPLES_VIEW, extraSampleMask } from './harness/aa-mask.js';
+import { EXTRA_SAMPLES_VIEW, extraSampleMask } from '../src/shadertoy/extra-samples.js';
 import { viewControlProblems } from './views.js';
 import { HARD_VIEWS, MAX_OVER_2, referenceView } from './hard-views.js';
 

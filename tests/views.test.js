@@ -6,7 +6,7 @@ import { describe, expect, test } from 'vitest';
 import { parseControls } from '../src/shadertoy/controls.js';
 import { GOLDEN_DIR, SHADER_FILE } from './harness/config.js';
 import { MAX_DIFF_FRACTION, PIXEL_THRESHOLD, VIEWS, viewControlProblems, viewQuery, viewSize } from './views.js';
-import { EXTRA_SAMPLES_VIEW } from './harness/aa-mask.js';
+import { EXTRA_SAMPLES_VIEW, extraSamplesValues } from '../src/shadertoy/extra-samples.js';
 
 describe('view table', () => {
   const controls = parseControls(fs.readFileSync(SHADER_FILE, 'utf8'));
@@ -18,6 +18,7 @@ describe('view table', () => {
   test('the harness reads the debug VIEW "Extra samples" by its number in the control block', () => {
     const view = controls.find((c) => c.name === 'VIEW');
     expect(view?.options?.find((o) => o.value === EXTRA_SAMPLES_VIEW.VIEW)?.label).toBe('Extra samples');
+    expect(extraSamplesValues(controls), "the page's inspector finds it by its label").toEqual(EXTRA_SAMPLES_VIEW);
   });
 
   test('view names are unique file-name-safe words', () => {

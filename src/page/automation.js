@@ -38,6 +38,18 @@
 //                         after cancelRecording().
 //   cancelRecording()     stops the recording under way (this one or the Record button's).
 //   recording()           {busy}: whether a recording is under way.
+//   inspect(x, y)         Promise<Readout>: Inspect on, pixel (x, y) pinned (y from the bottom:
+//                         fragCoord - 0.5) and read: its float colour, the canvas's byte, each
+//                         buffer, and for the raytracer its ray path and the float64 reference's
+//                         colour and path (inspect/inspector.js: Readout); resolves once all of
+//                         it is in (a path probe that compiles first included).
+//   inspection()          {active, pinned, problem, readout}: the inspector as it is now.
+//   unpin()               unpins the pixel (Esc).
+//   compareWithFloat64()  Promise<{width, height, figures: {float, canvas}, extraSampleShare,
+//                         frame, ms, caveat}>: "Compare with float64" on the frame on the canvas
+//                         (inspect/compare.js; figures as src/reference/error.js gives them);
+//                         rejects with why it cannot.
+//   comparison()          {running, error, stale, shown}: the comparison's state on the page.
 //   info()                {renderer (UNMASKED_RENDERER_WEBGL), vendor, version, shadingLanguage,
 //                         width, height, frame, time, playing, speed, mouse (iMouse),
 //                         controls: {NAME: value}, fileName, shaderUrl, origin, contextLost,
@@ -166,6 +178,32 @@ export function installAutomation(app, ready, ui) {
       }
     },
 
+    async inspect(x, y) {
+      await settled();
+      const { inspector } = ui.inspection;
+      ui.inspection.pin(x, y);
+      return structuredClone(await inspector.complete());
+    },
+    inspection() {
+      const { inspector } = ui.inspection;
+      return structuredClone({
+        active: inspector.active,
+        pinned: inspector.pinned,
+        problem: inspector.problem,
+        readout: inspector.readout,
+      });
+    },
+    unpin: () => ui.inspection.inspector.unpin(),
+    async compareWithFloat64() {
+      await settled();
+      const { figures, width, height, extraSampleShare, frame, ms, caveat } = await ui.inspection.comparison.run();
+      return { figures, width, height, extraSampleShare, frame, ms, caveat };
+    },
+    comparison() {
+      const { running, error, stale, result } = ui.inspection.comparison;
+      return structuredClone({ running, error, stale, shown: result ? { width: result.width, height: result.height } : null });
+    },
+
     shareUrl: () => ui.shareUrl(),
     editorSource: () => ui.editor.text,
 
@@ -223,6 +261,11 @@ export function installFailedAutomation(error) {
     loadShader: fail,
     shareUrl: () => location.href,
     editorSource: () => '',
+    inspect: fail,
+    inspection: () => null,
+    unpin() {},
+    compareWithFloat64: fail,
+    comparison: () => null,
     record: fail,
     cancelRecording() {},
     recording: () => ({ busy: false }),

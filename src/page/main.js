@@ -176,7 +176,7 @@ async function start() {
   if (params.time !== undefined) app.inputs.setTime(params.time);
   if (params.speed !== undefined) app.inputs.setSpeed(params.speed);
   if (params.mouse) app.inputs.setMouse(params.mouse, { start: true });
-  const ui = installUi(app);
+  const ui = installUi(app, { builtinSource });
   overlay.onLine = (line, pass) => ui.editor.goToLine(line, pass);
   installAutomation(app, app.ready, ui);
 

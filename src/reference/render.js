@@ -150,27 +150,35 @@ function makeScene(s) {
     return mix(s.CHECKER_LIGHT, s.CHECKER_DARK, sx + sz - 2 * sx * sz);
   }
 
+  /** The light leaving a hit towards the viewer, and whether the light reaches the hit. */
   function shadeLocal(p, n, rd, id, albedo, inside) {
     const color = scale(albedo, s.AMBIENT);
-    if (inside) return color;
+    if (inside) return { color, lit: false };
     const toLight = sub(s.LIGHT_POSITION, p);
     const lightDist = length(toLight);
     const l = scale(toLight, 1 / lightDist);
     const facing = dot(n, l);
-    if (facing <= 0) return color;
-    if (s.SHADOWS && (reenters(id) ? occluded(offAlong(p, n, 1), l, lightDist, ID_NONE) : occluded(p, l, lightDist, id))) return color;
+    if (facing <= 0) return { color, lit: false };
+    if (s.SHADOWS && (reenters(id) ? occluded(offAlong(p, n, 1), l, lightDist, ID_NONE) : occluded(p, l, lightDist, id)))
+      return { color, lit: false };
     const highlight = Math.max(dot(reflect(scale(l, -1), n), scale(rd, -1)), 0) ** s.SHININESS;
     const specular = s.SPECULAR * highlight;
-    return [color[0] + facing * albedo[0] + specular, color[1] + facing * albedo[1] + specular, color[2] + facing * albedo[2] + specular];
+    const lit = [
+      color[0] + facing * albedo[0] + specular,
+      color[1] + facing * albedo[1] + specular,
+      color[2] + facing * albedo[2] + specular,
+    ];
+    return { color: lit, lit: true };
   }
 
   /**
    * Radiance along an eye ray from `eye`. With `differentials` ({dirDx, dirDy}: how the ray's
    * direction changes across its sample's footprint) the ground is filtered as the shader filters
    * it: over the eye ray's exact footprint, and over a ray cone of coneSpread for reflected rays.
-   * Without, it is point-sampled.
+   * Without, it is point-sampled. With `path` (an array), each ray's hit is pushed onto it as the
+   * shader's path probe records it (src/shadertoy/path-probe.js: PathRay).
    */
-  function radiance(eye, rd, coneSpread, differentials) {
+  function radiance(eye, rd, coneSpread, differentials, path = null) {
     let ro = eye;
     let color = [0, 0, 0];
     let throughput = 1;
@@ -178,6 +186,11 @@ function makeScene(s) {
     let skipId = ID_NONE;
     for (let bounce = 0; bounce <= s.BOUNCES; bounce++) {
       const hit = trace(ro, rd, skipId, eye);
+      path?.push(
+        hit
+          ? { id: hit.id, t: hit.t, normal: hit.n, lit: null, weight: throughput }
+          : { id: ID_NONE, t: Infinity, normal: [0, 0, 0], lit: null, weight: throughput },
+      );
       if (!hit) return addScaled(color, mix(s.SKY_HORIZON, s.SKY_ZENITH, Math.min(Math.max(rd[1], 0), 1)), throughput);
       const { t, n, id } = hit;
       const inside = dot(rd, n) > 0;
@@ -196,7 +209,8 @@ function makeScene(s) {
         footprint = [cone[0], 0, cone[1], 0];
       }
       const albedo = id === ID_GROUND ? groundColor(p, footprint) : colors[id];
-      const local = shadeLocal(p, n, rd, id, albedo, inside);
+      const { color: local, lit } = shadeLocal(p, n, rd, id, albedo, inside);
+      if (path) path[path.length - 1].lit = lit;
       const mirror = reflectivity[id];
       if (bounce === s.BOUNCES || throughput * mirror < 1 / 255) return addScaled(color, local, throughput);
       color = addScaled(color, local, throughput * (1 - mirror));
@@ -267,21 +281,9 @@ export function renderReference(shaderSource, view, { mode = 'same-rays', sample
       'reference: adaptive anti-aliasing needs extraSamples, the pixels the shader gave extra samples (its "Extra samples" debug VIEW view)',
     );
   }
-  const filter = !converged && s.TEXTURE_FILTER === 1;
+  const sample = makeSampler(camera, radiance, width, height, !converged && s.TEXTURE_FILTER === 1);
   const [firstRow, endRow] = rows ?? [0, height];
   const rgb = new Float64Array(width * (endRow - firstRow) * 3);
-  /** The sample through image point (px, py) whose footprint is `footprint` pixels on a side (eyeRay in the shader). */
-  const sample = (px, py, footprint) => {
-    const u = (2 * px - width) / height;
-    const v = (2 * py - height) / height;
-    const toPoint = add(scale(camera.back, -1), scale(add(scale(camera.right, u), scale(camera.up, v)), camera.tanHalfFov));
-    const dir = normalize(toPoint);
-    if (!filter) return radiance(camera.eye, dir, 0, null);
-    const step = (2 * camera.tanHalfFov * footprint) / height / length(toPoint);
-    const across = (axis) => scale(sub(axis, scale(dir, dot(dir, axis))), step);
-    const differentials = { dirDx: across(camera.right), dirDy: across(camera.up) };
-    return radiance(camera.eye, dir, ((2 * camera.tanHalfFov) / height) * footprint, differentials);
-  };
   for (let row = firstRow; row < endRow; row++) {
     const fy = height - 1 - row + 0.5; // fragCoord.y counts from the bottom
     for (let x = 0; x < width; x++) {
@@ -310,6 +312,53 @@ export function renderReference(shaderSource, view, { mode = 'same-rays', sample
     }
   }
   return { width, height, rgb };
+}
+
+/**
+ * The sample through image point (px, py) whose footprint is `footprint` pixels on a side (eyeRay
+ * in the shader), its ground filtered over that footprint when `filter`; `path` (an array) gets
+ * its rays.
+ * @returns {(px: number, py: number, footprint: number, path?: object[] | null) => number[]}
+ */
+function makeSampler(camera, radiance, width, height, filter) {
+  return (px, py, footprint, path = null) => {
+    const u = (2 * px - width) / height;
+    const v = (2 * py - height) / height;
+    const toPoint = add(scale(camera.back, -1), scale(add(scale(camera.right, u), scale(camera.up, v)), camera.tanHalfFov));
+    const dir = normalize(toPoint);
+    if (!filter) return radiance(camera.eye, dir, 0, null, path);
+    const step = (2 * camera.tanHalfFov * footprint) / height / length(toPoint);
+    const across = (axis) => scale(sub(axis, scale(dir, dot(dir, axis))), step);
+    const differentials = { dirDx: across(camera.right), dirDy: across(camera.up) };
+    return radiance(camera.eye, dir, ((2 * camera.tanHalfFov) / height) * footprint, differentials, path);
+  };
+}
+
+/**
+ * One pixel of the same-ray reference, and the path of the ray through its centre (the
+ * shader's first sample, the one the page's path probe records: src/shadertoy/path-probe.js).
+ * @param {string} shaderSource
+ * @param {object} view as renderReference's
+ * @param {number} x the pixel's column (fragCoord.x - 0.5)
+ * @param {number} y its row counted from the bottom (fragCoord.y - 0.5)
+ * @param {{extraSamples?: boolean}} [options] whether the shader gave this pixel the grid of extra
+ *   samples (adaptive anti-aliasing on; with uniform supersampling every pixel takes the grid)
+ * @returns {{rgb: number[], path: import('../shadertoy/path-probe.js').PathRay[]}} rgb clamped to [0, 1], as renderReference's
+ */
+export function referencePixel(shaderSource, view, x, y, { extraSamples = false } = {}) {
+  const s = referenceSettings(shaderSource, view.controls);
+  const { radiance } = makeScene(s);
+  const sample = makeSampler(referenceCamera(s, view), radiance, view.width, view.height, s.TEXTURE_FILTER === 1);
+  const gridPerAxis = Math.round(Math.sqrt(s.SAMPLES));
+  const perAxis = gridPerAxis > 1 && (s.ADAPTIVE_AA !== 1 || extraSamples) ? gridPerAxis : 1;
+  const path = [];
+  sample(x + 0.5, y + 0.5, 1, path);
+  const sum = [0, 0, 0];
+  for (let i = 0; i < perAxis * perAxis; i++) {
+    const c = sample(x + ((i % perAxis) + 0.5) / perAxis, y + (Math.floor(i / perAxis) + 0.5) / perAxis, 1 / perAxis);
+    for (let ch = 0; ch < 3; ch++) sum[ch] += c[ch];
+  }
+  return { rgb: sum.map((v) => Math.min(Math.max(v / (perAxis * perAxis), 0), 1)), path };
 }
 
 /**

@@ -14,7 +14,7 @@ import { renderReference } from '../../src/reference/render.js';
 import { imageError } from '../../src/reference/error.js';
 import { REPO_ROOT, SHADER_FILE } from '../harness/config.js';
 import { renderView } from '../harness/page.js';
-import { EXTRA_SAMPLES_VIEW, extraSampleMask } from '../harness/aa-mask.js';
+import { EXTRA_SAMPLES_VIEW, extraSampleMask } from '../../src/shadertoy/extra-samples.js';
 import { rendererLabel, withHarness } from '../harness/setup.js';
 import { HARD_VIEWS, referenceView } from '../hard-views.js';
 import { DEFAULT_SIZE, viewSize } from '../views.js';

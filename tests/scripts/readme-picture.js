@@ -3,9 +3,12 @@
 //   controls, adaptive anti-aliasing among them, at time 0);
 // - public/page.png: the page itself at 1280x800 (toolbar, canvas, the panel beside it, the
 //   editor open), as a person sees it;
-// - public/views.png: the shader's debug views (VIEW 0 to 5) side by side, three a row.
+// - public/views.png: the shader's debug views (VIEW 0 to 5) side by side, three a row;
+// - public/inspector.png: the page at 1280x800 after "Compare with float64" (the heat map over
+//   the canvas, its figures and legend), with Inspect on, a pixel on the sphere pinned (its
+//   readout: float colour, path, float64 colour) and the magnifier over the map.
 //
-//   npm run picture        writes both
+//   npm run picture        writes all four
 
 import path from 'node:path';
 import { REPO_ROOT, rel } from '../harness/config.js';
@@ -28,6 +31,21 @@ function montage(images, columns) {
   return out;
 }
 const PAGE_VIEWPORT = { width: 1280, height: 800, deviceScaleFactor: 1 };
+// Where the inspector's pixel and the magnifier are, as image coordinates u, v (-1 .. 1 of the
+// height, from the centre, as eyeRay takes them): on the sphere, where its mirror shows the cube;
+// and on the near ground, where the stripes' edges are the hottest pixels.
+/** @type {[number, number]} */
+const PINNED = [-0.25, 0.083];
+/** @type {[number, number]} */
+const MAGNIFIED = [0.55, -0.62];
+
+/**
+ * The pixel (y from the bottom) at image point (u, v) of a width x height canvas.
+ * @param {[number, number]} point
+ * @param {number} width
+ * @param {number} height
+ */
+const pixelOf = ([u, v], width, height) => [Math.floor((u * height + width) / 2), Math.floor((v * height + height) / 2)];
 
 await withHarness(async (context) => {
   const image = await renderView(VIEW);
@@ -59,4 +77,37 @@ await withHarness(async (context) => {
   } finally {
     await page.close();
   }
+
+  await inspectorPicture();
 });
+
+/** public/inspector.png: the comparison's heat map, the inspector's readout and its magnifier. */
+async function inspectorPicture() {
+  const { page, errors } = await openPage({ deterministic: false }); // the reference's time is real
+  try {
+    await page.setViewport(PAGE_VIEWPORT);
+    await page.goto(`${(await harnessContext()).baseUrl}/?time=0`, { waitUntil: 'load' });
+    await page.waitForFunction(() => window.raytracer, { polling: 50 });
+    await page.evaluate(() => window.raytracer.ready);
+    const compared = await page.evaluate(() => window.raytracer.compareWithFloat64());
+    const { width, height } = compared;
+    const [x, y] = pixelOf(PINNED, width, height);
+    const readout = await page.evaluate((px, py) => window.raytracer.inspect(px, py), x, y);
+    const box = await page.$eval('#view', (c) => {
+      const r = c.getBoundingClientRect();
+      return { left: r.left, top: r.top, width: r.width, height: r.height };
+    });
+    const [mx, my] = pixelOf(MAGNIFIED, width, height);
+    await page.mouse.move(box.left + ((mx + 0.5) / width) * box.width, box.top + ((height - 1 - my + 0.5) / height) * box.height);
+    await page.waitForFunction(() => !(/** @type {HTMLElement} */ (document.querySelector('.loupe-box')).hidden), { polling: 50 });
+    const file = path.join(REPO_ROOT, 'public', 'inspector.png');
+    await page.screenshot({ path: file });
+    if (errors.length) throw new Error(`the page logged errors:\n  ${errors.join('\n  ')}`);
+    const path0 = readout.path.rays.map((r) => r.object).join(' → ');
+    console.log(
+      `wrote ${rel(file)} (${width}x${height} compared in ${(compared.ms.total / 1000).toFixed(1)} s; pixel ${x}, ${y}: ${path0})`,
+    );
+  } finally {
+    await page.close();
+  }
+}

@@ -52,6 +52,11 @@ export class FrameLoop {
     return { width: this.last?.width ?? 0, height: this.last?.height ?? 0 };
   }
 
+  /** Resolves once no frame is under way (whatever its outcome). */
+  async idle() {
+    while (this._drawing) await this._drawing.catch(() => {});
+  }
+
   /** Draws at the next animation frame (once, however often it is asked, and never while a frame is under way). */
   request() {
     this._dirty = true;

@@ -85,6 +85,17 @@ export class PassBuffers {
     return buffer ? buffer.targets[buffer.written].texture : null;
   }
 
+  /** The buffers in use, by name ('A' … 'D'). */
+  names() {
+    return [...this.buffers.keys()];
+  }
+
+  /** The target of `name` written last (what its readers read). @param {string} name */
+  lastWritten(name) {
+    const buffer = /** @type {{targets: THREE.WebGLRenderTarget[], written: number}} */ (this.buffers.get(name));
+    return buffer.targets[buffer.written];
+  }
+
   /** The target a pass of `name` draws into: the one not written last. @param {string} name */
   writeTarget(name) {
     const buffer = /** @type {{targets: THREE.WebGLRenderTarget[], written: number}} */ (this.buffers.get(name));

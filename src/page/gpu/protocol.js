@@ -40,6 +40,11 @@ import { ShaderCompileError, WebGL2UnavailableError } from './errors.js';
  */
 
 /**
+ * One pixel of the last frame drawn, as the probe (probe.js) read it, with that frame's inputs.
+ * @typedef {import('./probe.js').ProbeResult & {inputs: FrameInputs}} ProbedPixel
+ */
+
+/**
  * Requests: name → [what the page sends, what the reply holds].
  * @typedef {object} Requests
  * @property {[{project: MultipassShader, hostBlock: string, fileName: string}, null]} compile every
@@ -47,9 +52,17 @@ import { ShaderCompileError, WebGL2UnavailableError } from './errors.js';
  *   and the last shader that compiled keeps running
  * @property {[{inputs: FrameInputs, readBack: boolean}, DrawnFrame]} frame a frame for the page,
  *   drawn band by band; a newer frame replaces one that has not started
- * @property {[{inputs: FrameInputs, width: number, height: number, allPasses: boolean}, Uint8Array]} capture
+ * @property {[{inputs: FrameInputs, width: number, height: number, allPasses: boolean, program?: 'aa-pixels'}, Uint8Array]} capture
  *   the same frame at another size, off screen (allPasses: every pass, buffers included, at their
- *   size: a recorded frame); RGBA8, rows top to bottom, alpha 1
+ *   size: a recorded frame); RGBA8, rows top to bottom, alpha 1; program 'aa-pixels': the path
+ *   probe's mainImage (the shader's pixels with extra samples) instead of the Image pass
+ * @property {[{inputs: FrameInputs, width: number, height: number}, Float32Array]} captureFloat the
+ *   same frame's Image pass in RGBA32F, its colours as the shader wrote them (unclamped), rows top
+ *   to bottom
+ * @property {[{project: MultipassShader, hostBlock: string, fileName: string, key: string}, null]} compileProbe
+ *   the path probe (src/shadertoy/path-probe.js), never shown; `key` comes back with each probe
+ * @property {[{x: number, y: number}, ProbedPixel]} probe pixel (x, y) of the last frame drawn (y
+ *   from the bottom), read after the frames before it; rejects before the first frame
  * @property {[{inputs: FrameInputs, n: number}, number[]]} bench n whole frames back to back, each
  *   one draw waited for: their times in ms
  */
@@ -76,9 +89,9 @@ import { ShaderCompileError, WebGL2UnavailableError } from './errors.js';
  * @property {{lost: boolean}} context the context was lost (true) or restored (false); a restored
  *   context has no shader: the page compiles again
  * @property {{}} bandStarted a band went to the GPU
- * @property {{kind: 'frame' | 'capture', y: number, height: number, bitmap: ImageBitmap | null}} band
- *   the GPU finished a band of a frame or a capture, `y` rows of `height` done (the last band
- *   too); now and then with a bitmap of a frame as far as it got
+ * @property {{kind: 'frame' | 'capture' | 'probe', y: number, height: number, bitmap: ImageBitmap | null}} band
+ *   the GPU finished a band of a frame or a capture (or a probe's draws), `y` rows of `height`
+ *   done (the last band too); now and then with a bitmap of a frame as far as it got
  */
 
 /**
@@ -105,19 +118,19 @@ export function fromWire(wire) {
 
 /**
  * What in a message's parameters moves to the other side instead of being copied: bitmaps and
- * the buffers of byte arrays, at the top level of `params`.
+ * the buffers of typed arrays, at the top level of `params`.
  * @param {unknown} params
  * @returns {Transferable[]}
  */
 export function transferables(params) {
-  const values = params instanceof Uint8Array ? [params] : params && typeof params === 'object' ? Object.values(params) : [];
-  /** @type {Transferable[]} */
-  const out = [];
+  const values = ArrayBuffer.isView(params) ? [params] : params && typeof params === 'object' ? Object.values(params) : [];
+  /** @type {Set<Transferable>} */
+  const out = new Set();
   for (const value of values) {
-    if (typeof ImageBitmap !== 'undefined' && value instanceof ImageBitmap) out.push(value);
-    else if (value instanceof Uint8Array && value.byteLength) out.push(value.buffer);
+    if (typeof ImageBitmap !== 'undefined' && value instanceof ImageBitmap) out.add(value);
+    else if (ArrayBuffer.isView(value) && value.byteLength && value.buffer instanceof ArrayBuffer) out.add(value.buffer);
   }
-  return out;
+  return [...out];
 }
 
 /**

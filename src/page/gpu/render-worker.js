@@ -15,6 +15,7 @@ import { serve } from './protocol.js';
 
 /** @typedef {import('./protocol.js').FrameInputs} FrameInputs */
 /** @typedef {import('./protocol.js').DrawnFrame} DrawnFrame */
+/** @typedef {import('./protocol.js').ProbedPixel} ProbedPixel */
 
 /** How often an unfinished band's fence is looked at (browsers clamp shorter timeouts to ~4 ms). */
 const POLL_MS = 2;
@@ -22,8 +23,8 @@ const POLL_MS = 2;
 const PRESENT_EVERY_MS = 250;
 
 /**
- * @typedef {object} Job a frame or a capture under way
- * @property {'frame' | 'capture'} kind
+ * @typedef {object} Job a frame, a capture or a probe under way
+ * @property {'frame' | 'capture' | 'probe'} kind
  * @property {FrameInputs} inputs
  * @property {number} width
  * @property {number} height
@@ -34,6 +35,9 @@ const PRESENT_EVERY_MS = 250;
  * @property {number} y rows of it done
  * @property {boolean} redo something changed while a band was being drawn: it starts again
  * @property {boolean} [allPasses] a capture that draws every pass (a recorded frame)
+ * @property {boolean} [float] a capture read as RGBA32F
+ * @property {'aa-pixels'} [program] a capture of the path probe's mainImage instead of the Image pass
+ * @property {{x: number, y: number}} [pixel] a probe's pixel (y from the bottom)
  * @property {(result: any) => void} resolve
  * @property {(error: Error) => void} reject
  */
@@ -50,6 +54,8 @@ let band = null;
 let lastPresent = 0;
 /** WEBGL_lose_context, kept from the loss it caused for the restore. @type {WEBGL_lose_context | null} */
 let loseContext = null;
+/** The inputs of the last frame finished (a probe reads that frame). @type {FrameInputs | null} */
+let lastFrame = null;
 
 /**
  * A frame or capture, queued; resolves when it is done.
@@ -87,7 +93,7 @@ function pump() {
     job = null;
     return pump();
   }
-  const gl = renderer.gl;
+  if (job.kind === 'probe') return startProbe(job);
   const steps = renderer.steps;
   // a capture draws only the Image pass over the buffers as they are, unless it is a recorded
   // frame of a multipass shader (allPasses); a new shader meanwhile may have fewer passes
@@ -101,14 +107,40 @@ function pump() {
   }
   const rows = planner.rows(job.width, job.height - job.y);
   writeUniforms(renderer.uniforms, job.inputs, { width: job.width, height: job.height });
-  const target = renderer.beginStep(step, job.width, job.height) ?? job.target;
+  const drawn = job.program === 'aa-pixels' ? renderer.probe.mainImageAt(0, 0) : step;
+  const target = renderer.beginStep(drawn, job.width, job.height) ?? job.target;
   renderer.drawRows(job.y, job.y + rows, target);
   if (last && job.y + rows >= job.height && job.kind === 'frame') renderer.gpuTimer.end();
+  startBand(rows);
+}
+
+/** The GPU has the band's draws: watch for its end. @param {number} rows */
+function startBand(rows) {
+  const gl = renderer.gl;
   const sync = gl.fenceSync(gl.SYNC_GPU_COMMANDS_COMPLETE, 0);
   gl.flush();
   band = { sync, rows, started: performance.now() };
   tell('bandStarted', {});
   setTimeout(poll, POLL_MS);
+}
+
+/** A probe's draws (probe.js), over the last frame drawn: one band of its own. @param {Job} probe */
+function startProbe(probe) {
+  if (!lastFrame) {
+    probe.reject(new Error('no frame has been drawn yet'));
+    job = null;
+    return pump();
+  }
+  const { width, height } = lastFrame;
+  const { x, y } = probe.pixel;
+  if (!(x >= 0 && y >= 0 && x < width && y < height)) {
+    probe.reject(new Error(`pixel (${x}, ${y}) is outside the ${width}x${height} frame`));
+    job = null;
+    return pump();
+  }
+  writeUniforms(renderer.uniforms, lastFrame);
+  renderer.probe.draw(x, y, width, height);
+  startBand(1);
 }
 
 function poll() {
@@ -128,6 +160,15 @@ function poll() {
 /** @param {number} rows @param {number} ms */
 function bandDone(rows, ms) {
   if (!job || !renderer) return;
+  if (job.kind === 'probe') {
+    const probe = job;
+    job = null;
+    tell('band', { kind: 'probe', y: 1, height: 1, bitmap: null });
+    /** @type {ProbedPixel} */
+    const probed = { ...renderer.probe.read(probe.pixel.x, probe.pixel.y), inputs: lastFrame };
+    probe.resolve(probed);
+    return;
+  }
   planner.measured(job.width, rows, ms);
   if (job.redo) job.redo = false;
   else job.y += rows;
@@ -146,15 +187,28 @@ function bandDone(rows, ms) {
   job = null;
   if (finished.kind === 'frame') {
     lastPresent = now;
+    lastFrame = finished.inputs;
     const pixels = finished.readBack ? readOpaque(finished.target, finished.width, finished.height) : null;
     /** @type {DrawnFrame} */
     const drawn = { bitmap: renderer.present(), pixels, gpuTimes: renderer.gpuTimer.poll() };
     finished.resolve(drawn);
   } else {
-    const pixels = readOpaque(finished.target, finished.width, finished.height);
+    const pixels = finished.float
+      ? readFloat(finished.target, finished.width, finished.height)
+      : readOpaque(finished.target, finished.width, finished.height);
     finished.target.dispose();
     finished.resolve(pixels);
   }
+}
+
+/** A float target's pixels, RGBA32F, rows top to bottom. */
+function readFloat(target, width, height) {
+  const pixels = new Float32Array(width * height * 4);
+  renderer.three.readRenderTargetPixels(target, 0, 0, width, height, pixels);
+  const row = width * 4;
+  const out = new Float32Array(pixels.length);
+  for (let y = 0; y < height; y++) out.set(pixels.subarray((height - 1 - y) * row, (height - y) * row), y * row);
+  return out;
 }
 
 /** A target's pixels as the page shows them: rows top to bottom, alpha 1 (the page's canvas has none). */
@@ -211,8 +265,27 @@ const tell = serve(
       return enqueue({ kind: 'frame', inputs, width, height, readBack, target: renderer.frameTarget });
     },
 
-    capture({ inputs, width, height, allPasses }) {
-      return enqueue({ kind: 'capture', inputs, width, height, readBack: true, target: renderer.makeTarget(width, height), allPasses });
+    capture({ inputs, width, height, allPasses, program }) {
+      if (program && !renderer.probe.step) throw new Error('the path probe has not compiled');
+      const target = renderer.makeTarget(width, height);
+      return enqueue({ kind: 'capture', inputs, width, height, readBack: true, target, allPasses, program });
+    },
+
+    captureFloat({ inputs, width, height }) {
+      const target = renderer.makeTarget(width, height, true);
+      return enqueue({ kind: 'capture', inputs, width, height, readBack: true, target, float: true });
+    },
+
+    async compileProbe({ project, hostBlock, fileName, key }) {
+      await renderer.probe.compile(project, hostBlock, fileName, key);
+      return null;
+    },
+
+    probe({ x, y }) {
+      // a newer probe replaces one that has not started
+      const stale = waiting.findIndex((queued) => queued.kind === 'probe');
+      if (stale >= 0) waiting.splice(stale, 1)[0].reject(new Error('replaced by a newer probe'));
+      return enqueue({ kind: 'probe', inputs: null, width: 1, height: 1, readBack: true, target: null, pixel: { x, y } });
     },
 
     bench({ inputs, n }) {

@@ -19,6 +19,7 @@ import { PassBuffers } from './pass-buffers.js';
 import { WebGL2UnavailableError } from './errors.js';
 import { PassCompiler, VERTEX_SHADER } from './pass-compiler.js';
 import { ChannelSamplers, bindChannels, imageTexture, ownChannelUniforms } from './channel-bindings.js';
+import { PixelProbe } from './probe.js';
 
 /** @typedef {import('./pass-compiler.js').Step} Step */
 
@@ -72,8 +73,11 @@ export class ShaderRenderer {
     this.mesh.frustumCulled = false;
     this.scene.add(this.mesh);
     /** Compiles the passes (pass-compiler.js); keeps compiled materials, never disposing one on screen. */
-    this.compiler = new PassCompiler(this.three, geometry, this.camera, (material) =>
-      this.steps.some((step) => step.material === material),
+    this.compiler = new PassCompiler(
+      this.three,
+      geometry,
+      this.camera,
+      (material) => this.steps.some((step) => step.material === material) || this.probe.uses(material),
     );
 
     /** Where frames are drawn and kept (RGBA8, as the page's canvas): the page shows copies of it. */
@@ -109,6 +113,8 @@ export class ShaderRenderer {
 
     this._serial = 0; // compiles started
     this._installed = 0; // the compile on screen
+    /** The pixel inspector's reads, and the path probe (probe.js). */
+    this.probe = new PixelProbe(this);
   }
 
   /** True once some shader has compiled (render() draws nothing before). */
@@ -146,7 +152,7 @@ export class ShaderRenderer {
    */
   async compile(project, hostBlock, fileName = 'shader') {
     const serial = ++this._serial;
-    const steps = await this.compiler.compileSteps(project, hostBlock, fileName, () => this._passUniforms());
+    const steps = await this.compiler.compileSteps(project, hostBlock, fileName, () => this.passUniforms());
     if (serial < this._installed) return; // a newer compile got in first
     this._installed = serial;
     this.steps = steps;
@@ -165,7 +171,7 @@ export class ShaderRenderer {
    * A pass's uniforms: Shadertoy's and the controls', shared by every pass (one write reaches them
    * all), but its own channels and their resolutions.
    */
-  _passUniforms() {
+  passUniforms() {
     return { ...this.uniforms, ...ownChannelUniforms(this._black) };
   }
 
@@ -197,8 +203,9 @@ export class ShaderRenderer {
     this.keyboard.needsUpdate = true;
   }
 
-  /** Forgets the compiled materials but the ones on screen (their programs died with a lost context). */
+  /** Forgets the compiled materials but the ones on screen (their programs died with a lost context), and the path probe. */
   forgetCompiled() {
+    this.probe.forget();
     this.compiler.forgetCompiled();
   }
 
@@ -235,12 +242,14 @@ export class ShaderRenderer {
 
   /**
    * An RGBA8 render target, as the page's canvas: the frame target, and one of its own for a
-   * frame drawn at another size (a screenshot, a recording).
+   * frame drawn at another size (a screenshot, a recording); RGBA32F with `float`.
    * @param {number} width
    * @param {number} height
+   * @param {boolean} [float]
    */
-  makeTarget(width, height) {
-    return new THREE.WebGLRenderTarget(width, height, { depthBuffer: false, stencilBuffer: false, generateMipmaps: false });
+  makeTarget(width, height, float = false) {
+    const type = float ? THREE.FloatType : THREE.UnsignedByteType;
+    return new THREE.WebGLRenderTarget(width, height, { type, depthBuffer: false, stencilBuffer: false, generateMipmaps: false });
   }
 
   /** Sizes the frame target and the canvas, in device pixels; what is in the target is lost on a change. */
@@ -288,8 +297,22 @@ export class ShaderRenderer {
    */
   drawRows(y0, y1, target = this.frameTarget) {
     if (!this.hasProgram) return false;
-    target.scissor.set(0, y0, target.width, y1 - y0);
-    target.scissorTest = y0 > 0 || y1 < target.height;
+    this.drawRegion(target, 0, y0, target.width, y1 - y0);
+    return true;
+  }
+
+  /**
+   * Draws the material of the last beginStep() into `target`, scissored to width × height from
+   * (x, y), through the target's viewport. The caller writes the uniforms first.
+   * @param {THREE.WebGLRenderTarget} target
+   * @param {number} x
+   * @param {number} y
+   * @param {number} width
+   * @param {number} height
+   */
+  drawRegion(target, x, y, width, height) {
+    target.scissor.set(x, y, width, height);
+    target.scissorTest = x > 0 || y > 0 || width < target.width || height < target.height;
     this.three.setRenderTarget(target);
     this.samplers.bind();
     try {
@@ -298,7 +321,6 @@ export class ShaderRenderer {
       this.samplers.unbind(); // a sampler left on a unit would override every texture drawn there later
       this.three.setRenderTarget(null);
     }
-    return true;
   }
 
   /** Draws the whole frame at once, each pass in one draw (the benchmark's way). */

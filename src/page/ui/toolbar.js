@@ -24,6 +24,10 @@ const ICONS = {
     '<g fill="none" stroke="currentColor" stroke-width="1.5"><path d="M1.75 4.5h3l1.3-2h3.9l1.3 2h3v9H1.75z"/><circle cx="8" cy="8.8" r="2.6"/></g>',
   fullscreen: '<g fill="none" stroke="currentColor" stroke-width="1.6"><path d="M2 6V2h4M10 2h4v4M14 10v4h-4M6 14H2v-4"/></g>',
   link: '<g fill="none" stroke="currentColor" stroke-width="1.6" stroke-linecap="round"><path d="M6.3 9.7l3.4-3.4M7.2 4.6l1.1-1.1a2.7 2.7 0 0 1 3.8 3.8L11 8.4M8.8 11.4l-1.1 1.1a2.7 2.7 0 0 1-3.8-3.8L5 7.6"/></g>',
+  inspect:
+    '<g fill="none" stroke="currentColor" stroke-width="1.6"><circle cx="6.5" cy="6.5" r="4.5"/><path d="M10 10l4.5 4.5M6.5 4.5v4M4.5 6.5h4"/></g>',
+  compare:
+    '<g stroke="currentColor" stroke-width="1.5"><path fill="none" d="M2 13.5h12M2 13.5V2.5"/><path d="M4 11l2.5-4 2.5 2 4-6" fill="none"/></g>',
 };
 
 function icon(name) {
@@ -36,7 +40,7 @@ export class Toolbar {
   /**
    * @param {HTMLElement} root the (empty) toolbar element
    * @param {object} actions callbacks: togglePlay, restart, resetView, setTime(s), setSpeed(s), toggleEditor,
-   *   copyForShadertoy, download, exportJson, screenshot, toggleFullscreen, copyLink
+   *   copyForShadertoy, download, exportJson, screenshot, toggleFullscreen, copyLink, toggleInspect, compare
    * @param {() => import('./frame-readout.js').Activity} activity what the page is doing, for the readout
    */
   constructor(root, actions, activity) {
@@ -119,13 +123,24 @@ export class Toolbar {
       return b;
     };
 
-    this.fullscreenButton = button(
+    /** A button that stays pressed while what it turns on is on. */
+    const toggle = (label, title, glyph, action) => {
+      const b = button(label, title, glyph, action);
+      b.setAttribute('aria-pressed', 'false');
+      return b;
+    };
+    this.fullscreenButton = toggle(
       'Fullscreen',
       'The canvas alone, on the whole screen (F; Esc leaves)',
       'fullscreen',
       actions.toggleFullscreen,
     );
-    this.fullscreenButton.setAttribute('aria-pressed', 'false');
+    this.inspectButton = toggle(
+      'Inspect',
+      'Inspect a pixel: click one on the canvas to pin it and read its colour in float, its buffers and, for the raytracer, its ray path (I; Esc unpins)',
+      'inspect',
+      actions.toggleInspect,
+    );
 
     root.append(
       element('div', { class: 'group' }, this.playButton, restart, resetView, this.timeSlider, this.timeText, this.speedSelect),
@@ -149,6 +164,13 @@ export class Toolbar {
           actions.exportJson,
         ),
         button('Screenshot', 'Saves the current frame as a PNG (size: Controls → View)', 'camera', actions.screenshot),
+        this.inspectButton,
+        button(
+          'Compare with float64',
+          'The frame against the float64 reference with the same rays (the built-in raytracer): an error heat map, its RMSE, maximum and pixels over 2/255',
+          'compare',
+          actions.compare,
+        ),
         this.fullscreenButton,
         button(
           'Copy link',
@@ -187,6 +209,11 @@ export class Toolbar {
   /** @param {boolean} on whether the page is fullscreen */
   setFullscreen(on) {
     this.fullscreenButton.setAttribute('aria-pressed', String(on));
+  }
+
+  /** @param {boolean} on whether Inspect is on */
+  setInspecting(on) {
+    this.inspectButton.setAttribute('aria-pressed', String(on));
   }
 
   setEditorOpen(open) {

@@ -15,6 +15,7 @@ import { droppedKind } from '../io/shader-loader.js';
 import { shareLink } from '../io/share-link.js';
 import { serializeProject, shaderNotes } from '../io/project-files.js';
 import { openShader } from '../io/open-shader.js';
+import { installInspection } from '../inspect/inspection.js';
 
 /** @typedef {import('../app/app.js').RaytracerApp} RaytracerApp */
 /** @typedef {import('./frame-readout.js').Activity} Activity */
@@ -38,9 +39,10 @@ function activity(app) {
 
 /**
  * @param {RaytracerApp} app
+ * @param {{builtinSource: string}} page the built-in raytracer's text (the float64 reference is its twin)
  * @returns the page's widgets and actions, for the automation hook and the tests
  */
-export function installUi(app) {
+export function installUi(app, { builtinSource }) {
   const stage = /** @type {HTMLElement} */ (document.getElementById('stage'));
   const statusLine = /** @type {HTMLElement} */ (document.getElementById('toast'));
   /** @type {ReturnType<typeof setTimeout> | undefined} */
@@ -62,7 +64,14 @@ export function installUi(app) {
     toggleEditor: () => editor.toggle(),
     screenshotSize: (width, height) => panel.screenshotSize(width, height),
   });
-  const toolbar = new Toolbar(/** @type {HTMLElement} */ (document.getElementById('toolbar')), actions, () => activity(app));
+  const canvas = /** @type {HTMLCanvasElement} */ (document.getElementById('view'));
+  const inspection = installInspection(app, { stage, canvas, toast, builtinSource });
+  const toolbar = new Toolbar(
+    /** @type {HTMLElement} */ (document.getElementById('toolbar')),
+    { ...actions, toggleInspect: () => inspection.toggle(), compare: () => inspection.compare() },
+    () => activity(app),
+  );
+  inspection.inspector.on('mode', () => toolbar.setInspecting(inspection.inspector.active));
   const recording = installRecordDialog(app, toolbar.root, toast);
   const panel = new Panel({
     onConverge: (on) =>
@@ -184,7 +193,12 @@ export function installUi(app) {
 
   // ---- keys ----------------------------------------------------------------------------------
 
-  installShortcuts({ Space: () => app.togglePlay(), KeyR: () => app.restart(), KeyF: () => actions.toggleFullscreen() });
+  installShortcuts({
+    Space: () => app.togglePlay(),
+    KeyR: () => app.restart(),
+    KeyF: () => actions.toggleFullscreen(),
+    KeyI: () => inspection.toggle(),
+  });
   // a key redraws only a shader that reads the keyboard (any other has nothing new to show)
   watchKeyboard(app.keyboard, () => app.readsKeyboard && app.frames.request());
   document.addEventListener('fullscreenchange', () => toolbar.setFullscreen(document.fullscreenElement !== null));
@@ -233,5 +247,5 @@ export function installUi(app) {
 
   /** The link that reproduces this view (share-link.js). */
   const shareUrl = async () => (await shareLink(app)).url;
-  return { toast, toolbar, panel, editor, kept, actions, shareUrl, recording, open };
+  return { toast, toolbar, panel, editor, kept, actions, shareUrl, recording, open, inspection };
 }

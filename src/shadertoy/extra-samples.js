@@ -1,10 +1,25 @@
-// Reading the shader's "Extra samples" debug view (VIEW in shaders/raytrace.glsl): the pixels that took extra samples are a pure colour that names the
-// test that marked them (EDGE_COLOURS), every other pixel is grey. Used by the benchmark (what
-// fraction took them, and by which test) and by the same-ray reference (which pixels to sample
-// as the shader did).
+// Reading the raytracer's "Extra samples" debug view (VIEW in shaders/raytrace.glsl): the pixels
+// that took extra samples are a pure colour that names the test that marked them (EDGE_COLOURS),
+// every other pixel is grey. Shared by the benchmark (what fraction took them, and by which
+// test), the same-ray float64 reference (which pixels to sample as the shader did) and the page's
+// inspector and comparison (which draw the view with the path probe's compile).
 
 /** The shader's debug view of the pixels that took extra samples (VIEW = "Extra samples"; views.test.js checks the number). */
 export const EXTRA_SAMPLES_VIEW = Object.freeze({ VIEW: 5 });
+
+/** The label of that choice in the VIEW control's list. */
+const EXTRA_SAMPLES_LABEL = 'Extra samples';
+
+/**
+ * The control values that draw a shader's "Extra samples" view, found by the choice's label in
+ * its VIEW control (any shader that offers it), or null when the shader has no such view.
+ * @param {Array<{name: string, options?: Array<{label: string, value: number}>}>} controls parseControls's
+ * @returns {{VIEW: number} | null}
+ */
+export function extraSamplesValues(controls) {
+  const option = controls.find((c) => c.name === 'VIEW')?.options?.find((o) => o.label === EXTRA_SAMPLES_LABEL);
+  return option ? { VIEW: option.value } : null;
+}
 
 /** The debug view's colours, by the test that marked the pixel (the shader's mainImage). */
 export const EDGE_COLOURS = Object.freeze({

@@ -1,0 +1,84 @@
+// The pixel inspector and the comparison with float64, put on the page: their state (the
+// inspector, the comparison, the path probe they share, the float64 reference's workers), their
+// widgets (the readout, the magnifier, the heat map), and what the canvas, the keys and the
+// toolbar do for them. In Inspect mode a click on the canvas pins a pixel instead of moving
+// iMouse (the stage hears it first); Esc unpins; I (the toolbar's binding) turns Inspect on and off.
+
+import { Inspector } from './inspector.js';
+import { Comparison } from './compare.js';
+import { ProbeProgram } from './probe-program.js';
+import { ReferenceCancelled, ReferenceClient } from './reference-client.js';
+import { InspectorPanel } from './inspector-panel.js';
+import { CompareView } from './compare-view.js';
+import { Loupe, pixelAt } from './loupe.js';
+import { isTyping } from '../ui/keys.js';
+import './inspect.css';
+
+/** @typedef {import('../app/app.js').RaytracerApp} RaytracerApp */
+
+/**
+ * @param {RaytracerApp} app
+ * @param {{stage: HTMLElement, canvas: HTMLCanvasElement, toast: (text: string) => void, builtinSource: string}} page
+ */
+export function installInspection(app, { stage, canvas, toast, builtinSource }) {
+  const program = new ProbeProgram(app);
+  const reference = new ReferenceClient();
+  const inspector = new Inspector(app, program, reference);
+  const comparison = new Comparison(app, program, reference, builtinSource);
+  const loupe = new Loupe(stage, canvas);
+
+  /** Runs the comparison; what stops it is said on the page (a cancel is not). */
+  const compare = () =>
+    comparison.run().catch((error) => {
+      if (error instanceof ReferenceCancelled) return null;
+      console.warn(`Compare with float64: ${error.message}`);
+      toast(error.message.split('\n')[0]);
+      return null;
+    });
+  /** @param {boolean} [on] */
+  const toggle = (on = !inspector.active) => inspector.setActive(on);
+  /** Pins a pixel (y from the bottom), turning Inspect on. @param {number} x @param {number} y */
+  const pin = (x, y) => {
+    inspector.setActive(true);
+    inspector.pin(x, y);
+  };
+
+  new InspectorPanel(stage, inspector, { compare });
+  const compareView = new CompareView(stage, canvas, comparison, { pin, compare });
+
+  // In Inspect mode the canvas's clicks pin pixels: the stage hears them first (capture), and
+  // iMouse (app/shadertoy-inputs.js, on the canvas) never does.
+  stage.addEventListener(
+    'pointerdown',
+    (event) => {
+      if (!inspector.active || event.target !== canvas || event.button !== 0) return;
+      event.stopPropagation();
+      event.preventDefault();
+      const at = pixelAt(canvas, event.clientX, event.clientY);
+      if (at) inspector.pin(at.x, at.y);
+    },
+    { capture: true },
+  );
+  stage.addEventListener('pointermove', (event) => {
+    const over = [canvas, compareView.map].find((target) => target === event.target);
+    loupe.follow(inspector.active && over ? event : null, over);
+  });
+  stage.addEventListener('pointerleave', () => loupe.follow(null));
+  const mark = () => loupe.mark(inspector.active ? (inspector.pinned ?? null) : null);
+  inspector.on('mode', () => {
+    stage.classList.toggle('inspecting', inspector.active);
+    if (!inspector.active) loupe.follow(null);
+    mark();
+  });
+  app.on('drawn', () => {
+    mark();
+    compareView.place();
+  });
+  window.addEventListener('resize', mark);
+  window.addEventListener('keydown', (event) => {
+    if (event.key !== 'Escape' || !inspector.active || !inspector.pinned || isTyping(event)) return;
+    inspector.unpin();
+  });
+
+  return { inspector, comparison, program, compare, toggle, pin };
+}

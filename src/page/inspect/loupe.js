@@ -1,0 +1,104 @@
+// Where the inspector points on the canvas: in Inspect mode a magnifier follows the cursor (the
+// pixels around it, enlarged, of the canvas or of the comparison's heat map over it, the one
+// under the cursor framed, its coordinates below),
+// and the pinned pixel is framed on the canvas itself. Pixels are the frame's (device pixels,
+// y from the bottom, as fragCoord counts them), mapped through the canvas's box.
+
+import { element } from '../ui/dom.js';
+
+/** Pixels a side the magnifier shows (odd: the one under the cursor in the middle). */
+const SPAN = 11;
+/** Screen pixels a magnified pixel takes. */
+const ZOOM = 11;
+
+/**
+ * The frame pixel under a point of the page, or null outside the canvas.
+ * @param {HTMLCanvasElement} canvas
+ * @param {number} clientX
+ * @param {number} clientY
+ * @returns {{x: number, y: number} | null}
+ */
+export function pixelAt(canvas, clientX, clientY) {
+  const box = canvas.getBoundingClientRect();
+  const u = (clientX - box.left) / box.width;
+  const v = (clientY - box.top) / box.height;
+  if (!(u >= 0 && u < 1 && v >= 0 && v < 1)) return null;
+  return { x: Math.floor(u * canvas.width), y: canvas.height - 1 - Math.floor(v * canvas.height) };
+}
+
+export class Loupe {
+  /**
+   * @param {HTMLElement} stage
+   * @param {HTMLCanvasElement} canvas the page's canvas
+   */
+  constructor(stage, canvas) {
+    this.stage = stage;
+    this.canvas = canvas;
+    this.lens = element('canvas', { class: 'loupe', width: SPAN * ZOOM, height: SPAN * ZOOM, 'aria-hidden': 'true' });
+    this.label = element('span', { class: 'loupe-label' });
+    this.root = element('div', { class: 'loupe-box', hidden: true }, this.lens, this.label);
+    this.marker = element('div', { class: 'pinned-marker', hidden: true, 'aria-hidden': 'true' });
+    stage.append(this.marker, this.root);
+    this._context = /** @type {CanvasRenderingContext2D} */ (this.lens.getContext('2d'));
+  }
+
+  /**
+   * Shows the magnifier at a pointer position (null hides it), enlarging `source` (the canvas, or
+   * the heat map over it: a canvas of the frame's size).
+   * @param {{clientX: number, clientY: number} | null} pointer
+   * @param {HTMLCanvasElement} [source]
+   */
+  follow(pointer, source = this.canvas) {
+    const at = pointer && pixelAt(source, pointer.clientX, pointer.clientY);
+    if (!at) {
+      this.root.hidden = true;
+      return;
+    }
+    const { height } = source;
+    const context = this._context;
+    context.imageSmoothingEnabled = false;
+    context.fillStyle = '#000';
+    context.fillRect(0, 0, SPAN * ZOOM, SPAN * ZOOM);
+    const half = (SPAN - 1) / 2;
+    const top = height - 1 - at.y;
+    context.drawImage(source, at.x - half, top - half, SPAN, SPAN, 0, 0, SPAN * ZOOM, SPAN * ZOOM);
+    context.strokeStyle = '#fff';
+    context.lineWidth = 2;
+    context.strokeRect(half * ZOOM, half * ZOOM, ZOOM, ZOOM);
+    context.strokeStyle = '#000';
+    context.lineWidth = 1;
+    context.strokeRect(half * ZOOM - 1.5, half * ZOOM - 1.5, ZOOM + 3, ZOOM + 3);
+    this.label.textContent = `fragCoord ${at.x + 0.5}, ${at.y + 0.5} · click to pin`;
+    const stageBox = this.stage.getBoundingClientRect();
+    const size = SPAN * ZOOM;
+    // beside the cursor, on the side with room
+    let left = pointer.clientX - stageBox.left + 24;
+    let top2 = pointer.clientY - stageBox.top + 24;
+    if (left + size > stageBox.width) left -= size + 48;
+    if (top2 + size + 24 > stageBox.height) top2 -= size + 72;
+    this.root.style.left = `${Math.max(0, left)}px`;
+    this.root.style.top = `${Math.max(0, top2)}px`;
+    this.root.hidden = false;
+  }
+
+  /**
+   * Frames the pinned pixel on the canvas (null: none).
+   * @param {{x: number, y: number} | null} pixel
+   */
+  mark(pixel) {
+    const { width, height } = this.canvas;
+    if (!pixel || !width || !height) {
+      this.marker.hidden = true;
+      return;
+    }
+    const box = this.canvas.getBoundingClientRect();
+    const stageBox = this.stage.getBoundingClientRect();
+    const cellW = box.width / width;
+    const cellH = box.height / height;
+    const size = Math.max(9, cellW, cellH);
+    const cx = box.left - stageBox.left + (pixel.x + 0.5) * cellW;
+    const cy = box.top - stageBox.top + (height - 1 - pixel.y + 0.5) * cellH;
+    Object.assign(this.marker.style, { left: `${cx - size / 2}px`, top: `${cy - size / 2}px`, width: `${size}px`, height: `${size}px` });
+    this.marker.hidden = false;
+  }
+}

@@ -1,0 +1,148 @@
+// "Compare with float64" (src/page/inspect/compare.js), in the real page: its figures for a view
+// are the ones `npm run accuracy` computes for it (tests/scripts/accuracy-report.js: the page's
+// 8-bit frame against renderReference with the same rays, the extra samples where the shader's
+// "Extra samples" view puts them), computed here in Node; the page answers while the reference
+// renders and says how far it has got; Cancel stops it; a click on the heat map pins that pixel in
+// the inspector; and a shader that is not the raytracer is told so.
+
+import fs from 'node:fs';
+import { afterAll, describe, expect, test } from 'vitest';
+import { renderReference } from '../src/reference/render.js';
+import { imageError, formatImageError } from '../src/reference/error.js';
+import { SHADER_FILE } from './harness/config.js';
+import { disconnect, renderView } from './harness/page.js';
+import { EXTRA_SAMPLES_VIEW, extraSampleMask } from '../src/shadertoy/extra-samples.js';
+import { referenceView } from './hard-views.js';
+import { viewQuery } from './views.js';
+import { button, canvasBox, withPage } from './page-helpers.js';
+
+afterAll(disconnect);
+
+const source = fs.readFileSync(SHADER_FILE, 'utf8');
+const VIEWPORT = { width: 1280, height: 800, deviceScaleFactor: 1 };
+
+/** What the accuracy report measures for a view: its same-ray error, and the share of pixels with extra samples. */
+async function accuracyReportFigures(view) {
+  const adaptive = view.params.ADAPTIVE_AA !== 0 && view.params.SAMPLES !== 1;
+  const mask = adaptive ? extraSampleMask(await renderView({ ...view, params: { ...view.params, ...EXTRA_SAMPLES_VIEW } })) : undefined;
+  const image = await renderView(view);
+  const error = imageError(image, renderReference(source, referenceView(view), { extraSamples: mask }));
+  return { error, share: mask ? mask.reduce((n, v) => n + v, 0) / mask.length : null };
+}
+
+// The accuracy report's views (its size, 320x180; 1 sample per pixel and adaptive anti-aliasing,
+// 16 samples at edges, the defaults), each scene's.
+const VIEWS = [
+  ['the default view, 1 sample per pixel', { time: 0, SAMPLES: 1 }],
+  ['the default view, adaptive anti-aliasing', { time: 0 }],
+  ['the cylinder scene, adaptive anti-aliasing', { time: 0, SCENE: 1 }],
+  ['the torus scene, 1 sample per pixel', { time: 0, SCENE: 2, SAMPLES: 1 }],
+];
+
+describe('compare with float64', () => {
+  test.each(VIEWS)("%s: the page's figures are npm run accuracy's same-ray figures", async (name, params) => {
+    const view = { name, params };
+    const { error: expected, share } = await accuracyReportFigures(view);
+    await withPage(
+      async ({ page, goto }) => {
+        await goto(viewQuery(view).slice(1)); // without its leading slash: goto adds one
+        const got = await page.evaluate(() => window.raytracer.compareWithFloat64());
+        const canvas = got.figures.canvas;
+        console.log(
+          `${name}: page ${formatImageError(canvas)}; accuracy report ${formatImageError(expected)}; float32 ${formatImageError(got.figures.float)}`,
+        );
+        // The same module computes both from the same 8-bit pixels and the same float64 rays, so
+        // they agree to the last bits (1e-9 of the RMSE leaves room for nothing else)
+        expect(Math.abs(canvas.rmse - expected.rmse), `RMSE ${canvas.rmse} against ${expected.rmse}`).toBeLessThanOrEqual(
+          1e-9 * expected.rmse,
+        );
+        expect(canvas.maxAbs).toBeCloseTo(expected.maxAbs, 12);
+        expect(canvas.over2).toBe(expected.over2);
+        expect(canvas.nonFinite).toBe(0);
+        expect(got.extraSampleShare, 'the extra samples where the shader took them').toBe(share);
+        // before the 8-bit rounding the error is smaller still
+        expect(got.figures.float.rmse).toBeLessThan(canvas.rmse);
+        expect(got.caveat).toBe(null);
+        // on the page: the heat map over the canvas, the figures beside it
+        const map = await page.$eval('.heat-map', (c) => {
+          const canvas = /** @type {HTMLCanvasElement} */ (c);
+          return { shown: !canvas.hidden, size: [canvas.width, canvas.height] };
+        });
+        expect(map).toEqual({ shown: true, size: [320, 180] });
+        expect(await page.$eval('.compare table.figures', (t) => t.textContent)).toContain(canvas.rmse.toExponential(2));
+      },
+      { viewport: VIEWPORT },
+    );
+  });
+
+  test('the page answers while the reference renders, says how far it has got, and Cancel stops it', async () => {
+    await withPage(
+      async ({ page, goto }) => {
+        await goto('?size=960x540&time=0&SAMPLES=1');
+        await page.evaluate(() => {
+          // the longest gap between 10 ms ticks of the page's own thread
+          window.__longestGap = 0;
+          let last = performance.now();
+          setInterval(() => {
+            const now = performance.now();
+            window.__longestGap = Math.max(window.__longestGap, now - last);
+            last = now;
+          }, 10);
+        });
+        await (await button(page, 'Compare with float64')).click();
+        await page.waitForFunction(() => window.raytracer.comparison().running?.rows > 0, { polling: 50 });
+        const first = (await page.evaluate(() => window.raytracer.comparison())).running;
+        await page.waitForFunction((rows) => window.raytracer.comparison().running?.rows > rows, { polling: 50 }, first.rows);
+        expect(first.of).toBe(540);
+        expect(await page.$eval('.compare-progress', (p) => p.textContent)).toMatch(/float64 reference: \d+ of 540 rows/);
+        expect(await page.$eval('.compare-progress progress', (p) => /** @type {HTMLProgressElement} */ (p).value)).toBeGreaterThan(0);
+        // 2 cores, shared: the reference's worker has one. The page's thread does none of its work.
+        expect(await page.evaluate(() => window.__longestGap), 'the longest the page went without running a 10 ms timer (ms)').toBeLessThan(
+          500,
+        );
+        await (await page.$('.compare-progress button')).click(); // Cancel
+        const after = await page.evaluate(() => window.raytracer.comparison());
+        expect(after.running).toBe(null);
+        expect(after.error).toBe(null);
+        expect(after.shown).toBe(null);
+      },
+      { viewport: VIEWPORT, deterministic: false },
+    );
+  });
+
+  test('a click on the heat map pins that pixel in the inspector', async () => {
+    await withPage(
+      async ({ page, goto }) => {
+        await goto('?size=320x180&time=0&SAMPLES=1');
+        await page.evaluate(() => window.raytracer.compareWithFloat64());
+        const box = await canvasBox(page);
+        // pixel (250, 179 - 130): clear of the comparison's box (upper left) and of the inspector (lower left)
+        await page.mouse.click(box.left + (250.5 / 320) * box.width, box.top + (130.5 / 180) * box.height);
+        await page.waitForFunction(() => window.raytracer.inspection().readout?.complete, { polling: 50 });
+        const state = await page.evaluate(() => window.raytracer.inspection());
+        expect(state.active).toBe(true);
+        expect(state.pinned).toMatchObject({ x: 250, y: 49 });
+        expect(state.readout.reference, 'the pinned pixel has its float64 colour').not.toBe(null);
+      },
+      { viewport: VIEWPORT },
+    );
+  });
+
+  test('a shader that is not the raytracer: "Compare with float64 is for the built-in raytracer"', async () => {
+    await withPage(
+      async ({ page, goto, warnings }) => {
+        await goto('?shader=examples/pattern.glsl&size=160x90&time=0');
+        await (await button(page, 'Compare with float64')).click();
+        await page.waitForFunction(() => window.raytracer.comparison().error, { polling: 50 });
+        const said = await page.$eval('.compare', (box) => box.textContent);
+        expect(said).toMatch(
+          /Compare with float64 is for the built-in raytracer: this shader has no orbitCamera, sceneRelativeTo, eyeRay, radiance/,
+        );
+        expect(await page.$eval('#toast', (t) => t.textContent)).toMatch(/Compare with float64 is for the built-in raytracer/);
+        expect(warnings.some((w) => /Compare with float64 is for the built-in raytracer/.test(w))).toBe(true);
+        expect((await page.evaluate(() => window.raytracer.comparison())).shown).toBe(null);
+      },
+      { viewport: VIEWPORT },
+    );
+  });
+});
