@@ -127,7 +127,9 @@ export class Comparison extends Emitter {
       const adaptive = values.SAMPLES > 1 && Boolean(values.ADAPTIVE_AA);
       if (adaptive) {
         if (!this.program.showsAaPixels)
-          throw new Error('with adaptive anti-aliasing the reference needs the shader\'s "Extra samples" view (its VIEW control), which this shader lacks');
+          throw new Error(
+            'with adaptive anti-aliasing the reference needs the shader\'s "Extra samples" view (its VIEW control), which this shader lacks',
+          );
         t = performance.now();
         this._phase(
           serial,
