@@ -629,7 +629,14 @@ const float GROUND_BAND_ULPS = 64.0;
 // ground's (the float64 reference decides it the same way).
 Hit traceScene(Scene s, vec3 ro, vec3 rd, int skipId, float tMax) {
     vec4 ground = intersectPlane(ro, rd, s.ground, skipId == ID_GROUND ? 0.0 : tMax);
-    Hit hit = nearer(Hit(tMax, vec3(0.0), ID_NONE), ground, ID_GROUND);
+    // The objects are asked only for hits nearer than the ground's by more than the band: along
+    // the ray a point's height above the plane is |n.rd| (tGround - t), so "within the band of
+    // the plane" is "within band / |n.rd| of the ground's t". Same test as checking the height
+    // of the nearest object's point afterwards, and no more than a float kept across the walk
+    // (checking afterwards kept the ground's whole hit across it: 46.8 ms against 42.6 at 640x360).
+    float band = GROUND_BAND_ULPS * EPS32 * (ground.x + maxAbs(ro) + abs(s.ground.w));
+    float tGround = ground.x;
+    Hit hit = Hit(tGround > 0.0 ? tGround - band / abs(dot(s.ground.xyz, rd)) : tMax, vec3(0.0), ID_NONE);
     hit = nearer(hit, intersectSphere(ro, rd, s.sphereCenter, s.sphereRadius, skipId == ID_SPHERE ? 0.0 : hit.t), ID_SPHERE);
     hit = nearer(hit, intersectBox(ro, rd, s.cubeCenter, s.cubeHalfSize, skipId == ID_CUBE ? 0.0 : hit.t), ID_CUBE);
     // Only the scene's own new object is traced (SCENE is fixed at compile time).
@@ -641,10 +648,8 @@ Hit traceScene(Scene s, vec3 ro, vec3 rd, int skipId, float tMax) {
 #else
     hit = nearer(hit, intersectTorus(ro, rd, s.torus, tObject), ID_OBJECT);
 #endif
-    float height = dot(s.ground.xyz, ro + hit.t * rd) + s.ground.w;
-    float band = GROUND_BAND_ULPS * EPS32 * (hit.t + maxAbs(ro) + abs(s.ground.w));
-    bool inGroundPlane = all(bvec3(ground.x > 0.0, hit.id != ID_GROUND, abs(height) <= band));
-    return nearer(hit, mix(MISS, ground, bvec4(inGroundPlane)), ID_GROUND);
+    bool groundNearest = all(bvec2(hit.id == ID_NONE, tGround > 0.0));
+    return Hit(groundNearest ? tGround : hit.t, mix(hit.n, s.ground.xyz, bvec3(groundNearest)), groundNearest ? ID_GROUND : hit.id);
 }
 
 // ---- materials and texture -------------------------------------------------------------------

@@ -126,7 +126,7 @@ function makeScene(s) {
     if (!ground || best.id === ID_GROUND) return best;
     const fromEye = sub(ro, eye);
     const height = ro[1] + best.t * rd[1];
-    const band = s.GROUND_BAND_ULPS * s.EPS32 * (best.t + Math.max(...fromEye.map(Math.abs)) + Math.abs(eye[1]));
+    const band = s.GROUND_BAND_ULPS * s.EPS32 * (ground.t + Math.max(...fromEye.map(Math.abs)) + Math.abs(eye[1]));
     return Math.abs(height) <= band ? ground : best;
   }
 
