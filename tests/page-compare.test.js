@@ -3,7 +3,7 @@
 // 8-bit frame against renderReference with the same rays, the extra samples where the shader's
 // "Extra samples" view puts them), computed here in Node; the page answers while the reference
 // renders and says how far it has got; Cancel stops it; a click on the heat map pins that pixel in
-// the inspector; and a shader that is not the raytracer is told so.
+// the inspector; a shader that is not the raytracer, and a debug view, are told so.
 
 import fs from 'node:fs';
 import { afterAll, describe, expect, test } from 'vitest';
@@ -141,6 +141,25 @@ describe('compare with float64', () => {
         expect(await page.$eval('#toast', (t) => t.textContent)).toMatch(/Compare with float64 is for the built-in raytracer/);
         expect(warnings.some((w) => /Compare with float64 is for the built-in raytracer/.test(w))).toBe(true);
         expect((await page.evaluate(() => window.raytracer.comparison())).shown).toBe(null);
+      },
+      { viewport: VIEWPORT },
+    );
+  });
+
+  // The reference draws the picture only: a debug view compared with it would be all error.
+  test("a debug view: the comparison and the inspector's float64 colour say the reference draws the picture", async () => {
+    await withPage(
+      async ({ page, goto }) => {
+        await goto('?size=160x90&time=0&VIEW=1');
+        await (await button(page, 'Compare with float64')).click();
+        await page.waitForFunction(() => window.raytracer.comparison().error, { polling: 50 });
+        expect(await page.$eval('.compare', (box) => box.textContent)).toMatch(
+          /The float64 reference draws the picture, not the "Normals" view: set View to Picture to compare/,
+        );
+        expect((await page.evaluate(() => window.raytracer.comparison())).shown).toBe(null);
+        const readout = await page.evaluate(() => window.raytracer.inspect(80, 45));
+        expect(readout.reference).toBe(null);
+        expect(readout.referenceNote).toMatch(/draws the picture, not the "Normals" view/);
       },
       { viewport: VIEWPORT },
     );

@@ -67,7 +67,7 @@ export class CompareView {
       element(
         'header',
         {},
-        element('strong', {}, 'Compared with float64'),
+        (this.title = element('strong', {}, 'Compared with float64')),
         element('span', { class: 'spacer' }),
         this.toggle,
         this.hideMap,
@@ -105,6 +105,7 @@ export class CompareView {
     this.root.hidden = !running && !result && !error;
     if (!this.root.hidden && !this.root.isConnected) this.stage.append(this.map, this.root);
     this.progress.hidden = !running;
+    this.title.textContent = running ? 'Comparing with float64…' : 'Compared with float64';
     if (running) {
       this.phase.textContent = running.of ? `${running.phase}: ${running.rows} of ${running.of} rows` : `${running.phase}…`;
       if (running.of) this.bar.value = running.rows / running.of;

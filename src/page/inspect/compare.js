@@ -99,6 +99,12 @@ export class Comparison extends Emitter {
     this.error = null;
     const unavailable = this.unavailable;
     if (unavailable) return this._fail(serial, new Error(unavailable));
+    const debugView = this.program.debugView;
+    if (debugView)
+      return this._fail(
+        serial,
+        new Error(`The float64 reference draws the picture, not the "${debugView}" view: set View to Picture to compare.`),
+      );
     const started = performance.now();
     /** @type {Record<string, number>} */
     const ms = {};

@@ -220,6 +220,13 @@ export class Inspector extends Emitter {
     this.emit('readout');
     if (!pathOk) return;
 
+    const debugView = program.debugView;
+    if (debugView) {
+      readout.referenceNote = `The float64 reference draws the picture, not the "${debugView}" view on the canvas: set View to Picture to see its colour.`;
+      readout.complete = true;
+      this.emit('readout');
+      return;
+    }
     const extraSamples = this._extraSamples(probed.extraSamples);
     if (extraSamples === null) {
       readout.referenceNote =

@@ -103,6 +103,19 @@ export class ProbeProgram {
     return hostControlBlock(app.controls, { ...app.values, ...extraSamplesValues(app.controls) });
   }
 
+  /**
+   * The label of the debug view the shader draws instead of the picture (its VIEW control set to
+   * anything but its first choice, the picture), or null. The float64 reference draws the
+   * picture only, so neither the comparison nor the inspector's float64 colour applies then.
+   */
+  get debugView() {
+    const app = this.app;
+    const control = app.controls.find((c) => c.name === 'VIEW');
+    const value = app.values.VIEW;
+    if (!control?.options || value === undefined || value === control.options[0].value) return null;
+    return control.options.find((o) => o.value === value)?.label ?? String(value);
+  }
+
   /** Whether the probe's mainImage shows which pixels took extra samples (the shader's VIEW control offers that view). */
   get showsAaPixels() {
     return extraSamplesValues(this.app.controls) !== null;
