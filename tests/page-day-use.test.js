@@ -25,6 +25,18 @@ const box = (page, selector) =>
   });
 const PANEL = '.lil-gui.lil-root';
 
+/** The canvas's and the panel's boxes once two reads 150 ms apart agree (at most 6 s of waiting). */
+async function settledBoxes(page) {
+  let last = null;
+  for (let i = 0; i < 40; i++) {
+    await new Promise((r) => setTimeout(r, 150));
+    const now = { canvas: await box(page, '#view'), panel: await box(page, PANEL) };
+    if (last && JSON.stringify(now) === JSON.stringify(last)) return now;
+    last = now;
+  }
+  return last;
+}
+
 describe('shortcuts', () => {
   test('Space plays and pauses whatever toolbar button has focus, and never while typing in a field', async () => {
     await withPage(async ({ page, goto }) => {
@@ -126,10 +138,11 @@ describe('layout', () => {
         await page.evaluate((s) => {
           for (const t of document.querySelectorAll(`${s} .lil-gui.lil-closed > .lil-title`)) /** @type {HTMLElement} */ (t).click();
         }, PANEL);
-        await new Promise((r) => setTimeout(r, 400)); // lil-gui's open transition
-        const canvas = await box(page, '#view');
+        // lil-gui's open transition, then the stage's new layout and the canvas's resize: under
+        // load they take longer than a fixed wait, so measure once the boxes stop moving.
+        const { canvas, panel } = await settledBoxes(page);
         expect(canvas.height, 'the canvas keeps a useful size').toBeGreaterThan(200);
-        expect(overlap(canvas, await box(page, PANEL)), 'open panel over the canvas').toBe(0);
+        expect(overlap(canvas, panel), 'open panel over the canvas').toBe(0);
         const sliders = await page.$$eval(`${PANEL} .lil-slider`, (all) =>
           all.map((s) => {
             const r = s.getBoundingClientRect();
