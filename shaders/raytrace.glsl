@@ -36,22 +36,22 @@ const vec3  SPHERE_CENTER = vec3(-1.3, 0.8, 0.3);      // ui: Sphere centre | -4
 const float SPHERE_RADIUS = 0.8;                       // ui: Sphere radius | 0.05 .. 2
 const vec3  CUBE_CENTER = vec3(1.0, 0.5, -1.1);        // ui: Cube centre | -4 .. 4
 const vec3  CUBE_HALF_SIZE = vec3(0.5);                // ui: Cube half size | 0.05 .. 2
-const vec3  CONE_BASE = vec3(1.2, 0.0, 1.1);           // ui: Cone base centre | -4 .. 4
-const float CONE_RADIUS = 0.55;                        // ui: Cone base radius | 0.05 .. 2
-const float CONE_HEIGHT = 1.7;                         // ui: Cone height | 0.05 .. 4
-const vec3  CYLINDER_BASE = vec3(1.2, 0.0, 1.1);       // ui: Cylinder base centre | -4 .. 4
-const float CYLINDER_RADIUS = 0.45;                    // ui: Cylinder radius | 0.05 .. 2
-const float CYLINDER_HEIGHT = 1.3;                     // ui: Cylinder height | 0.05 .. 4
-const vec3  TORUS_CENTER = vec3(1.2, 0.545, 1.1);      // ui: Torus centre | -4 .. 4
-const vec3  TORUS_AXIS = vec3(0.9, 1.0, 0.2);          // ui: Torus axis (any length) | -1 .. 1
-const vec2  TORUS_RADII = vec2(0.55, 0.17);            // ui: Torus radii | major 0.05 .. 2, minor 0.005 .. 2
+const vec3  CONE_BASE = vec3(1.2, 0.0, 1.1);           // ui: Cone base centre | -4 .. 4 | when SCENE = Cone
+const float CONE_RADIUS = 0.55;                        // ui: Cone base radius | 0.05 .. 2 | when SCENE = Cone
+const float CONE_HEIGHT = 1.7;                         // ui: Cone height | 0.05 .. 4 | when SCENE = Cone
+const vec3  CYLINDER_BASE = vec3(1.2, 0.0, 1.1);       // ui: Cylinder base centre | -4 .. 4 | when SCENE = Cylinder
+const float CYLINDER_RADIUS = 0.45;                    // ui: Cylinder radius | 0.05 .. 2 | when SCENE = Cylinder
+const float CYLINDER_HEIGHT = 1.3;                     // ui: Cylinder height | 0.05 .. 4 | when SCENE = Cylinder
+const vec3  TORUS_CENTER = vec3(1.2, 0.545, 1.1);      // ui: Torus centre | -4 .. 4 | when SCENE = Torus
+const vec3  TORUS_AXIS = vec3(0.9, 1.0, 0.2);          // ui: Torus axis (any length) | -1 .. 1 | when SCENE = Torus
+const vec2  TORUS_RADII = vec2(0.55, 0.17);            // ui: Torus radii | major 0.05 .. 2, minor 0.005 .. 2 | when SCENE = Torus; minor <= major
 const vec3  LIGHT_POSITION = vec3(-2.5, 6.0, 4.5);     // ui: Light position | -10 .. 10
 const float GROUND_REFLECTIVITY = 0.15;                // ui: Ground reflectivity | 0 .. 1
 const float SPHERE_REFLECTIVITY = 0.35;                // ui: Sphere reflectivity | 0 .. 1
 const float CUBE_REFLECTIVITY = 0.25;                  // ui: Cube reflectivity | 0 .. 1
-const float CONE_REFLECTIVITY = 0.2;                   // ui: Cone reflectivity | 0 .. 1
-const float CYLINDER_REFLECTIVITY = 0.3;               // ui: Cylinder reflectivity | 0 .. 1
-const float TORUS_REFLECTIVITY = 0.3;                  // ui: Torus reflectivity | 0 .. 1
+const float CONE_REFLECTIVITY = 0.2;                   // ui: Cone reflectivity | 0 .. 1 | when SCENE = Cone
+const float CYLINDER_REFLECTIVITY = 0.3;               // ui: Cylinder reflectivity | 0 .. 1 | when SCENE = Cylinder
+const float TORUS_REFLECTIVITY = 0.3;                  // ui: Torus reflectivity | 0 .. 1 | when SCENE = Torus
 #endif
 
 // ---- constants -------------------------------------------------------------------------------

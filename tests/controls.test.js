@@ -1,7 +1,8 @@
 import { describe, expect, test } from 'vitest';
 import fs from 'node:fs';
 import { SHADER_FILE } from './harness/config.js';
-import { ControlBlockError, coerceControlValue, controlDefaults, parseControls } from '../src/shadertoy/controls.js';
+import { ControlBlockError, coerceControlValue, controlApplies, controlDefaults, parseControls } from '../src/shadertoy/controls.js';
+import { linkValues, readControlChanges } from '../src/page/app/control-values.js';
 
 const BLOCK = `// a shader
 #define HELPER 2
@@ -161,5 +162,86 @@ describe('a vector whose components have names and ranges of their own', () => {
       max: 1,
       step: 0.5,
     });
+  });
+});
+
+// Issue 24, items 8-10: a control that matters only in some scene, a component bounded by
+// another, and choices given by their names.
+describe('clauses: when a control matters, and one component at most another', () => {
+  const source = fs.readFileSync(SHADER_FILE, 'utf8');
+  const controls = parseControls(source);
+  const byName = Object.fromEntries(controls.map((c) => [c.name, c]));
+  const shown = (scene) => controls.filter((c) => controlApplies(c, { ...controlDefaults(controls), SCENE: scene })).map((c) => c.name);
+
+  test.each([
+    ['Cone', 0, /^CONE_/, /^(CYLINDER|TORUS)_/],
+    ['Cylinder', 1, /^CYLINDER_/, /^(CONE|TORUS)_/],
+    ['Torus', 2, /^TORUS_/, /^(CONE|CYLINDER)_/],
+  ])("the raytracer's %s scene shows its own object's controls and no other's", (_, scene, own, others) => {
+    const names = shown(scene);
+    expect(names.filter((n) => own.test(n)).length).toBeGreaterThanOrEqual(3);
+    expect(names.filter((n) => others.test(n))).toEqual([]);
+    expect(names, 'the rest stay').toContain('SPHERE_REFLECTIVITY');
+  });
+
+  test('the torus minor radius is kept at most the major one', () => {
+    expect(coerceControlValue(byName.TORUS_RADII, '0.05,2')).toEqual([0.05, 0.05]);
+    expect(coerceControlValue(byName.TORUS_RADII, [1, 0.2])).toEqual([1, 0.2]);
+  });
+
+  test.each([
+    ['SCENE', 'Torus', 2],
+    ['SCENE', 'torus', 2],
+    ['VIEW', 'NORMALS', 1],
+    ['VIEW', 'Extra samples', 5],
+    ['SCENE', '1', 1],
+    ['SCENE', 'Teapot', undefined],
+  ])('a choice by its name: %s ← %j is %j', (name, value, expected) => {
+    expect(coerceControlValue(byName[name], value)).toEqual(expected);
+  });
+
+  const block = (lines) => `#ifndef HOST_CONTROLS\n${lines}\n#endif\n`;
+  test.each([
+    ['a when naming no control above', '#define X 1 // ui: X | 0 .. 1 | when MODE = A', /no control MODE is declared above X/],
+    [
+      'a when naming no such choice',
+      '#define MODE 0 // ui: M | A, B\n#define X 1 // ui: X | 0 .. 1 | when MODE = C',
+      /MODE has no choice C/,
+    ],
+    ['a bound on an unnamed component', 'const vec2 V = vec2(1); // ui: V | a 0 .. 1, b 0 .. 1 | a <= c', /c is not a named component/],
+    ['an unreadable clause', '#define X 1 // ui: X | 0 .. 1 | sometimes', /cannot read "sometimes"/],
+    ['a fourth part', '#define X 1 // ui: X | 0 .. 1 | when X = 1 | more', /more than three/],
+  ])('%s is an error', (_, lines, message) => {
+    expect(() => parseControls(block(lines))).toThrow(message);
+  });
+});
+
+describe('what the page says of a value it did not use as written', () => {
+  const controls = parseControls(fs.readFileSync(SHADER_FILE, 'utf8'));
+  test.each([
+    ['BOUNCES', '2.5', /BOUNCES=2\.5 is not a whole number: using 3\./],
+    ['BOUNCES', '9', /BOUNCES=9 is out of range \(0 \.\. 4\): using 4\./],
+    ['SAMPLES', '5', /SAMPLES=5 is not one of 1, 4, 9, 16: using 4\./],
+    ['TORUS_RADII', '0.05,2', /TORUS_RADII=0\.05,2 has minor 2 above major 0\.05 \(minor <= major\): using 0\.05,0\.05\./],
+    ['CAMERA_ORBIT', '200,0', /CAMERA_ORBIT=200,0 is out of range \(azimuth -180 \.\. 180\): using 180,0\./],
+    ['SCENE', 'Teapot', /SCENE=Teapot ignored: not one of Cone, Cylinder, Torus; the shader's value 0 is used\./],
+    ['BOUNCES', 'two', /BOUNCES=two ignored: not a valid int; the shader's value 3 is used\./],
+  ])('%s=%s', (name, value, said) => {
+    const { warnings } = readControlChanges(controls, { [name]: value }, 'URL');
+    expect(warnings).toHaveLength(1);
+    expect(warnings[0]).toMatch(said);
+  });
+
+  test.each([
+    ['SCENE', 'Torus'],
+    ['VIEW', 'normals'],
+    ['BOUNCES', '2'],
+  ])('%s=%s is used as written, without a word', (name, value) => {
+    expect(readControlChanges(controls, { [name]: value }, 'URL').warnings).toEqual([]);
+  });
+
+  test('a link writes a choice by its name', () => {
+    const values = { ...controlDefaults(controls), SCENE: 2, VIEW: 1, SAMPLES: 4 };
+    expect(linkValues(controls, values)).toEqual({ SCENE: 'Torus', VIEW: 'Normals', SAMPLES: 4 });
   });
 });

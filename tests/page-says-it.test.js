@@ -36,7 +36,7 @@ describe('say it on the page', () => {
   test.each([
     ['size=0x0', `size=0x0&time=0`, /size=0x0 ignored.*the canvas follows the window/],
     ['time=abc', `size=64x36&time=abc`, /time=abc ignored.*the clock runs from 0/],
-    ['CONE_HEIGHT=-5', `${SIZE}&CONE_HEIGHT=-5`, /CONE_HEIGHT=-5 is out of range: using 0\.05/],
+    ['CONE_HEIGHT=-5', `${SIZE}&CONE_HEIGHT=-5`, /CONE_HEIGHT=-5 is out of range \(0\.05 \.\. 4\): using 0\.05/],
     ['an unknown control', `${SIZE}&NO_SUCH=1`, /NO_SUCH ignored: the shader has no control of that name/],
     ['size=99999x99999', `size=99999x99999&time=0&BOUNCES=0&SAMPLES=1`, /size=99999x99999 is out of range: using 5760x5760/],
   ])('%s is said in a note, with what was used instead', async (_, query, said) => {

@@ -21,6 +21,14 @@
 // `toggle` (0 or 1), or a comma list of choices (numbers are the values themselves; words are
 // labels whose values are 0, 1, 2, ...). A vector may name each component and give it a range
 // of its own: `// ui: Camera orbit (deg) | azimuth -180 .. 180, elevation -89 .. 90`.
+//
+// A third `|` part may say when the control matters, or bound one component by another:
+//   `| when SCENE = Cone`            shown only while SCENE (a control above it) is Cone;
+//   `| when SCENE = Cone, Cylinder`  ... is one of these;
+//   `| minor <= major`               a vector's named component kept at most another (a host
+//                                    clamps it, and says so, as the shader itself would);
+//   `| when SCENE = Torus; minor <= major`  both.
+// Shadertoy never reads any of it: it is a comment.
 
 import { HOST_CONTROLS_MACRO } from './header.js';
 
@@ -45,6 +53,10 @@ const CONST_LINE = new RegExp(String.raw`^\s*const\s+(float|int|bool|vec2|vec3|v
  * @property {Array<{name: string, min: number, max: number, step?: number}>} [components] a
  *   vector's components, each named and with a range of its own
  * @property {number} [line] the 1-based line of the shader that declares it
+ * @property {{name: string, choices: string[], values: number[]}} [when] shown only while the
+ *   control `name` has one of these values (`| when NAME = Choice`)
+ * @property {{component: number, bound: number}} [atMost] component `component` is kept at
+ *   most component `bound` (`| a <= b`)
  */
 
 export class ControlBlockError extends Error {
@@ -90,16 +102,24 @@ function parseRange(spec, line) {
 }
 
 /**
- * Parses the `label | range` annotation after `// ui:`.
+ * Parses the `label | range | clause` annotation after `// ui:` (the clause: parseClause).
  * @param {string} text
  * @param {number} line
  * @param {number} size how many components the control has
  */
 function parseAnnotation(text, line, size) {
-  const bar = text.indexOf('|');
-  const label = (bar < 0 ? text : text.slice(0, bar)).trim();
-  const spec = bar < 0 ? '' : text.slice(bar + 1).trim();
+  const [labelText, specText = '', clauseText, ...extra] = text.split('|');
+  if (extra.length) throw new ControlBlockError(`more than three "|" parts in "${text.trim()}"`, line);
+  const label = labelText.trim();
+  const spec = specText.trim();
   if (!label) throw new ControlBlockError('control has no label after "// ui:"', line);
+  const ranged = parseSpec(label, spec, line, size);
+  if (clauseText === undefined) return ranged;
+  return Object.assign({ ...ranged }, ...clauseText.split(';').map((clause) => parseClause(clause.trim(), ranged, line)));
+}
+
+/** The range part of an annotation. */
+function parseSpec(label, spec, line, size) {
   if (spec === '') return { label };
   if (spec === 'toggle') return { label, toggle: true, min: 0, max: 1, step: 1 };
   const range = parseRange(spec, line);
@@ -114,6 +134,69 @@ function parseAnnotation(text, line, size) {
   const numeric = items.every((s) => new RegExp(`^${NUMBER}$`).test(s));
   const options = items.map((s, i) => ({ label: s, value: numeric ? Number(s) : i }));
   return { label, options };
+}
+
+/**
+ * The third part of an annotation: `when NAME = Choice[, Choice]` (the choices are resolved in
+ * parseControls, once every control is known), or `a <= b` between two named components.
+ * @param {string} clause
+ * @param {{components?: Array<{name: string}>}} ranged the control so far
+ * @param {number} line
+ */
+function parseClause(clause, ranged, line) {
+  const when = clause.match(/^when\s+([A-Za-z_]\w*)\s*=\s*(.+)$/);
+  if (when) return { when: { name: when[1], choices: when[2].split(',').map((c) => c.trim()), values: [] } };
+  const bound = clause.match(/^([A-Za-z]\w*)\s*<=\s*([A-Za-z]\w*)$/);
+  if (bound) {
+    const index = (name) => {
+      const i = ranged.components?.findIndex((c) => c.name === name) ?? -1;
+      if (i < 0) throw new ControlBlockError(`"${clause}": ${name} is not a named component of this control`, line);
+      return i;
+    };
+    return { atMost: { component: index(bound[1]), bound: index(bound[2]) } };
+  }
+  throw new ControlBlockError(`cannot read "${clause}"; expected "when NAME = Choice" or "a <= b"`, line);
+}
+
+/**
+ * Resolves each `when` to the values of the control it names (declared before it).
+ * @param {Control[]} controls
+ */
+function resolveWhen(controls) {
+  controls.forEach((control, i) => {
+    if (!control.when) return;
+    const { name, choices } = control.when;
+    const other = controls.slice(0, i).find((c) => c.name === name);
+    if (!other) throw new ControlBlockError(`"when ${name} = ...": no control ${name} is declared above ${control.name}`, control.line);
+    control.when.values = choices.map((choice) => {
+      const value = choiceValue(other, choice);
+      if (value === undefined) throw new ControlBlockError(`"when ${name} = ${choice}": ${name} has no choice ${choice}`, control.line);
+      return value;
+    });
+  });
+}
+
+/**
+ * The value of one of a control's choices, by its label (any case) or by its number; undefined
+ * when it has no such choice.
+ * @param {Control} control
+ * @param {string} text
+ */
+export function choiceValue(control, text) {
+  const wanted = text.trim().toLowerCase();
+  const option = control.options?.find((o) => o.label.toLowerCase() === wanted);
+  if (option) return option.value;
+  const n = Number(wanted);
+  return wanted !== '' && control.options?.some((o) => o.value === n) ? n : undefined;
+}
+
+/**
+ * Whether a control matters with these values (its `when`, if any, holds).
+ * @param {Control} control
+ * @param {Record<string, unknown>} values
+ */
+export function controlApplies(control, values) {
+  return !control.when || control.when.values.includes(/** @type {number} */ (values[control.when.name]));
 }
 
 /**
@@ -136,7 +219,10 @@ export function parseControls(source) {
     const text = lines[i];
     const lineNo = i + 1;
     if (/^\s*#\s*if/.test(text)) depth++;
-    if (/^\s*#\s*endif/.test(text) && --depth === 0) return controls;
+    if (/^\s*#\s*endif/.test(text) && --depth === 0) {
+      resolveWhen(controls);
+      return controls;
+    }
     if (!/\/\/\s*ui:/.test(text)) continue;
     /** @type {Control} */
     let control;
@@ -201,6 +287,10 @@ export function coerceControlValue(control, value) {
       if (v === false || v === 'false' || v === 0 || v === '0') return false;
       return undefined;
     }
+    if (control.options && typeof v === 'string') {
+      const chosen = choiceValue(control, v);
+      if (chosen !== undefined) return chosen;
+    }
     let n = typeof v === 'number' ? v : Number(String(v).trim());
     if (String(v).trim() === '' || !Number.isFinite(n)) return undefined;
     if (control.options) {
@@ -215,7 +305,10 @@ export function coerceControlValue(control, value) {
   const parts = Array.isArray(value) ? value : String(value).split(',');
   if (parts.length !== size) return undefined;
   const out = parts.map((v, i) => one(v, control.components?.[i] ?? control));
-  return out.some((v) => v === undefined) ? undefined : out;
+  if (out.some((v) => v === undefined)) return undefined;
+  const { atMost } = control;
+  if (atMost) out[atMost.component] = Math.min(Number(out[atMost.component]), Number(out[atMost.bound]));
+  return out;
 }
 
 const PLAIN_CONST_LINE = /^const\s+(float|int|vec2|vec3|vec4)\s+([A-Za-z_]\w*)\s*=\s*([^;]+);/;

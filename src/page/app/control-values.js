@@ -2,7 +2,7 @@
 // read (from the panel, the URL, the automation hook) against the control list, and the values a
 // shared link must hold.
 
-import { coerceControlValue, controlDefaults } from '../../shadertoy/controls.js';
+import { choiceValue, coerceControlValue, controlDefaults } from '../../shadertoy/controls.js';
 
 /** @typedef {import('../../shadertoy/controls.js').Control} Control */
 
@@ -45,19 +45,45 @@ export function readControlChanges(controls, changes, from) {
     const value = coerceControlValue(control, raw);
     const shown = (v) => (Array.isArray(v) ? v.join(',') : String(v));
     if (value === undefined) {
-      warnings.push(
-        `${from}: ${name}=${shown(raw)} ignored: not a valid ${control.type}; the shader's value ${shown(control.default)} is used.`,
-      );
+      // a choice is named as the panel names it; anything else by the type the shader declares
+      const wanted = control.options ? `one of ${control.options.map((o) => o.label).join(', ')}` : `a valid ${control.type}`;
+      warnings.push(`${from}: ${name}=${shown(raw)} ignored: not ${wanted}; the shader's value ${shown(control.default)} is used.`);
       continue;
     }
-    if (typeof raw === 'string' && typeof value !== 'boolean') {
-      const written = Array.isArray(value) ? raw.split(',').map(Number) : Number(raw);
-      if (JSON.stringify(written) !== JSON.stringify(value))
-        warnings.push(`${from}: ${name}=${raw} is out of range: using ${shown(value)}.`);
-    }
+    const why = typeof raw === 'string' || control.atMost ? adjusted(control, raw, value) : null;
+    if (why) warnings.push(`${from}: ${name}=${shown(raw)} ${why}: using ${shown(value)}.`);
     read.push({ control, value });
   }
   return { read, warnings };
+}
+
+/**
+ * Why a value as written was not used as it is ("is out of range", "is not a whole number", ...),
+ * or null when it was (a choice given by its name is).
+ * @param {Control} control
+ * @param {unknown} raw the value as written (text from the URL, or a number or array)
+ * @param {any} value what coerceControlValue made of it
+ * @returns {string | null}
+ */
+function adjusted(control, raw, value) {
+  if (typeof value === 'boolean') return null;
+  if (control.options && typeof raw === 'string' && choiceValue(control, raw) !== undefined) return null;
+  const parts = (Array.isArray(raw) ? raw : String(raw).split(',')).map(Number);
+  const used = Array.isArray(value) ? value : [value];
+  for (const [i, written] of parts.entries()) {
+    if (written === used[i]) continue;
+    const range = control.components?.[i] ?? control;
+    const component = control.components?.[i] ? `${control.components[i].name} ` : '';
+    if (control.options) return `is not one of ${control.options.map((o) => o.label).join(', ')}`;
+    if (range.min !== undefined && (written < range.min || written > /** @type {number} */ (range.max)))
+      return `is out of range (${component}${range.min} .. ${range.max})`;
+    if (control.type === 'int') return 'is not a whole number';
+    if (control.atMost?.component === i) {
+      const bound = /** @type {Array<{name: string}>} */ (control.components)[control.atMost.bound].name;
+      return `has ${component}${written} above ${bound} ${used[control.atMost.bound]} (${component.trim()} <= ${bound})`;
+    }
+  }
+  return null;
 }
 
 /**
@@ -69,4 +95,20 @@ export function readControlChanges(controls, changes, from) {
 export function changedValues(controls, values) {
   const defaults = controlDefaults(controls);
   return Object.fromEntries(Object.entries(values).filter(([name, v]) => JSON.stringify(v) !== JSON.stringify(defaults[name])));
+}
+
+/**
+ * changedValues as a link writes them: a choice that has a name by it (SCENE=Torus, VIEW=Normals),
+ * which reads better than its number and which the page reads back (coerceControlValue).
+ * @param {Control[]} controls
+ * @param {Record<string, unknown>} values
+ * @returns {Record<string, unknown>}
+ */
+export function linkValues(controls, values) {
+  const changed = changedValues(controls, values);
+  for (const control of controls) {
+    const option = control.options?.find((o) => o.value === changed[control.name]);
+    if (option && option.label !== String(option.value)) changed[control.name] = option.label;
+  }
+  return changed;
 }

@@ -16,7 +16,7 @@
 import { formatUrlParams } from './url-params.js';
 import { exportJson, serializeProject } from './project-files.js';
 import { fileStem } from './file-names.js';
-import { changedValues } from '../app/control-values.js';
+import { linkValues } from '../app/control-values.js';
 
 /**
  * Longest link we hand out, in characters. Fragments are not sent to servers, but a link still
@@ -103,7 +103,7 @@ export async function shareLink(app) {
     mouse: app.inputs.mouse(),
     speed: app.inputs.speed,
     channels: app.channels.urls,
-    controls: changedValues(app.controls, app.values),
+    controls: linkValues(app.controls, app.values),
   });
   let fragment = '';
   if (inLink) {

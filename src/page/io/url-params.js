@@ -164,7 +164,8 @@ function formatNumber(v) {
  * @param {number[]} [state.mouse] iMouse; omitted when all zero
  * @param {number} [state.speed] omitted when 1
  * @param {(string|undefined)[]} [state.channels] image URLs
- * @param {Record<string, unknown>} [state.controls] control values to write (vectors as arrays)
+ * @param {Record<string, unknown>} [state.controls] control values to write (vectors as arrays, a
+ *   choice by its name as a string)
  */
 export function formatUrlParams({ shader, size, time, mouse, speed = 1, channels = [], controls = {} }) {
   const query = new URLSearchParams();
@@ -177,7 +178,7 @@ export function formatUrlParams({ shader, size, time, mouse, speed = 1, channels
   for (const [name, value] of Object.entries(controls)) {
     const text = Array.isArray(value)
       ? value.map(formatNumber).join(',')
-      : typeof value === 'boolean'
+      : typeof value === 'boolean' || typeof value === 'string'
         ? String(value)
         : formatNumber(value);
     query.set(name, text);

@@ -5,6 +5,7 @@
 
 import GUI from 'lil-gui';
 import { MAX_SCALE, MIN_SCALE } from '../app/canvas-size.js';
+import { controlApplies } from '../../shadertoy/controls.js';
 
 const COMPONENTS = ['x', 'y', 'z', 'w'];
 
@@ -104,6 +105,8 @@ export class Panel {
     this._controlsFolder = null;
     this._view = {}; // what the widgets edit: scalars by name, vectors as {x, y, z, w}
     this._controls = [];
+    /** Each control's widget (a vector's: its folder), by name: hidden while the control does not apply. @type {Record<string, {show: (shown?: boolean) => unknown}>} */
+    this._widgets = {};
   }
 
   /** The screenshot size chosen in the panel, for a canvas of width × height (null: canvas size). */
@@ -121,6 +124,7 @@ export class Panel {
     this._controlsFolder?.destroy();
     this._controls = controls;
     this._view = {};
+    this._widgets = {};
     if (controls.length === 0) {
       this._controlsFolder = null;
       return;
@@ -139,6 +143,8 @@ export class Panel {
       if (Array.isArray(value)) value.forEach((v, i) => (this._view[c.name][COMPONENTS[i]] = v));
       else this._view[c.name] = isCheckbox(c) ? Boolean(value) : value;
     }
+    // a control of another scene's object changes nothing: it is not shown (`| when`, controls.js)
+    for (const c of this._controls) this._widgets[c.name]?.show(controlApplies(c, values));
     this._controlsFolder?.controllersRecursive().forEach((controller) => controller.updateDisplay());
   }
 
@@ -151,6 +157,7 @@ export class Panel {
     const size = { vec2: 2, vec3: 3, vec4: 4 }[c.type];
     if (size) {
       const sub = folder.addFolder(c.label).close(); // keeps the panel short; click to open
+      this._widgets[c.name] = sub;
       this._view[c.name] = {};
       COMPONENTS.slice(0, size).forEach((axis, i) => {
         // a component with a name and range of its own (controls.js), else x, y, z, w in the vector's range
@@ -165,15 +172,15 @@ export class Panel {
     if (c.options) {
       this._view[c.name] = c.default;
       const choices = Object.fromEntries(c.options.map((o) => [o.label, o.value]));
-      listen(folder.add(this._view, c.name, choices).name(c.label), () => this._view[c.name]);
+      this._widgets[c.name] = listen(folder.add(this._view, c.name, choices).name(c.label), () => this._view[c.name]);
     } else if (isCheckbox(c)) {
       this._view[c.name] = false;
       // a bool stays a bool; a toggle on an int or float is 0 or 1
       const read = () => (c.type === 'bool' ? this._view[c.name] : Number(this._view[c.name]));
-      listen(folder.add(this._view, c.name).name(c.label), read);
+      this._widgets[c.name] = listen(folder.add(this._view, c.name).name(c.label), read);
     } else {
       this._view[c.name] = 0;
-      listen(this._numberWidget(folder, this._view, c.name, c).name(c.label), () => this._view[c.name]);
+      this._widgets[c.name] = listen(this._numberWidget(folder, this._view, c.name, c).name(c.label), () => this._view[c.name]);
     }
   }
 
