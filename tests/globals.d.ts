@@ -21,6 +21,8 @@ export interface RaytracerInfo {
   height: number;
   /** frames drawn so far */
   frame: number;
+  /** the next frame's iFrame (0 after a restart or a newly loaded shader) */
+  iFrame: number;
   time: number;
   playing: boolean;
   speed: number;

@@ -18,8 +18,15 @@ function memoryStorage() {
 const GOOD = singlePass('void mainImage(out vec4 c, in vec2 p) { c = vec4(1.0); }');
 const HUNG = singlePass('void mainImage(out vec4 c, in vec2 p) { for (;;) {} }');
 
-/** The shader that hung, as the guard is told it. */
-const hungWith = (project, values) => ({ project, values, name: 'hung.glsl' });
+/** The shader that hung, as the guard is told it (a ShaderVersion). */
+const hungWith = (project, values) => ({
+  project,
+  values,
+  name: 'hung.glsl',
+  origin: /** @type {const} */ ('editor'),
+  url: null,
+  info: null,
+});
 
 describe('HangGuard', () => {
   test('a hang is noted with the last shader that finished; only that shader with those values is replaced', () => {

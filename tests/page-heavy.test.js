@@ -9,7 +9,7 @@ import { CHROME_ARGS } from './harness/setup.js';
 import { findChrome } from './harness/chrome-path.js';
 import { harnessContext } from './harness/page.js';
 import { info, nextFrame, pixel, withPage, withServedDir } from './page-helpers.js';
-import { HANG_AFTER_MS } from '../src/page/app/render-client.js';
+import { SHORT_TIMEOUTS } from './harness/config.js';
 import fs from 'node:fs';
 import path from 'node:path';
 
@@ -48,12 +48,18 @@ const SIZE = 'size=128x72';
 /** Trips per pixel that make one 128×72 frame take several seconds on SwiftShader (measured:
  * 60000 trips take 0.45 s a frame, so this is ~9 s; bands of 2 rows ~0.25 s). */
 const HEAVY_WORK = 1_200_000;
-/** Trips per pixel that make a band of 8 rows (1024 pixels) outlast the watchdog (measured:
- * 6e6 trips take 5–9 s a band, 12e6 ~13 s). */
-const HANGING_WORK = 12_000_000;
+/** Trips per pixel that make a band of 8 rows (1024 pixels) outlast the shortened watchdog
+ * (SHORT_TIMEOUTS.hangMs, 0.5 s) by far, yet end (measured: 12e6 trips take ~13 s a band, so
+ * this is ~2 s). */
+const HANGING_WORK = 2_000_000;
+/** The watchdog's time on these pages: a test never waits out the production 5 s. */
+const HANG_AFTER_MS = SHORT_TIMEOUTS.hangMs;
 /** The timers and the watchdog need time to pass while no animation frame is asked for: these
- * pages keep the real clocks (the deterministic injection advances performance.now() per frame). */
-const REAL_CLOCKS = { deterministic: false };
+ * pages keep the real clocks (the deterministic injection advances performance.now() per frame),
+ * and the short timeouts. */
+const REAL_CLOCKS = { deterministic: false, timeouts: SHORT_TIMEOUTS };
+/** The hang note the page keeps in localStorage (src/page/io/hang-guard.js), or null. */
+const hangNote = (page) => page.evaluate(() => JSON.parse(localStorage.getItem('shadertoy-runner.hung') ?? 'null'));
 /** The page's script answers a click within this (issue 12). */
 const CLICK_ANSWER_MS = 100;
 
@@ -145,11 +151,73 @@ describe('heavy frames are drawn in bands, and the page keeps answering', () => 
         expect(alert).toContain('heavy.glsl may never finish');
         expect(alert).toContain('Go back to heavy.glsl');
         expect((await info(page)).hung).toBe(true);
-        // the band ends after all: the message goes
+        expect((await hangNote(page))?.name).toBe('heavy.glsl');
+        // the frame ends after all: the message goes, and the first frame it finishes clears the
+        // note (it was only slow). That frame was begun for the shader before (the page plays),
+        // and its shader changed under way: it counts as the new shader's.
+        const noteAfterFrame = page.evaluate(() => window.raytracer.nextFrame().then(() => localStorage.getItem('shadertoy-runner.hung')));
         await page.waitForFunction(() => !document.documentElement.dataset.hung, { polling: 100, timeout: 90_000 });
         expect(await page.$eval('[role="alert"]', (e) => /** @type {HTMLElement} */ (e).hidden)).toBe(true);
+        expect(await noteAfterFrame, 'the hang note after the first finished frame').toBeNull();
       }, REAL_CLOCKS);
     });
+  });
+});
+
+describe('a long compile is not a hang', () => {
+  // SwiftShader compiles a program on its first draw (the torus scene: ~3.5 s), which the render
+  // worker draws as one quad of its own: the watchdog says "Compiling", not "may never finish".
+  const COMPILING = { ...REAL_CLOCKS, timeouts: { ...SHORT_TIMEOUTS, compileHangMs: 120_000 } };
+  // SwiftShader keeps the programs it has compiled for the browser's life, so a torus that another
+  // test compiled first would compile at once here: each test's torus has a reflectivity of its own.
+  const torus = (reflectivity) => ({ SCENE: 2, TORUS_REFLECTIVITY: reflectivity });
+  const torusQuery = (reflectivity) => `size=64x36&SCENE=2&TORUS_REFLECTIVITY=${reflectivity}`;
+
+  test('a first draw that compiles for seconds says so, and its first frame clears the note', async () => {
+    await withPage(async ({ page, goto }) => {
+      await page.evaluateOnNewDocument(() => {
+        // every state of data-hung the page goes through
+        window.addEventListener('DOMContentLoaded', () => {
+          const seen = [];
+          /** @type {any} */ (window).__hungStates = seen;
+          new MutationObserver(() => seen.push(document.documentElement.dataset.hung ?? '')).observe(document.documentElement, {
+            attributeFilter: ['data-hung'],
+          });
+        });
+      });
+      await goto(`?${torusQuery(0.301)}`);
+      const seen = await page.evaluate(() => /** @type {any} */ (window).__hungStates);
+      expect(seen, 'data-hung went through "compiling" and never "true"').toContain('compiling');
+      expect(seen).not.toContain('true');
+      expect(await hangNote(page), 'the first frame cleared the note').toBeNull();
+    }, COMPILING);
+  });
+
+  test('a page closed while a shader compiled runs the last one that finished, says why, and runs it on request', async () => {
+    await withPage(async ({ page, goto }) => {
+      await goto('?size=64x36');
+      await page.evaluate((controls) => {
+        window.raytracer.setControls(controls);
+      }, torus(0.302));
+      await page.waitForFunction(() => document.documentElement.dataset.hung === 'compiling', { polling: 50, timeout: 60_000 });
+      expect(await page.$eval('[role="alert"]', (e) => e.textContent)).toContain('Compiling shaders/raytrace.glsl');
+      expect((await hangNote(page))?.phase).toBe('compiling');
+      // the page is opened again on the shader that was compiling
+      await goto(`?${torusQuery(0.302)}`);
+      expect((await info(page)).controls.SCENE).toBe(0); // the last shader that finished
+      const alert = await page.$eval('[role="alert"]', (e) => e.textContent);
+      expect(alert).toContain('was still compiling when the page closed');
+      await page.evaluate(() => {
+        const run = [...document.querySelectorAll('[role="alert"] button')].find((b) => b.textContent === 'Run shaders/raytrace.glsl');
+        /** @type {HTMLButtonElement} */ (run).click();
+      });
+      await page.waitForFunction(() => window.raytracer.info().controls.SCENE === 2 && window.raytracer.info().compiled >= 2, {
+        polling: 100,
+        timeout: 90_000,
+      });
+      await page.evaluate(() => window.raytracer.readPixels());
+      expect(await hangNote(page)).toBeNull();
+    }, COMPILING);
   });
 });
 
@@ -185,6 +253,9 @@ describe('a shader that never finishes', () => {
       const browser = await puppeteer.launch({ executablePath: findChrome(), args: CHROME_ARGS, headless: true });
       try {
         const page = await browser.newPage();
+        await page.evaluateOnNewDocument((chosen) => {
+          /** @type {any} */ (window).__raytracerTimeouts = chosen;
+        }, SHORT_TIMEOUTS);
         await page.goto(`${baseUrl}/?shader=${base}/heavy.glsl&${SIZE}&WORK=0`, { waitUntil: 'load' });
         await page.waitForFunction(() => window.raytracer, { polling: 50 });
         await page.evaluate(() => window.raytracer.ready);

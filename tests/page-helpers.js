@@ -45,11 +45,12 @@ export async function withServedDir(prefix, body) {
  * fails if the page logged a console error or threw, even when `body` passed.
  * @param {(p: PageSession) => Promise<void>} body
  * `deterministic: false` leaves the page's clocks real (the watchdog's tests need time to pass
- * while no animation frame is asked for).
- * @param {{viewport?: import('puppeteer-core').Viewport, beforeLoad?: (page: import('puppeteer-core').Page) => Promise<unknown>, deterministic?: boolean}} [options]
+ * while no animation frame is asked for); `timeouts` shortens the page's (harness/config.js's
+ * SHORT_TIMEOUTS).
+ * @param {{viewport?: import('puppeteer-core').Viewport, beforeLoad?: (page: import('puppeteer-core').Page) => Promise<unknown>, deterministic?: boolean, timeouts?: Partial<import('../src/page/timeouts.js').Timeouts>}} [options]
  */
-export async function withPage(body, { viewport, beforeLoad, deterministic = true } = {}) {
-  const { page, errors, context } = await openPage({ deterministic });
+export async function withPage(body, { viewport, beforeLoad, deterministic = true, timeouts } = {}) {
+  const { page, errors, context } = await openPage({ deterministic, timeouts });
   const warnings = [];
   page.on('console', (message) => {
     if (message.type() === 'warn') warnings.push(message.text());

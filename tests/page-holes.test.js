@@ -1,5 +1,5 @@
 // Issue 12's smaller holes, in the real page: a load that never gets an answer ends with a message
-// (src/page/shader-loader.js, LOAD_TIMEOUT_MS), and an image or a shader from another origin is
+// (src/page/io/shader-loader.js, after src/page/timeouts.js's loadMs, shortened here), and an image or a shader from another origin is
 // refused up front, whether asked for directly or reached through a redirect, without a console
 // error. The page's server gets its hanging and redirecting URLs from tests/harness/routes.js; the
 // other origin is a small server of this file's own.
@@ -8,7 +8,7 @@ import http from 'node:http';
 import os from 'node:os';
 import path from 'node:path';
 import { afterAll, beforeAll, describe, expect, test } from 'vitest';
-import { LOAD_TIMEOUT_MS } from '../src/page/io/shader-loader.js';
+import { SHORT_TIMEOUTS } from './harness/config.js';
 import { makeImage, writePng } from './harness/images.js';
 import { disconnect } from './harness/page.js';
 import { hangUrl, redirectUrl } from './harness/routes.js';
@@ -16,6 +16,8 @@ import { info, overlayText, pixel, readPixels, solid, withPage, withServedDir } 
 
 afterAll(disconnect);
 
+/** The load timeout these pages run with (the production one is tests/timeouts.test.js's). */
+const LOAD_TIMEOUT_MS = SHORT_TIMEOUTS.loadMs;
 /** How much longer than LOAD_TIMEOUT_MS a test waits for the page's message before it fails. */
 const MESSAGE_MARGIN_MS = 20_000;
 /** A test that waits out one LOAD_TIMEOUT_MS (and loads the page). */
@@ -94,28 +96,31 @@ describe('a load that never gets an answer ends with a message', () => {
   test(
     `?shader= that never answers: after ${LOAD_TIMEOUT_MS / 1000} s the page says so and runs the built-in shader`,
     async () => {
-      await withPage(async ({ page, warnings, context }) => {
-        const url = hangUrl(context.baseUrl);
-        const started = Date.now();
-        await page.goto(`${context.baseUrl}/?shader=${encodeURIComponent(url)}&${SIZE}`, { waitUntil: 'load' });
-        await page
-          .waitForFunction(
-            (text) => document.querySelector('[role="alert"]:not([hidden])')?.textContent.includes(text),
-            { timeout: LOAD_TIMEOUT_MS + MESSAGE_MARGIN_MS, polling: 200 },
-            TIMED_OUT,
-          )
-          .catch(() => {
-            throw new Error(`no "${TIMED_OUT}" on the page after ${(Date.now() - started) / 1000} s`);
-          });
-        expect(Date.now() - started).toBeGreaterThanOrEqual(LOAD_TIMEOUT_MS);
-        expect(await overlayText(page)).toContain(`Could not load ${url}`);
-        expect(await page.evaluate(() => window.raytracer.ready.then(() => 'drawn'))).toBe('drawn');
-        expect((await info(page)).origin).toBe('builtin');
-        expect(
-          warnings.some((w) => w.includes(`shader=${url}`) && w.includes(TIMED_OUT)),
-          warnings.join('\n'),
-        ).toBe(true);
-      });
+      await withPage(
+        async ({ page, warnings, context }) => {
+          const url = hangUrl(context.baseUrl);
+          const started = Date.now();
+          await page.goto(`${context.baseUrl}/?shader=${encodeURIComponent(url)}&${SIZE}`, { waitUntil: 'load' });
+          await page
+            .waitForFunction(
+              (text) => document.querySelector('[role="alert"]:not([hidden])')?.textContent.includes(text),
+              { timeout: LOAD_TIMEOUT_MS + MESSAGE_MARGIN_MS, polling: 200 },
+              TIMED_OUT,
+            )
+            .catch(() => {
+              throw new Error(`no "${TIMED_OUT}" on the page after ${(Date.now() - started) / 1000} s`);
+            });
+          expect(Date.now() - started).toBeGreaterThanOrEqual(LOAD_TIMEOUT_MS);
+          expect(await overlayText(page)).toContain(`Could not load ${url}`);
+          expect(await page.evaluate(() => window.raytracer.ready.then(() => 'drawn'))).toBe('drawn');
+          expect((await info(page)).origin).toBe('builtin');
+          expect(
+            warnings.some((w) => w.includes(`shader=${url}`) && w.includes(TIMED_OUT)),
+            warnings.join('\n'),
+          ).toBe(true);
+        },
+        { timeouts: SHORT_TIMEOUTS },
+      );
     },
     SLOW_TEST_MS,
   );
@@ -123,14 +128,17 @@ describe('a load that never gets an answer ends with a message', () => {
   test(
     'loadShader() and setChannel() of a URL that never answers reject with the same message',
     async () => {
-      await withPage(async ({ page, goto, context }) => {
-        await goto(`?${PATTERN}&${SIZE}`);
-        const url = hangUrl(context.baseUrl);
-        const [shader, image] = await Promise.all([settleInPage(page, 'loadShader', url), settleInPage(page, 'setChannel', 0, url)]);
-        expect(shader.value).toEqual({ ok: false, error: `the server ${TIMED_OUT}` });
-        expect(image.error).toBe(`the server ${TIMED_OUT}`);
-        expect((await info(page)).fileName).toBe('pattern.glsl'); // still running
-      });
+      await withPage(
+        async ({ page, goto, context }) => {
+          await goto(`?${PATTERN}&${SIZE}`);
+          const url = hangUrl(context.baseUrl);
+          const [shader, image] = await Promise.all([settleInPage(page, 'loadShader', url), settleInPage(page, 'setChannel', 0, url)]);
+          expect(shader.value).toEqual({ ok: false, error: `the server ${TIMED_OUT}` });
+          expect(image.error).toBe(`the server ${TIMED_OUT}`);
+          expect((await info(page)).fileName).toBe('pattern.glsl'); // still running
+        },
+        { timeouts: SHORT_TIMEOUTS },
+      );
     },
     SLOW_TEST_MS,
   );

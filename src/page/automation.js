@@ -51,12 +51,15 @@
 //                         rejects with why it cannot.
 //   comparison()          {running, error, stale, shown}: the comparison's state on the page.
 //   info()                {renderer (UNMASKED_RENDERER_WEBGL), vendor, version, shadingLanguage,
-//                         width, height, frame, time, playing, speed, mouse (iMouse),
+//                         width, height, frame (frames drawn since the page started),
+//                         iFrame (the next frame's), time, playing, speed, mouse (iMouse),
 //                         controls: {NAME: value}, fileName, shaderUrl, origin, contextLost,
 //                         compiled (successful compiles so far), liveControls ('constants' while
 //                         the shader on screen has the live controls compiled in, 'uniforms'
 //                         while they move: see live-controls.js), hung (the watchdog's verdict:
-//                         a frame has gone HANG_AFTER_MS without progress), progress ({y,
+//                         a band has gone TIMEOUTS.hangMs unfinished: timeouts.js), watchdog
+//                         (null, 'compiling': a program's first draw is taking long, or
+//                         'drawing': hung), progress ({y,
 //                         height, bands}: how far the frame being drawn has got; null if none),
 //                         converging, stillFrames (frames since the last change)}
 //
@@ -220,6 +223,7 @@ export function installAutomation(app, ready, ui) {
         ...app.gpu.info(),
         ...app.frames.size,
         frame: app.frames.count,
+        iFrame: app.inputs.frame,
         time: app.inputs.time,
         playing: app.inputs.playing,
         speed: app.inputs.speed,
@@ -231,7 +235,8 @@ export function installAutomation(app, ready, ui) {
         contextLost: app.gpu.contextLost,
         compiled: app.compiles.count,
         liveControls: app.liveForm.asConstants ? 'constants' : 'uniforms',
-        hung: app.gpu.hung,
+        hung: app.gpu.hung === 'drawing',
+        watchdog: app.gpu.hung,
         progress: app.frames.progress,
         converging: app.converge.on,
         stillFrames: app.frames.stillFrames,

@@ -20,6 +20,7 @@ import { singlePass } from '../shadertoy/multipass.js';
 const BUILTIN_NAME = 'shaders/raytrace.glsl';
 
 /** @typedef {import('./ui/notices.js').Notice} Notice */
+/** @typedef {import('./app/app.js').ShaderVersion} ShaderVersion */
 /**
  * @typedef {object} FirstSource the shader the page opens with
  * @property {import('../shadertoy/multipass.js').MultipassShader} project
@@ -140,11 +141,29 @@ function avoidHungShader(app, notice) {
   const hung = guard.note;
   if (!back || !hung) return;
   app.runVersion(back, 'the last shader that finished');
+  const compiling = hung.phase === 'compiling';
   notice({
-    title: `${hung.name} did not finish drawing last time`,
-    detail: `It may never finish (an endless loop?), so the page runs ${back.name}, the last shader that finished a frame. The text that hung is kept: it goes back into the editor, not run, with the button below.`,
-    actions: [{ label: `Edit ${hung.name} (not run)`, run: () => app.loadProject(hung.project, { name: hung.name, origin: 'editor' }) }],
+    title: compiling ? `${hung.name} was still compiling when the page closed` : `${hung.name} did not finish drawing last time`,
+    detail: compiling
+      ? `It had been compiling for ${Math.round(hung.seconds ?? 0)} s (SwiftShader compiles a shader on its first draw; a large one takes a while, an endless loop never ends), so the page runs ${back.name}, the last shader that finished a frame. Run it again, or put it in the editor without running it.`
+      : `It may never finish (an endless loop?), so the page runs ${back.name}, the last shader that finished a frame. The text that hung is kept: it goes back into the editor, not run, with the button below.`,
+    actions: [
+      ...(compiling && hung.version
+        ? [{ label: `Run ${hung.name}`, run: () => runAgain(app, /** @type {ShaderVersion} */ (hung.version)) }]
+        : []),
+      { label: `Edit ${hung.name} (not run)`, run: () => app.loadProject(hung.project, { name: hung.name, origin: 'editor' }) },
+    ],
   });
+}
+
+/**
+ * Runs a shader as it ran before (its tabs and control values).
+ * @param {RaytracerApp} app
+ * @param {ShaderVersion} version
+ */
+function runAgain(app, version) {
+  app.runVersion(version, 'the shader that was compiling');
+  app.compiles.compile().catch(() => {}); // shown on the page
 }
 
 async function start() {
@@ -192,8 +211,8 @@ async function start() {
     if (loaded.notice) noticeAfterCompile(loaded.notice);
     app.loadProject(loaded.project, loaded.from);
     keptWork(app, ui, params.shader, loaded);
-    avoidHungShader(app, noticeAfterCompile);
     const { warnings } = app.applyControls(params.controls, 'URL');
+    avoidHungShader(app, noticeAfterCompile); // after the link's values: a value can be what hung
     showValueNotes(stage, [...params.warnings, ...warnings].map(plainWarning));
     app.compiles.compile().catch(() => {}); // shown on the page; `ready` rejects
     app.frames.request();

@@ -14,5 +14,14 @@ export const UPDATING = process.env.UPDATE_GOLDENS === '1';
 /** How long a page may take to load or answer (SwiftShader compiles on the CPU). */
 export const PAGE_TIMEOUT_MS = 90_000;
 
+/**
+ * The page's timeouts shortened for the tests that wait for one (src/page/timeouts.js): a test
+ * never waits out a production timeout. Opt-in per page (openPage's `timeouts`): an ordinary
+ * page keeps the production ones, since under load a normal band of the raytracer can take
+ * longer than half a second. compileHangMs stays above the raytracer's slowest first draw here
+ * (the torus scene's, ~3.5 s alone, more under load) for the pages that draw it.
+ */
+export const SHORT_TIMEOUTS = Object.freeze({ loadMs: 1_500, hangMs: 500, compileHangMs: 8_000, workerStartMs: 2_000 });
+
 /** A path as the messages show it: relative to the repository. */
 export const rel = (file) => path.relative(REPO_ROOT, file);

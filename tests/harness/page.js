@@ -74,15 +74,20 @@ export async function disconnect() {
 }
 
 /**
- * A fresh page with the deterministic injection (unless `deterministic: false`), collecting
+ * A fresh page with the deterministic injection (unless `deterministic: false`), and the page's
+ * `timeouts` (src/page/timeouts.js) set as given (e.g. config.js's SHORT_TIMEOUTS), collecting
  * console errors and page errors. Every wait on it (evaluate, waitForFunction, goto, ...) ends
  * within `waitTimeoutMs` (WAIT_TIMEOUT_MS in tests, SCRIPT_WAIT_TIMEOUT_MS in scripts), and at
  * once when the page or the browser crashes, with what the page was doing in the message; its
  * close() gives up after a while (watch.js).
- * @param {{deterministic?: boolean, waitTimeoutMs?: number}} [options]
+ * @param {{deterministic?: boolean, waitTimeoutMs?: number, timeouts?: Partial<import('../../src/page/timeouts.js').Timeouts>}} [options]
  * @returns {Promise<{page: import('puppeteer-core').Page, errors: string[], context: object}>}
  */
-export async function openPage({ deterministic = true, waitTimeoutMs = scriptContext ? SCRIPT_WAIT_TIMEOUT_MS : WAIT_TIMEOUT_MS } = {}) {
+export async function openPage({
+  deterministic = true,
+  waitTimeoutMs = scriptContext ? SCRIPT_WAIT_TIMEOUT_MS : WAIT_TIMEOUT_MS,
+  timeouts = undefined,
+} = {}) {
   const { browser, context } = await connect();
   const page = await withTimeout('opening a page', browser.newPage(), waitTimeoutMs);
   watchPage(page, browser, { waitTimeoutMs });
@@ -98,6 +103,10 @@ export async function openPage({ deterministic = true, waitTimeoutMs = scriptCon
   // Every page loads fresh from the server: no 304s, nothing left over from an earlier test.
   await page.setCacheEnabled(false);
   if (deterministic) await page.evaluateOnNewDocument(INJECTION_SOURCE);
+  if (timeouts)
+    await page.evaluateOnNewDocument((chosen) => {
+      /** @type {any} */ (window).__raytracerTimeouts = chosen;
+    }, timeouts);
   return { page, errors, context };
 }
 

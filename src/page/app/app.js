@@ -29,8 +29,15 @@ import { Channels } from './channels.js';
 /** @typedef {import('./events.js').AppEvents} AppEvents */
 /** @typedef {import('../../shadertoy/multipass.js').MultipassShader} MultipassShader */
 /**
- * A shader as it ran: its tabs, where it came from, and its control values.
- * @typedef {{project: MultipassShader, info: object | null, name: string, origin: RaytracerApp['origin'], url: string | null, values?: Record<string, any>}} ShaderVersion
+ * A shader as it ran: its tabs, where it came from, its control values, and which load of a
+ * shader it is (a new number each time a shader replaces another: app.loadProject).
+ * @typedef {{project: MultipassShader, info: object | null, name: string, origin: RaytracerApp['origin'], url: string | null, values?: Record<string, any>, load?: number}} ShaderVersion
+ */
+/**
+ * Where a shader given to loadProject comes from. `continues`: it is the shader on screen going
+ * on (an edit typed in the editor, "Converge when still"), whose clock runs on; anything else is
+ * a new shader, which starts at iFrame 0 (Shadertoy's contract).
+ * @typedef {{name?: string, origin?: RaytracerApp['origin'], url?: string|null, info?: object | null, continues?: boolean}} ProjectFrom
  */
 
 /** @extends {Emitter<AppEvents>} */
@@ -55,7 +62,7 @@ export class RaytracerApp extends Emitter {
     this.fileName = fileName;
     /** The render worker, through its client: the GPU side (gpu/). */
     this.gpu = gpu;
-    gpu.on('hang', (_, seconds) => this.emit('hang', seconds));
+    gpu.on('hang', (_, seconds, phase) => this.emit('hang', seconds, phase));
     this.inputs = new ShadertoyInputs();
     this.inputs.playing = playing;
     this.inputs.attach(canvas);
@@ -77,6 +84,8 @@ export class RaytracerApp extends Emitter {
     this.origin = 'builtin';
     /** The shader's URL as the page was given it, when it came from one (for a shared link). @type {string | null} */
     this.shaderUrl = null;
+    /** Shaders loaded so far, each one in place of another (ShaderVersion.load). */
+    this._loads = 0;
     /** @type {Control[]} */
     this.controls = [];
     /** The controls' current values, by name. @type {Record<string, any>} */
@@ -148,18 +157,20 @@ export class RaytracerApp extends Emitter {
       origin: this.origin,
       url: this.shaderUrl,
       values: structuredClone(this.values),
+      load: this._loads,
     };
   }
 
   /**
    * Takes a new shader: reads its control blocks (one per tab at most; keeping current values of
    * controls that survive); the page rebuilds its panel on the 'source' event. Then compile
-   * (setProject does both).
+   * (setProject does both). A new shader (not `from.continues`) starts at iFrame 0 once it
+   * compiles (compile-job.js).
    * @param {MultipassShader} project
-   * @param {{name?: string, origin?: RaytracerApp['origin'], url?: string|null, info?: object | null}} [from]
-   *   where it came from
+   * @param {ProjectFrom} [from] where it came from
    */
   loadProject(project, from = {}) {
+    if (!from.continues) this._loads++;
     /** @type {Control[]} */
     const controls = [];
     this.notice = null;
@@ -189,7 +200,7 @@ export class RaytracerApp extends Emitter {
   /**
    * loadProject + compile: resolves on success, rejects with the compile error.
    * @param {MultipassShader} project
-   * @param {{name?: string, origin?: RaytracerApp['origin'], url?: string|null, info?: object | null}} [from]
+   * @param {ProjectFrom} [from]
    */
   setProject(project, from = {}) {
     this.loadProject(project, from);
@@ -200,9 +211,10 @@ export class RaytracerApp extends Emitter {
    * Loads a shader as it ran (its tabs and its control values); call compile() after.
    * @param {ShaderVersion} version
    * @param {string} from who asks, in warnings
+   * @param {{continues?: boolean}} [options] continues: the clock runs on (see loadProject)
    */
-  runVersion(version, from) {
-    this.loadProject(version.project, version);
+  runVersion(version, from, { continues = false } = {}) {
+    this.loadProject(version.project, { ...version, continues });
     this.applyControls(version.values ?? {}, from);
   }
 
@@ -268,12 +280,21 @@ export class RaytracerApp extends Emitter {
     else this.play();
   }
 
-  /** iTime and iFrame back to 0; draws that frame even while paused. */
+  /** iTime and iFrame back to 0; draws that frame even while paused (a frame under way is drawn again as iFrame 0: frame-loop.js). */
   restart() {
     this.inputs.restart();
     this.gpu.tell('clearBuffers', {}); // Shadertoy's rewind clears every buffer too
     this.emit('state');
     this.frames.request();
+  }
+
+  /**
+   * A newly loaded shader has compiled: it starts at iFrame 0 and iTime 0 with cleared buffers.
+   * Before any frame of the page (the first shader) the clock is where the page set it (a link's
+   * ?time=).
+   */
+  startClock() {
+    if (this.inputs.frame > 0 || this.frames.busy) this.restart();
   }
 
   /** @param {number} seconds */

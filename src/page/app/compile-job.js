@@ -25,6 +25,21 @@ export class CompileJob {
     this._started = 0;
     /** Which compile `running` is: one that finishes after a newer one is not drawn (gpu/renderer.js). */
     this._runningSerial = 0;
+    /** The shader on screen before `running`, with its compile's number (a frame under way may still be its). @type {{serial: number, version: ShaderVersion} | null} */
+    this._before = null;
+    /** The load (ShaderVersion.load) whose clock was started: a newly loaded shader starts at iFrame 0. */
+    this._clockOf = 0;
+  }
+
+  /**
+   * The shader a frame was drawn with, from the compile number the worker gives with it (null:
+   * not known, as after a new worker).
+   * @param {number} serial
+   * @returns {ShaderVersion | null}
+   */
+  versionOf(serial) {
+    if (serial === this._runningSerial) return this.running;
+    return this._before?.serial === serial ? this._before.version : null;
   }
 
   /** True once some shader has compiled and runs (the worker draws nothing before). */
@@ -35,6 +50,7 @@ export class CompileJob {
   /** The worker lost its programs (a restored context, a new worker): nothing runs until the next compile. */
   forget() {
     this.running = null;
+    this._before = null;
     this._runningSerial = this._started;
   }
 
@@ -56,11 +72,18 @@ export class CompileJob {
     const version = app.version();
     const fileName = version.name;
     const serial = ++this._started;
-    const job = app.gpu.ask('compile', { project: version.project, hostBlock, fileName }).then(
+    const job = app.gpu.ask('compile', { project: version.project, hostBlock, fileName, serial }).then(
       () => {
         if (serial > this._runningSerial) {
+          if (this.running) this._before = { serial: this._runningSerial, version: this.running };
           this.running = version;
           this._runningSerial = serial;
+          // Shadertoy's contract: a shader loaded in place of another starts at iFrame 0 and
+          // iTime 0 with cleared buffers (its buffers may set themselves up on frame 0)
+          if (version.load !== this._clockOf) {
+            this._clockOf = version.load;
+            app.startClock();
+          }
         }
         if (job !== this.latest) return;
         this.errors = [];

@@ -58,7 +58,7 @@ export class Converge {
     if (!on) {
       const back = /** @type {ShaderVersion} */ (this._before);
       this.drop();
-      app.runVersion(back, 'Converge when still');
+      app.runVersion(back, 'Converge when still', { continues: true });
       return app.compiles.compile();
     }
     if (app.isMultipass) throw new Error('only the raytracer converges: this shader has buffers of its own');
@@ -67,7 +67,7 @@ export class Converge {
     const before = app.version();
     const tabs = progressiveTabs(app.source);
     app.pause();
-    app.loadProject(tabs.model, { name: before.name, origin: before.origin, url: before.url });
+    app.loadProject(tabs.model, { name: before.name, origin: before.origin, url: before.url, continues: true });
     this.on = true;
     this._before = before;
     app.applyControls({ SHOW_SAMPLE_COUNT: 1 }, 'Converge when still');

@@ -24,7 +24,8 @@
  *   success, else its error (app.compiles.hasProgram tells whether an older shader still runs)
  * @property {[]} source a new source was loaded (its controls read)
  * @property {[lost: boolean]} context the GPU context was lost (true) or restored (false)
- * @property {[seconds: number | null]} hang a frame has gone that long without finishing a band
+ * @property {[seconds: number | null, phase?: import('./render-client.js').HangPhase]} hang a frame has gone that long without finishing a band
+ *   ('compiling': a program's first draw, which compiles it on SwiftShader)
  *   (render-client.js's watchdog); null when drawing goes on again
  */
 

@@ -52,6 +52,11 @@ export class FrameLoop {
     return { width: this.last?.width ?? 0, height: this.last?.height ?? 0 };
   }
 
+  /** Whether a frame is under way. */
+  get busy() {
+    return this._drawing !== null;
+  }
+
   /** Resolves once no frame is under way (whatever its outcome). */
   async idle() {
     while (this._drawing) await this._drawing.catch(() => {});
@@ -112,10 +117,10 @@ export class FrameLoop {
     const { width, height } = app.canvasSize.target();
     this._dirty = false;
     const continued = this.running && this._lastDrawnAt !== null;
+    const run = app.inputs.run;
     const frame = app.inputs.beginFrame(width, height, now);
     // the keyboard texture goes to the worker (and is uploaded) only for a shader that reads it
     const inputs = app.readsKeyboard ? { ...frame, keyboard: app.keyboard.data.slice() } : frame;
-    const running = app.compiles.running;
     this.progress = { y: 0, height, bands: 0 };
     const drawing = app.gpu.ask('frame', { inputs, readBack });
     this._drawing = drawing;
@@ -128,13 +133,22 @@ export class FrameLoop {
         this.progress = null;
       }
     }
+    if (run !== app.inputs.run) {
+      // The clock was restarted while this frame was drawn (Restart, a new shader): its iFrame
+      // and iTime are the run before's, and a buffer cleared meanwhile was drawn half over. It is
+      // not shown; the new run's iFrame 0 is drawn in its place.
+      drawn.bitmap.close();
+      return this.draw(performance.now(), readBack);
+    }
     this.show(drawn.bitmap);
     this.last = frame;
-    app.inputs.endFrame();
+    app.inputs.endFrame(run);
     // "pressed this frame" is over: a shader that reads it is drawn once more without it
     if (app.keyboard.endFrame() && app.readsKeyboard) this.request();
     this.count++;
-    this.lastFinished = running;
+    // the shader the worker drew it with: a compile that landed while it was drawn started the
+    // frame again with the new program (gpu/protocol.js)
+    this.lastFinished = app.compiles.versionOf(drawn.program) ?? this.lastFinished;
     // the clock when the frame was drawn, not when it was due: on a slow GPU the animation
     // frames' timestamps run ahead of the drawing
     const drawnAt = performance.now();

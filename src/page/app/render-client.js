@@ -7,14 +7,18 @@
 // in the app.
 //
 // The watchdog: the worker says when it hands a band to the GPU and when the GPU has finished
-// it. A band still unfinished after HANG_AFTER_MS means the shader may never finish (an endless
-// loop, or far too much work for one band): 'hang' is emitted with the seconds, and with null
-// once the band ends after all. (A compile is not watched: it is the worker's own work, and one
-// waiting for the GPU waits behind a band, which is.)
+// it. A band still unfinished after TIMEOUTS.hangMs means the shader may never finish (an
+// endless loop, or far too much work for one band): 'hang' is emitted with the seconds, and
+// with null once the band ends after all. A program's first draw is where SwiftShader compiles
+// it (render-worker.js draws one quad of it as a band of its own, marked compiling): that band is
+// reported as compiling (a large shader takes seconds), and as a hang only after
+// TIMEOUTS.compileHangMs. (The compile request itself, which links, is not watched: it is the
+// worker's own work, and one waiting for the GPU waits behind a band, which is.)
 
 import { Emitter } from './events.js';
 import { fromWire, transferables } from '../gpu/protocol.js';
 import { WebGL2UnavailableError } from '../gpu/errors.js';
+import { TIMEOUTS } from '../timeouts.js';
 
 /** @typedef {import('../gpu/protocol.js').Requests} Requests */
 /** @typedef {import('../gpu/protocol.js').Commands} Commands */
@@ -26,16 +30,15 @@ import { WebGL2UnavailableError } from '../gpu/errors.js';
  * @typedef {object} ClientEvents
  * @property {[band: Events['band']]} band the GPU finished a band (with a bitmap now and then)
  * @property {[lost: boolean]} context the worker's context was lost (true) or restored (false)
- * @property {[seconds: number | null]} hang a band has gone that long unfinished; null when bands come again
+ * @property {[seconds: number | null, phase?: HangPhase]} hang a band has gone that long
+ *   unfinished; null when bands come again
  */
 
-/** A band unfinished for this long: the shader may never finish. A band is sized to take ~0.1 s
- * (band-planner.js); only a shader far heavier than its first band, or one that never ends,
- * holds the GPU this long. */
-export const HANG_AFTER_MS = 5000;
-/** A worker that has not said whether it has a context by then has failed to start (a script
- * that did not load, a browser that cannot run module workers). */
-const START_TIMEOUT_MS = 20000;
+/**
+ * What a band that has gone long unfinished is doing: 'compiling' (a program's first draw, not
+ * yet past TIMEOUTS.compileHangMs) or 'drawing' (it may never finish).
+ * @typedef {'compiling' | 'drawing'} HangPhase
+ */
 /** How often the watchdog looks. */
 const WATCH_EVERY_MS = 250;
 
@@ -66,7 +69,10 @@ export class RenderClient extends Emitter {
     this._pending = new Map();
     /** performance.now() when the band the GPU is drawing was handed to it; null when none is. @type {number | null} */
     this._bandSince = null;
-    this._hung = false;
+    /** Whether the band the GPU is drawing is a program's first draw (it compiles). */
+    this._bandCompiling = false;
+    /** What the last 'hang' said (null: no band has gone long unfinished). @type {HangPhase | null} */
+    this._hung = null;
     this._watch = 0;
     /** Settles the worker's start. @type {{resolve: () => void, reject: (error: Error) => void} | null} */
     this._started = null;
@@ -86,8 +92,8 @@ export class RenderClient extends Emitter {
     };
     this.tell('init', {});
     const timer = window.setTimeout(
-      () => this._started?.reject(new Error(`the render worker did not start within ${START_TIMEOUT_MS / 1000} s`)),
-      START_TIMEOUT_MS,
+      () => this._started?.reject(new Error(`the render worker did not start within ${TIMEOUTS.workerStartMs / 1000} s`)),
+      TIMEOUTS.workerStartMs,
     );
     try {
       await started;
@@ -136,6 +142,7 @@ export class RenderClient extends Emitter {
       this.emit('context', params.lost);
     } else if (type === 'bandStarted') {
       this._bandSince = performance.now();
+      this._bandCompiling = params.compiling;
     } else if (type === 'band') {
       this._bandEnded();
       this.emit('band', params);
@@ -177,19 +184,21 @@ export class RenderClient extends Emitter {
 
   _recover() {
     if (!this._hung) return;
-    this._hung = false;
+    this._hung = null;
     this.emit('hang', null);
   }
 
   _checkHang() {
     if (this._bandSince === null || this.contextLost) return;
     const quiet = performance.now() - this._bandSince;
-    if (quiet < HANG_AFTER_MS) return;
-    this._hung = true;
-    this.emit('hang', quiet / 1000);
+    if (quiet < TIMEOUTS.hangMs) return;
+    /** @type {HangPhase} */
+    const phase = this._bandCompiling && quiet < TIMEOUTS.compileHangMs ? 'compiling' : 'drawing';
+    this._hung = phase;
+    this.emit('hang', quiet / 1000, phase);
   }
 
-  /** Whether a band has been drawing for HANG_AFTER_MS. */
+  /** Whether a band has gone TIMEOUTS.hangMs unfinished, and what it is doing then (null: none has). */
   get hung() {
     return this._hung;
   }

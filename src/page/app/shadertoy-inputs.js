@@ -9,7 +9,8 @@
 // The clock runs at `speed` times real time: iTime advances by iTimeDelta each frame, and
 // iTimeDelta is that step (so a shader that integrates iTimeDelta agrees with iTime); iFrameRate
 // is the real rate at which frames are drawn. iFrame counts drawn frames from 0 (restart() sets
-// it and iTime back to 0).
+// it and iTime back to 0, and starts a new run of the clock: a frame begun in the run before is
+// not counted when it lands, so the next frame drawn is the new run's iFrame 0).
 
 import { FIRST_FRAME_UNIFORMS } from '../../shadertoy/header.js';
 
@@ -36,6 +37,8 @@ export class ShadertoyInputs {
     this.speed = 1;
     this.playing = true;
     this.frame = 0;
+    /** Which run of the clock this is: restart() starts another. */
+    this.run = 0;
     this.delta = NOMINAL_DELTA;
     this.frameRate = NOMINAL_RATE;
     this._lastNow = null;
@@ -60,6 +63,7 @@ export class ShadertoyInputs {
   restart() {
     this.time = 0;
     this.frame = 0;
+    this.run++;
     this._lastNow = null;
   }
 
@@ -179,7 +183,13 @@ export class ShadertoyInputs {
     };
   }
 
-  endFrame() {
+  /**
+   * A frame begun in run `run` of the clock is drawn: the next one is the frame after it, unless
+   * the clock was restarted meanwhile.
+   * @param {number} [run]
+   */
+  endFrame(run = this.run) {
+    if (run !== this.run) return;
     this.frame++;
     this._mouse.clicked = false;
   }

@@ -37,6 +37,7 @@ import { ShaderCompileError, WebGL2UnavailableError } from './errors.js';
  * @property {Uint8Array | null} pixels RGBA8, rows top to bottom, alpha 1, when asked for (readBack)
  * @property {number[]} gpuTimes GPU times (ms) of frames whose timer queries came in with this one
  *   (gpu-timer.js; empty where the browser does not measure them)
+ * @property {number} program the `serial` of the compile it was drawn with
  */
 
 /**
@@ -47,9 +48,10 @@ import { ShaderCompileError, WebGL2UnavailableError } from './errors.js';
 /**
  * Requests: name → [what the page sends, what the reply holds].
  * @typedef {object} Requests
- * @property {[{project: MultipassShader, hostBlock: string, fileName: string}, null]} compile every
+ * @property {[{project: MultipassShader, hostBlock: string, fileName: string, serial: number}, null]} compile every
  *   pass of a shader, with `hostBlock` after Shadertoy's header; a failure is a ShaderCompileError
- *   and the last shader that compiled keeps running
+ *   and the last shader that compiled keeps running; `serial` numbers the page's compiles (each
+ *   drawn frame says which it was drawn with), and one that lands after a later one is not drawn
  * @property {[{inputs: FrameInputs, readBack: boolean}, DrawnFrame]} frame a frame for the page,
  *   drawn band by band; a newer frame replaces one that has not started
  * @property {[{inputs: FrameInputs, width: number, height: number, allPasses: boolean, program?: 'aa-pixels'}, Uint8Array]} capture
@@ -88,10 +90,12 @@ import { ShaderCompileError, WebGL2UnavailableError } from './errors.js';
  * @property {{name: string, message: string}} failed no context (name 'WebGL2UnavailableError')
  * @property {{lost: boolean}} context the context was lost (true) or restored (false); a restored
  *   context has no shader: the page compiles again
- * @property {{}} bandStarted a band went to the GPU
- * @property {{kind: 'frame' | 'capture' | 'probe', y: number, height: number, bitmap: ImageBitmap | null}} band
- *   the GPU finished a band of a frame or a capture (or a probe's draws), `y` rows of `height`
- *   done (the last band too); now and then with a bitmap of a frame as far as it got
+ * @property {{compiling: boolean}} bandStarted a band went to the GPU (`compiling`: a new
+ *   program's first draw, one quad, in which SwiftShader compiles it: render-worker.js's pump)
+ * @property {{kind: 'frame' | 'capture' | 'probe' | 'compile', y: number, height: number, bitmap: ImageBitmap | null}} band
+ *   the GPU finished a band of a frame or a capture (or a probe's draws, or a compiling band),
+ *   `y` rows of `height` done (the last band too); now and then with a bitmap of a frame as far
+ *   as it got
  */
 
 /**

@@ -49,8 +49,11 @@ const planner = new BandPlanner();
 let job = null;
 /** Jobs waiting for the one under way. @type {Job[]} */
 const waiting = [];
-/** The band the GPU is drawing. @type {{sync: WebGLSync, rows: number, started: number} | null} */
+/** The band the GPU is drawing (`warmUp`: a new program's first quad, see pump; `compiling`: the
+ * watchdog is told that it includes a compile). @type {{sync: WebGLSync, rows: number, started: number, warmUp: boolean} | null} */
 let band = null;
+/** The programs (materials) drawn at least once since they compiled. @type {WeakSet<object>} */
+const drawnPrograms = new WeakSet();
 let lastPresent = 0;
 /** WEBGL_lose_context, kept from the loss it caused for the restore. @type {WEBGL_lose_context | null} */
 let loseContext = null;
@@ -105,22 +108,39 @@ function pump() {
     renderer.gpuTimer.begin();
     if (job.inputs.keyboard) renderer.setKeyboard(job.inputs.keyboard);
   }
-  const rows = planner.rows(job.width, job.height - job.y);
   writeUniforms(renderer.uniforms, job.inputs, { width: job.width, height: job.height });
   const drawn = job.program === 'aa-pixels' ? renderer.probe.mainImageAt(0, 0) : step;
   const target = renderer.beginStep(drawn, job.width, job.height) ?? job.target;
+  // SwiftShader turns a program into machine code on its first draw, not when it links (the
+  // raytracer's torus scene: 22 ms to link, 3.5 s for its first 2×2 quad, 2 ms for the next).
+  // So a program's first draw is one quad of the band about to be drawn, a band of its own that
+  // the watchdog knows as compiling (render-client.js) and the planner does not time: the
+  // compile is neither the shader's cost per pixel nor a draw that hangs. The band drawn next
+  // covers the quad again with the same inputs, so the frame's pixels are the same.
+  if (!drawnPrograms.has(drawn.material)) {
+    drawnPrograms.add(drawn.material);
+    renderer.drawRegion(target, 0, job.y, Math.min(2, job.width), Math.min(2, job.height - job.y));
+    startBand(0, { warmUp: true, compiling: true });
+    return;
+  }
+  const rows = planner.rows(job.width, job.height - job.y);
   renderer.drawRows(job.y, job.y + rows, target);
   if (last && job.y + rows >= job.height && job.kind === 'frame') renderer.gpuTimer.end();
   startBand(rows);
 }
 
-/** The GPU has the band's draws: watch for its end. @param {number} rows */
-function startBand(rows) {
+/**
+ * The GPU has the band's draws: watch for its end.
+ * @param {number} rows rows of the job it draws (0 for a warm-up)
+ * @param {{warmUp?: boolean, compiling?: boolean}} [options] warmUp: a new program's first
+ *   quad (pump); compiling: the band includes a program's first draw
+ */
+function startBand(rows, { warmUp = false, compiling = false } = {}) {
   const gl = renderer.gl;
   const sync = gl.fenceSync(gl.SYNC_GPU_COMMANDS_COMPLETE, 0);
   gl.flush();
-  band = { sync, rows, started: performance.now() };
-  tell('bandStarted', {});
+  band = { sync, rows, started: performance.now(), warmUp };
+  tell('bandStarted', { compiling });
   setTimeout(poll, POLL_MS);
 }
 
@@ -140,7 +160,11 @@ function startProbe(probe) {
   }
   writeUniforms(renderer.uniforms, lastFrame);
   renderer.probe.draw(x, y, width, height);
-  startBand(1);
+  // the path probe's first draw compiles it (pump): the watchdog is told so
+  const material = renderer.probe.step?.material;
+  const compiling = Boolean(material) && !drawnPrograms.has(material);
+  if (compiling) drawnPrograms.add(material);
+  startBand(1, { compiling });
 }
 
 function poll() {
@@ -151,9 +175,12 @@ function poll() {
     return;
   }
   gl.deleteSync(band.sync);
-  const { rows, started } = band;
+  const { rows, started, warmUp } = band;
   band = null;
-  bandDone(rows, performance.now() - started);
+  if (warmUp) {
+    if (job) job.redo = false; // it drew no rows: a change meanwhile has nothing to undo
+    tell('band', { kind: 'compile', y: job?.y ?? 0, height: job?.height ?? 0, bitmap: null });
+  } else bandDone(rows, performance.now() - started);
   pump();
 }
 
@@ -190,7 +217,7 @@ function bandDone(rows, ms) {
     lastFrame = finished.inputs;
     const pixels = finished.readBack ? readOpaque(finished.target, finished.width, finished.height) : null;
     /** @type {DrawnFrame} */
-    const drawn = { bitmap: renderer.present(), pixels, gpuTimes: renderer.gpuTimer.poll() };
+    const drawn = { bitmap: renderer.present(), pixels, gpuTimes: renderer.gpuTimer.poll(), program: renderer.installed };
     finished.resolve(drawn);
   } else {
     const pixels = finished.float
@@ -247,9 +274,9 @@ function start() {
 const tell = serve(
   /** @type {any} */ (self),
   {
-    async compile({ project, hostBlock, fileName }) {
+    async compile({ project, hostBlock, fileName, serial }) {
       try {
-        await renderer.compile(project, hostBlock, fileName);
+        await renderer.compile(project, hostBlock, fileName, serial);
         changed();
         return null;
       } finally {

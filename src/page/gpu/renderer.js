@@ -111,8 +111,8 @@ export class ShaderRenderer {
     /** The sampler objects of the pass being drawn (channel-bindings.js). */
     this.samplers = new ChannelSamplers(gl, this.three);
 
-    this._serial = 0; // compiles started
-    this._installed = 0; // the compile on screen
+    /** Which compile is on screen: the page's number for it (compile()'s `serial`), 0 before any. */
+    this.installed = 0;
     /** The pixel inspector's reads, and the path probe (probe.js). */
     this.probe = new PixelProbe(this);
   }
@@ -149,12 +149,13 @@ export class ShaderRenderer {
    * @param {import('../../shadertoy/multipass.js').MultipassShader} project
    * @param {string} hostBlock
    * @param {string} [fileName]
+   * @param {number} [serial] the page's number for this compile (it grows with each one asked
+   *   for): a compile that finishes after a newer one is not drawn
    */
-  async compile(project, hostBlock, fileName = 'shader') {
-    const serial = ++this._serial;
+  async compile(project, hostBlock, fileName = 'shader', serial = this.installed + 1) {
     const steps = await this.compiler.compileSteps(project, hostBlock, fileName, () => this.passUniforms());
-    if (serial < this._installed) return; // a newer compile got in first
-    this._installed = serial;
+    if (serial < this.installed) return; // a newer compile got in first
+    this.installed = serial;
     this.steps = steps;
     this.mesh.material = steps[steps.length - 1].material;
     /** @type {Map<string, import('../../shadertoy/multipass.js').Sampler>} */

@@ -4,12 +4,14 @@
 // or the page is reloaded (the way out on SwiftShader, where the endless draw goes on until the
 // browser closes), the page runs that last shader instead, and says so; the text that hung is
 // kept in the note, to be put back into the editor (not run) when the user asks. A frame of it
-// that does finish clears the note: it was only slow.
+// that does finish clears the note: it was only slow. A shader whose first draw is still
+// compiling (SwiftShader compiles on it: render-client.js) is noted too, as compiling: a reload
+// in the middle of a long compile says so, and offers to run it anyway.
 
 const KEY = 'shadertoy-runner.hung';
 
 /** @typedef {import('../app/app.js').ShaderVersion} ShaderVersion */
-/** @typedef {{key: string, name: string, project: import('../../shadertoy/multipass.js').MultipassShader, back: ShaderVersion | null}} HangNote */
+/** @typedef {{key: string, name: string, project: import('../../shadertoy/multipass.js').MultipassShader, version?: ShaderVersion, back: ShaderVersion | null, phase?: import('../app/render-client.js').HangPhase, seconds?: number}} HangNote */
 
 /**
  * A short fingerprint of a shader's tabs and control values (FNV-1a, 32 bits, over their JSON):
@@ -42,14 +44,15 @@ export class HangGuard {
 
   /**
    * The shader that is drawing now may never finish.
-   * @param {{project: import('../../shadertoy/multipass.js').MultipassShader, values?: Record<string, any>, name: string}} hung
+   * @param {ShaderVersion} hung
    * @param {ShaderVersion | null} last the last shader that finished a frame
+   * @param {{phase?: import('../app/render-client.js').HangPhase, seconds?: number}} [how] still compiling, or drawing; for how long
    */
-  record(hung, last) {
+  record(hung, last, { phase = 'drawing', seconds } = {}) {
     const key = projectKey(hung.project, hung.values);
     const back = last && projectKey(last.project, last.values) !== key ? last : null;
     /** @type {HangNote} */
-    const note = { key, name: hung.name, project: hung.project, back };
+    const note = { key, name: hung.name, project: hung.project, version: hung, back, phase, seconds };
     try {
       this.storage?.setItem(KEY, JSON.stringify(note));
     } catch {
@@ -81,8 +84,8 @@ export class HangGuard {
  */
 export function watchHangs(app, guard) {
   app.hangGuard = guard;
-  app.on('hang', (_, seconds) => {
-    if (seconds !== null) guard.record(app.version(), app.frames.lastFinished);
+  app.on('hang', (_, seconds, phase) => {
+    if (seconds !== null) guard.record(app.version(), app.frames.lastFinished, { phase, seconds });
   });
   app.on('drawn', () => {
     const drawn = app.frames.lastFinished; // the shader this frame was drawn with

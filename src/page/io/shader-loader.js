@@ -1,8 +1,10 @@
 // Getting a shader's text: from a URL the page's own server serves (?shader=, and a reload when
 // the dev server says the file changed), or from a file dropped on the page. And an image for a
 // channel, from a URL or a file. A URL is of the page's own server, never another origin (not
-// even through a redirect), and a load that gets no answer ends after LOAD_TIMEOUT_MS with a
+// even through a redirect), and a load that gets no answer ends after TIMEOUTS.loadMs with a
 // message rather than waiting for ever.
+
+import { TIMEOUTS } from '../timeouts.js';
 
 /** The name a shader goes by in messages and downloads: its URL's last path segment. */
 export function shaderName(url) {
@@ -15,17 +17,8 @@ export function shaderName(url) {
 }
 
 /**
- * How long a load from the page's server (a ?shader= file, an image for a channel) may take
- * before the page gives up and says so. A file of the page's own server arrives in well under a
- * second (the dev server transforms neither shaders nor images); 15 s leaves room for a slow
- * network or a server waking up, and ends what would otherwise be a black page, with no message,
- * for as long as the server keeps the request open.
- */
-export const LOAD_TIMEOUT_MS = 15_000;
-
-/**
  * @typedef {object} LoadOptions
- * @property {number} [timeoutMs] give up after this long (default LOAD_TIMEOUT_MS; tests shorten it)
+ * @property {number} [timeoutMs] give up after this long (default TIMEOUTS.loadMs: ../timeouts.js)
  */
 
 const ownOrigin = () => `only files served by this page's server (${location.origin}) can be loaded`;
@@ -70,12 +63,12 @@ const NO_SUCH_FILE = 'no such file (the server answered with a web page)';
 /**
  * Fetches a shader's text from the page's own server. Rejects with a readable reason: another
  * origin (asked for, or reached by a redirect), a network failure, no answer within
- * LOAD_TIMEOUT_MS, an HTTP error, or an HTML page.
+ * TIMEOUTS.loadMs, an HTTP error, or an HTML page.
  * @param {string} url
  * @param {LoadOptions} [options]
  * @returns {Promise<string>}
  */
-export async function fetchShader(url, { timeoutMs = LOAD_TIMEOUT_MS } = {}) {
+export async function fetchShader(url, { timeoutMs = TIMEOUTS.loadMs } = {}) {
   const { response, body } = await fetchOwn(url, { accept: 'text/plain, */*;q=0.1', timeoutMs }, (r) => r.text());
   if (isWebPage(response, body)) throw new Error(NO_SUCH_FILE);
   return body;
@@ -88,12 +81,12 @@ export async function fetchShader(url, { timeoutMs = LOAD_TIMEOUT_MS } = {}) {
  * first), as Shadertoy uploads a channel: texture(iChannelN, vec2(u, 1)) is the image's top.
  * WebGL ignores UNPACK_FLIP_Y_WEBGL for an ImageBitmap, and three.js skips texture.flipY for
  * one, so the flip has to be in the bitmap.
- * A URL must be of the page's own server, and not redirect elsewhere; it gets LOAD_TIMEOUT_MS.
+ * A URL must be of the page's own server, and not redirect elsewhere; it gets TIMEOUTS.loadMs.
  * @param {string | Blob} source a URL, or a File or Blob (a dropped or chosen file)
  * @param {LoadOptions} [options]
  * @returns {Promise<ImageBitmap>} rejects with a readable reason when it cannot be had or is not an image
  */
-export async function loadImage(source, { timeoutMs = LOAD_TIMEOUT_MS } = {}) {
+export async function loadImage(source, { timeoutMs = TIMEOUTS.loadMs } = {}) {
   const name = typeof source === 'string' ? source : 'name' in source ? source.name : 'the image';
   let blob = source;
   if (typeof source === 'string') {

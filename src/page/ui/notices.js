@@ -212,27 +212,34 @@ export function showAppOnPage(app, overlay) {
 
 /**
  * The watchdog's message (render-client.js): a frame that has gone seconds without progress may
- * never finish. It offers to go back to the last shader that finished a frame; it goes away by
- * itself when the drawing goes on. data-hung="true" on <html> while it shows.
+ * never finish; a program's first draw that takes long is still compiling, which SwiftShader
+ * does on that draw. Either offers to go back to the last shader that finished a frame; it goes
+ * away by itself when the drawing goes on. data-hung="true" on <html> while a frame may never
+ * finish, "compiling" while a first draw compiles.
  * @param {RaytracerApp} app
  * @param {Overlay} overlay
  */
 function showWatchdog(app, overlay) {
   const root = document.documentElement.dataset;
-  app.on('hang', (_, seconds) => {
+  app.on('hang', (_, seconds, phase = 'drawing') => {
     if (seconds === null) {
       if (root.hung) overlay.hide();
       delete root.hung;
       return;
     }
-    const first = !root.hung;
-    root.hung = 'true';
-    if (!first) return; // the message stays as it is; the seconds are in its text from the start
+    const shown = phase === 'drawing' ? 'true' : 'compiling';
+    if (root.hung === shown) return; // the message stays as it is; the seconds are in its text from the start
+    root.hung = shown;
     const back = app.frames.lastFinished;
+    const s = Math.round(seconds);
     const detail = [
-      `${app.fileName} has been drawing one frame for ${Math.round(seconds)} s without finishing a band of it: it may never finish (an endless loop, or far too much work per pixel).`,
-      'On a real GPU the browser resets the GPU after several seconds of this, and the page comes back with the last shader that finished a frame. SwiftShader (the CPU renderer) has no such reset: the draw goes on until the browser is closed.',
-      back ? `Going back runs ${back.name} again; the text that hung stays in the editor's undo history (Ctrl+Z).` : '',
+      phase === 'compiling'
+        ? `SwiftShader (the CPU renderer) turns a shader into machine code when it first draws it, and ${app.fileName} has been compiling for ${s} s. A large shader takes a while; the first frame follows.`
+        : `${app.fileName} has been drawing one frame for ${s} s without finishing a band of it: it may never finish (an endless loop, or far too much work per pixel).`,
+      phase === 'compiling'
+        ? ''
+        : 'On a real GPU the browser resets the GPU after several seconds of this, and the page comes back with the last shader that finished a frame. SwiftShader (the CPU renderer) has no such reset: the draw goes on until the browser is closed.',
+      back ? `Going back runs ${back.name} again; the text of ${app.fileName} stays in the editor's undo history (Ctrl+Z).` : '',
     ]
       .filter(Boolean)
       .join('\n');
@@ -253,6 +260,6 @@ function showWatchdog(app, overlay) {
           },
         ]
       : [];
-    overlay.showActions(`${app.fileName} may never finish`, detail, actions);
+    overlay.showActions(phase === 'compiling' ? `Compiling ${app.fileName}…` : `${app.fileName} may never finish`, detail, actions);
   });
 }

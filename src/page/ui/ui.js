@@ -100,7 +100,13 @@ export function installUi(app, { builtinSource }) {
   const editor = new Editor(/** @type {HTMLElement} */ (document.getElementById('editor')), {
     apply: (project, pasted) =>
       app
-        .setProject(project, { origin: 'editor', name: kept.nameFor(serializeProject(project), pasted), info: app.projectInfo })
+        // an edit goes on with the shader's clock; a paste over everything is a new shader
+        .setProject(project, {
+          origin: 'editor',
+          name: kept.nameFor(serializeProject(project), pasted),
+          info: app.projectInfo,
+          continues: !pasted,
+        })
         .catch(() => {}),
     pasteJson: (text) => {
       // a Shadertoy export pasted in: that shader, by its own name
