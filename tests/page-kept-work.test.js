@@ -141,3 +141,63 @@ describe('a link opens what it names', () => {
     });
   });
 });
+
+describe('kept edits that do not compile, and notes with buttons (issue 24, items 11-12)', () => {
+  test('a reload with kept edits that do not compile runs the file, says so, and runs the edits once they compile', async () => {
+    await withPage(async ({ page, goto }) => {
+      await freshPage(page, goto, `?${SIZE}`);
+      await typeInEditor(page, '\nfloat broken = ;', 'end'); // kept as typed, mid-work
+      await page.waitForFunction(() => window.raytracer.editorSource().includes('broken = ;'), { polling: 50 });
+      await page.reload({ waitUntil: 'load' });
+      await page.waitForFunction(() => window.raytracer, { polling: 50 });
+      const outcome = await page.evaluate(() =>
+        window.raytracer.ready.then(
+          () => 'drawn',
+          (e) => `rejected: ${e.message}`,
+        ),
+      );
+      expect(outcome, 'the file draws while the edits do not compile').toBe('drawn');
+      const { data } = await page.evaluate(() => window.raytracer.readPixels());
+      expect(Math.max(...Buffer.from(data, 'base64')), 'not a black canvas').toBeGreaterThan(100);
+      expect(await editorText(page), 'the edits are in the editor').toContain('broken = ;');
+      const note = await page.$eval('#restored-note', (n) => n.textContent);
+      expect(note).toMatch(/do not compile yet: the picture is shaders\/raytrace\.glsl as the file has it/);
+      expect(await page.$eval('#overlay', (o) => o.textContent)).toMatch(/error/i);
+
+      // fixed: the edits run, and the note no longer says the file stands in
+      const compiled = (await info(page)).compiled;
+      await typeInEditor(page, '\n// fixed', 'end');
+      await page.evaluate(() => {
+        const text = window.raytracer.editorSource().replace('float broken = ;', 'float broken = 1.0;');
+        return window.raytracer.setSource(text);
+      });
+      await page.waitForFunction((n) => window.raytracer.info().compiled > n, { polling: 50 }, compiled);
+      const after = await page.$eval('#notes', (n) => n.textContent);
+      expect(after, 'the edited text is not the one restored: its note went').not.toMatch(/do not compile|Restored/);
+      expect((await info(page)).fileName).toBe('raytrace.glsl (edited)');
+    });
+  });
+
+  test('notes stack: the kept-work note and a note on values lie apart, and every button can be clicked', async () => {
+    await withPage(async ({ page, goto }) => {
+      await page.setViewport({ width: 800, height: 600 });
+      await freshPage(page, goto, `?${SIZE}`);
+      await editBuiltin(page);
+      await goto(`?${SIZE}&NO_SUCH=1&BOUNCES=2.5&CAMERA_ORBIT=400,0`); // an offer, and a note of three lines
+      await page.waitForSelector('#kept-offer', { visible: true });
+      const layout = await page.evaluate(() => {
+        const box = (/** @type {Element} */ e) => e.getBoundingClientRect().toJSON();
+        const notes = ['#kept-offer', '#value-notes'].map((s) => box(/** @type {Element} */ (document.querySelector(s))));
+        const buttons = [...document.querySelectorAll('#kept-offer button, #value-notes button')].map((b) => {
+          const r = b.getBoundingClientRect();
+          return document.elementFromPoint(r.x + r.width / 2, r.y + r.height / 2) === b ? 'clickable' : b.textContent;
+        });
+        return { notes, buttons };
+      });
+      const [offer, values] = layout.notes;
+      const apart = offer.bottom <= values.top || values.bottom <= offer.top || offer.right <= values.left || values.right <= offer.left;
+      expect(apart, `boxes ${JSON.stringify(layout.notes)}`).toBe(true);
+      expect(layout.buttons).toEqual(layout.buttons.map(() => 'clickable'));
+    });
+  });
+});

@@ -7,7 +7,7 @@ import { RaytracerApp } from './app/app.js';
 import { installAutomation, installFailedAutomation } from './automation.js';
 import { Overlay } from './ui/overlay.js';
 import { installUi } from './ui/ui.js';
-import { showAppOnPage, showKeptOffer, showRestoredNote, showStartupFailure, showValueNotes } from './ui/notices.js';
+import { sayOnNote, showAppOnPage, showKeptOffer, showRestoredNote, showStartupFailure, showValueNotes } from './ui/notices.js';
 import { CHANNEL_PARAMS, parseUrlParams } from './io/url-params.js';
 import { fetchShader, shaderName } from './io/shader-loader.js';
 import { HangGuard, watchHangs } from './io/hang-guard.js';
@@ -98,10 +98,12 @@ function reopened() {
  * @param {{kept: import('./io/kept-source.js').KeptSource}} ui the page's kept edits
  * @param {string | undefined} shader the ?shader= parameter
  * @param {FirstSource} first what the page loaded
+ * @returns {(() => ShaderVersion) | null} edits restored: the file, to run while they do not compile
  */
 function keptWork(app, ui, shader, { project, from }) {
   const stage = /** @type {HTMLElement} */ (document.getElementById('stage'));
   const file = { name: from.name, source: serializeProject(project) };
+  const own = app.version(); // the file as it is, before any edit of it
   const kept = ui.kept.open(from.origin === 'editor' ? sharedKey(file) : (shader ?? BUILTIN_NAME), file);
   /** @param {{name: string, source: string}} edits */
   const load = (edits) =>
@@ -114,11 +116,20 @@ function keptWork(app, ui, shader, { project, from }) {
     const stale = (/** @type {string} */ text) => text !== kept.source && note.remove();
     ui.kept.watch(stale);
     app.on('source', () => stale(serializeProject(app.project)));
-    return;
+    // edits that do not compile (kept mid-work): the file runs until they do, and the note says so
+    app.on('compile', (error) => {
+      const standing = error && app.compiles.running?.load === own.load;
+      sayOnNote(note, standing ? `They do not compile yet: the picture is ${from.name} as the file has it, until they do.` : null);
+    });
+    // with the values the page runs (a link's): those of the file's controls
+    return () => ({
+      ...own,
+      values: Object.fromEntries(Object.keys(own.values ?? {}).flatMap((name) => (name in app.values ? [[name, app.values[name]]] : []))),
+    });
   }
   if (kept) ui.kept.setAside();
   const earlier = ui.kept.earlier();
-  if (!earlier) return;
+  if (!earlier) return null;
   showKeptOffer(stage, earlier.name, {
     open: () => {
       ui.kept.forgetEarlier();
@@ -127,6 +138,7 @@ function keptWork(app, ui, shader, { project, from }) {
     },
     discard: () => ui.kept.forgetEarlier(),
   });
+  return null;
 }
 
 /**
@@ -210,11 +222,11 @@ async function start() {
   app.loading = first.then((loaded) => {
     if (loaded.notice) noticeAfterCompile(loaded.notice);
     app.loadProject(loaded.project, loaded.from);
-    keptWork(app, ui, params.shader, loaded);
+    const standIn = keptWork(app, ui, params.shader, loaded);
     const { warnings } = app.applyControls(params.controls, 'URL');
     avoidHungShader(app, noticeAfterCompile); // after the link's values: a value can be what hung
     showValueNotes(stage, [...params.warnings, ...warnings].map(plainWarning));
-    app.compiles.compile().catch(() => {}); // shown on the page; `ready` rejects
+    app.compiles.compile({ orElse: standIn?.() }).catch(() => {}); // shown on the page; `ready` rejects
     app.frames.request();
   });
   // A second link opened in this tab that differs only in its fragment loads no page: its

@@ -335,3 +335,17 @@ export function parseConstants(source) {
   });
   return constants;
 }
+
+/**
+ * A shader's controls: those of its Common tab and of each pass, the first of each name. Throws
+ * when a control block cannot be read.
+ * @param {import('./multipass.js').MultipassShader} project
+ * @returns {Control[]}
+ */
+export function projectControls(project) {
+  /** @type {Control[]} */
+  const controls = [];
+  for (const text of [project.common ?? '', ...project.passes.map((pass) => pass.code)])
+    for (const control of parseControls(text)) if (!controls.some((c) => c.name === control.name)) controls.push(control);
+  return controls;
+}

@@ -10,7 +10,7 @@
 // compile's outcome, a lost context, each frame drawn) it emits as events (events.js), and the
 // page shows them (ui/).
 
-import { parseControls } from '../../shadertoy/controls.js';
+import { projectControls } from '../../shadertoy/controls.js';
 import { KeyboardState } from '../../shadertoy/keyboard.js';
 import { frameSchedule, singlePass } from '../../shadertoy/multipass.js';
 import { RenderClient } from './render-client.js';
@@ -172,11 +172,10 @@ export class RaytracerApp extends Emitter {
   loadProject(project, from = {}) {
     if (!from.continues) this._loads++;
     /** @type {Control[]} */
-    const controls = [];
+    let controls = [];
     this.notice = null;
     try {
-      for (const text of [project.common ?? '', ...project.passes.map((pass) => pass.code)])
-        for (const control of parseControls(text)) if (!controls.some((c) => c.name === control.name)) controls.push(control);
+      controls = projectControls(project);
     } catch (error) {
       this.notice = `${error.message}\nThe shader runs with its own defaults and no panel controls.`;
     }

@@ -6,6 +6,7 @@
 // goes back to), how many compiles succeeded, and the last one's errors.
 
 import { hostControlBlock } from '../../shadertoy/header.js';
+import { controlDefaults, projectControls } from '../../shadertoy/controls.js';
 
 /** @typedef {import('./app.js').RaytracerApp} RaytracerApp */
 /** @typedef {import('./app.js').ShaderVersion} ShaderVersion */
@@ -56,10 +57,13 @@ export class CompileJob {
 
   /**
    * Compiles the app's shader with its current compile-time values. On success the new shader is
-   * drawn; on failure the error is shown and the last shader that compiled keeps running.
+   * drawn; on failure the error is shown and the last shader that compiled keeps running, or,
+   * when none runs yet, `orElse` (the file a kept edit was made from: the picture is not black
+   * while the edit does not compile).
+   * @param {{orElse?: ShaderVersion | null}} [options]
    * @returns {Promise<void>}
    */
-  compile() {
+  compile({ orElse = null } = {}) {
     const app = this.app;
     if (app.gpu.contextLost) {
       // compiled when the context comes back: this job ends as the compile started then does
@@ -91,17 +95,45 @@ export class CompileJob {
         app.emit('compile', null, fileName);
         app.frames.request();
       },
-      (error) => {
+      async (error) => {
+        if (job !== this.latest) throw error;
+        // the stand-in runs before the failure is told: `ready` rejects only if no shader runs at all
+        if (orElse && !this.running) await this._standIn(orElse).catch(() => {});
         if (job === this.latest) {
           this.errors = error.messages ?? [];
           console.warn(error.message);
-          app.emit('compile', error, fileName); // `ready` rejects if no shader runs at all
+          app.emit('compile', error, fileName);
         }
         throw error;
       },
     );
     this.latest = job;
     return job;
+  }
+
+  /**
+   * Compiles and runs another shader than the app's, as it ran (its control values, live ones
+   * too, as constants: the worker's uniforms are the app's shader's), until the app's compiles.
+   * @param {ShaderVersion} version
+   */
+  async _standIn(version) {
+    const app = this.app;
+    let controls = [];
+    try {
+      controls = projectControls(version.project);
+    } catch {
+      // a block it cannot read: it runs with its own defaults, as loadProject runs it
+    }
+    const values = { ...controlDefaults(controls), ...version.values };
+    const serial = ++this._started;
+    const hostBlock = controls.length ? hostControlBlock(controls, values, values) : '';
+    await app.gpu.ask('compile', { project: version.project, hostBlock, fileName: version.name, serial });
+    if (this.running || serial < this._runningSerial) return; // the app's own shader compiled meanwhile
+    this.running = version;
+    this._runningSerial = serial;
+    this._clockOf = version.load ?? 0;
+    app.startClock();
+    app.frames.request();
   }
 
   /** Resolves when no compile is under way (whatever the outcome). */

@@ -27,7 +27,7 @@ function closeButton(note, label) {
   return close;
 }
 
-/** The column of notes at the top right of the stage (made on first use). @param {HTMLElement} stage */
+/** The column of notes at the top right of the stage (made on first use): they stack, none over another. @param {HTMLElement} stage */
 function notesColumn(stage) {
   let column = document.getElementById('notes');
   if (!column) {
@@ -76,7 +76,7 @@ export const showLoadNotes = (stage, title, lines, kind = 'note') => showNote(st
 export const showValueNotes = (stage, lines) => showNote(stage, 'value-notes', 'Some values were not used as given', lines);
 
 /**
- * A note at the top left of the canvas about kept work, with its buttons, replacing any other.
+ * A note about kept work, with its buttons, replacing any other: the first of the notes.
  * @param {HTMLElement} parent
  * @param {string} id
  * @param {string} text
@@ -95,7 +95,8 @@ function keptWorkNote(parent, id, text, actions, closeLabel) {
     note.append(button);
   }
   note.append(closeButton(note, closeLabel));
-  parent.append(note);
+  // first in the one column of notes: notes stack, none lies over another's buttons
+  notesColumn(parent).prepend(note);
   return note;
 }
 
@@ -116,6 +117,16 @@ export function showRestoredNote(parent, name, discard) {
     [discardEdits],
     'Keep edits and close this note',
   );
+}
+
+/**
+ * Says a second line on a kept-work note (null: takes it away).
+ * @param {HTMLElement} note
+ * @param {string | null} text
+ */
+export function sayOnNote(note, text) {
+  note.querySelector('.note-more')?.remove();
+  if (text) note.querySelector('span')?.after(element('small', { class: 'note-more' }, text));
 }
 
 /**
