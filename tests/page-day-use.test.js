@@ -4,7 +4,19 @@
 // and carrying an edited shader in its fragment; a refused ?shader= said on the page; Fullscreen.
 import { afterAll, describe, expect, test } from 'vitest';
 import { disconnect, openPage } from './harness/page.js';
-import { button, overlayText, pixel, readPixels, recordReadouts, solid, withPage } from './page-helpers.js';
+import {
+  button,
+  editorText,
+  info,
+  overlayText,
+  pixel,
+  readPixels,
+  recordReadouts,
+  solid,
+  typeInEditor,
+  withControl,
+  withPage,
+} from './page-helpers.js';
 
 afterAll(disconnect);
 
@@ -208,6 +220,27 @@ describe('links', () => {
       await page.evaluate((s) => window.raytracer.setSource(s), `// ${noise}\n${solid(1, 2, 3)}`);
       await (await button(page, 'Copy link')).click();
       await page.waitForFunction(() => /too long/i.test(document.getElementById('toast').textContent), { polling: 20 });
+    });
+  });
+
+  test('an edit of the built-in raytracer travels as a patch against it, and opens as the same text', async () => {
+    let link = '';
+    let edited = '';
+    await withPage(async ({ page, goto }) => {
+      await goto('?size=64x36&time=1&SAMPLES=1');
+      await typeInEditor(page, '\n// my edit', 'end');
+      await withControl(page, 'Enter');
+      await page.waitForFunction(() => window.raytracer.info().fileName === 'raytrace.glsl (edited)', { polling: 50 });
+      edited = await editorText(page);
+      link = await page.evaluate(() => window.raytracer.shareUrl());
+    });
+    const url = new URL(link);
+    expect(url.hash).toMatch(/^#patch=[A-Za-z0-9_-]+&base=builtin&hash=[0-9a-f]{8}&name=/);
+    expect(link.length, 'the whole text would be ~34,000 characters').toBeLessThan(2000);
+    await withPage(async ({ page, goto }) => {
+      await goto(url.search + url.hash);
+      expect(await editorText(page)).toBe(edited);
+      expect((await info(page)).fileName).toBe('raytrace.glsl (edited)');
     });
   });
 

@@ -11,7 +11,7 @@ import { sayOnNote, showAppOnPage, showKeptOffer, showRestoredNote, showStartupF
 import { CHANNEL_PARAMS, parseUrlParams } from './io/url-params.js';
 import { fetchShader, shaderName } from './io/shader-loader.js';
 import { HangGuard, watchHangs } from './io/hang-guard.js';
-import { sourceFromHash } from './io/share-link.js';
+import { BUILTIN_BASE, sourceFromHash } from './io/share-link.js';
 import { sharedKey } from './io/kept-source.js';
 import { deserializeProject, serializeProject } from './io/project-files.js';
 import { openShader, readShader } from './io/open-shader.js';
@@ -39,10 +39,13 @@ const builtin = (notice) => ({ project: singlePass(builtinSource), from: { name:
  */
 async function linkedShader(hash) {
   try {
-    const shared = await sourceFromHash(hash);
+    // a patch link's base: the built-in raytracer, or a file the page serves
+    const baseText = async (/** @type {string} */ base) => (base === BUILTIN_BASE ? builtinSource : fetchShader(base));
+    const shared = await sourceFromHash(hash, baseText);
     if (!shared) return null;
     const { project, from } = readShader(shared.source, { name: shared.name, origin: 'editor' });
-    return { project, from: { ...from, name: shared.name } };
+    const notice = shared.note ? { title: `${shared.name}: made against another version of its file`, detail: shared.note } : undefined;
+    return { project, from: { ...from, name: shared.name }, notice };
   } catch (error) {
     console.warn(`The shader in the link's #source= could not be read: ${error.message}`);
     return builtin({

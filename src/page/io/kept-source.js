@@ -18,13 +18,22 @@ const EARLIER = ' (earlier)';
 
 /**
  * The storage key of a shader a link carries in itself (#source=): its name and a hash of its
- * text (FNV-1a, 32 bits), so that each shared shader keeps its own edits.
+ * text, so that each shared shader keeps its own edits.
  * @param {NamedSource} shared
  */
 export function sharedKey({ name, source }) {
+  return `#${name}@${textHash(source)}`;
+}
+
+/**
+ * A text's FNV-1a hash (32 bits) in 8 hex digits: which version of a file a kept edit or a
+ * link's patch was made from. Not a safeguard against tampering, only against another version.
+ * @param {string} text
+ */
+export function textHash(text) {
   let hash = 0x811c9dc5;
-  for (let i = 0; i < source.length; i++) hash = Math.imul(hash ^ source.charCodeAt(i), 0x01000193) >>> 0;
-  return `#${name}@${hash.toString(16).padStart(8, '0')}`;
+  for (let i = 0; i < text.length; i++) hash = Math.imul(hash ^ text.charCodeAt(i), 0x01000193) >>> 0;
+  return hash.toString(16).padStart(8, '0');
 }
 
 export class KeptSource {

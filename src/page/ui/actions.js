@@ -34,8 +34,10 @@ export async function toggleFullscreen(element) {
  * @param {() => void} page.toggleEditor
  * @param {(width: number, height: number) => {width: number, height: number} | null} page.screenshotSize
  *   the size chosen in the panel for a canvas of width × height (null: the canvas's)
+ * @param {() => {base: string, source: string} | null} page.shipped the file the page ships that
+ *   the editor's text is an edit of (a link carries such an edit as a patch against it)
  */
-export function pageActions(app, { stage, toast, activeTab, toggleEditor, screenshotSize }) {
+export function pageActions(app, { stage, toast, activeTab, toggleEditor, screenshotSize, shipped }) {
   /** The editor's tab and its text as the page runs it (the whole file for a single-pass shader). */
   const shownTab = () => {
     const multipass = projectTabs(app.project).length > 1;
@@ -109,7 +111,7 @@ export function pageActions(app, { stage, toast, activeTab, toggleEditor, screen
 
     /** Copies the view's link, saying what it leaves out; a link too long to travel is not copied. */
     async copyLink() {
-      const { url, omitted, tooLong } = await shareLink(app);
+      const { url, omitted, tooLong } = await shareLink(app, shipped());
       if (tooLong) {
         toast(
           `Not copied: the link would be ${url.length} characters, too long for many browsers and apps (over ${MAX_LINK_LENGTH}); share the shader with Download .glsl`,

@@ -12,7 +12,7 @@ import { pageActions } from './actions.js';
 import { showLoadNotes } from './notices.js';
 import { KeptSource } from '../io/kept-source.js';
 import { droppedKind } from '../io/shader-loader.js';
-import { shareLink } from '../io/share-link.js';
+import { BUILTIN_BASE, shareLink } from '../io/share-link.js';
 import { serializeProject, shaderNotes } from '../io/project-files.js';
 import { openShader } from '../io/open-shader.js';
 import { installInspection } from '../inspect/inspection.js';
@@ -63,6 +63,7 @@ export function installUi(app, { builtinSource }) {
     activeTab: () => editor.activeTab,
     toggleEditor: () => editor.toggle(),
     screenshotSize: (width, height) => panel.screenshotSize(width, height),
+    shipped: () => shippedBase(),
   });
   const canvas = /** @type {HTMLCanvasElement} */ (document.getElementById('view'));
   const inspection = installInspection(app, { stage, canvas, toast, builtinSource });
@@ -251,7 +252,19 @@ export function installUi(app, { builtinSource }) {
     }
   });
 
+  /**
+   * The file the page ships that the editor's text is an edit of (the built-in raytracer, or the
+   * ?shader= file), or null (a paste, a dropped file, a link's own shader).
+   * @returns {{base: string, source: string} | null}
+   */
+  function shippedBase() {
+    const base = kept.base;
+    if (!base || kept.pasted || app.origin !== 'editor') return null;
+    if (app.shaderUrl) return base === kept.pageFile ? { base: app.shaderUrl, source: base.source } : null;
+    return base.source === builtinSource ? { base: BUILTIN_BASE, source: builtinSource } : null;
+  }
+
   /** The link that reproduces this view (share-link.js). */
-  const shareUrl = async () => (await shareLink(app)).url;
+  const shareUrl = async () => (await shareLink(app, shippedBase())).url;
   return { toast, toolbar, panel, editor, kept, actions, shareUrl, recording, open, inspection };
 }
