@@ -76,7 +76,7 @@ export class CompareView {
       ),
       this.progress,
       this.figures,
-      legend(),
+      (this.legend = legend()),
     );
     // on the page from the first comparison on (before, it would be one more <progress> there)
     /** The result drawn on the map, and which error. @type {[ComparisonResult, string] | null} */
@@ -105,7 +105,15 @@ export class CompareView {
     this.root.hidden = !running && !result && !error;
     if (!this.root.hidden && !this.root.isConnected) this.stage.append(this.map, this.root);
     this.progress.hidden = !running;
-    this.title.textContent = running ? 'Comparing with float64…' : 'Compared with float64';
+    // a refusal (or a failure) with nothing measured is not a comparison: no map, no map controls
+    const refused = !running && !result && Boolean(error);
+    this.title.textContent = running ? 'Comparing with float64…' : refused ? 'Cannot compare with float64' : 'Compared with float64';
+    this.toggle.hidden = !result;
+    this.hideMap.hidden = !result;
+    this.legend.hidden = !result;
+    // one comparison at a time: another press would only start it again
+    this.again.disabled = Boolean(running);
+    this.again.title = running ? 'A comparison is under way (Cancel stops it)' : 'Compare the frame on the canvas now';
     if (running) {
       this.phase.textContent = running.of ? `${running.phase}: ${running.rows} of ${running.of} rows` : `${running.phase}…`;
       if (running.of) this.bar.value = running.rows / running.of;

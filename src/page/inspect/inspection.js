@@ -18,23 +18,27 @@ import './inspect.css';
 
 /**
  * @param {RaytracerApp} app
- * @param {{stage: HTMLElement, canvas: HTMLCanvasElement, toast: (text: string) => void, builtinSource: string}} page
+ * @param {{stage: HTMLElement, canvas: HTMLCanvasElement, builtinSource: string}} page
  */
-export function installInspection(app, { stage, canvas, toast, builtinSource }) {
+export function installInspection(app, { stage, canvas, builtinSource }) {
   const program = new ProbeProgram(app);
   const reference = new ReferenceClient();
   const inspector = new Inspector(app, program, reference);
   const comparison = new Comparison(app, program, reference, builtinSource);
   const loupe = new Loupe(stage, canvas);
 
-  /** Runs the comparison; what stops it is said on the page (a cancel is not). */
-  const compare = () =>
-    comparison.run().catch((error) => {
+  /**
+   * Runs the comparison (a press while one runs does nothing: it would only start again); why
+   * it stops is said in its box (a cancel is not).
+   */
+  const compare = () => {
+    if (comparison.running) return Promise.resolve(null);
+    return comparison.run().catch((error) => {
       if (error instanceof ReferenceCancelled) return null;
       console.warn(`Compare with float64: ${error.message}`);
-      toast(error.message.split('\n')[0]);
       return null;
     });
+  };
   /** @param {boolean} [on] */
   const toggle = (on = !inspector.active) => inspector.setActive(on);
   /** Pins a pixel (y from the bottom), turning Inspect on. @param {number} x @param {number} y */
@@ -43,8 +47,9 @@ export function installInspection(app, { stage, canvas, toast, builtinSource }) 
     inspector.pin(x, y);
   };
 
-  new InspectorPanel(stage, inspector, { compare });
+  const panel = new InspectorPanel(stage, inspector, { compare });
   const compareView = new CompareView(stage, canvas, comparison, { pin, compare });
+  comparison.on('progress', () => panel.setComparing(Boolean(comparison.running)));
 
   // In Inspect mode the canvas's clicks pin pixels: the stage hears them first (capture), and
   // iMouse (app/shadertoy-inputs.js, on the canvas) never does.

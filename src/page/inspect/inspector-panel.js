@@ -62,6 +62,11 @@ export class InspectorPanel {
     inspector.on('readout', () => this.render());
   }
 
+  /** A comparison is under way (its button waits: a press would only start it again), or not. @param {boolean} on */
+  setComparing(on) {
+    this.compareButton.disabled = on;
+  }
+
   render() {
     const inspector = this.inspector;
     this.root.hidden = !inspector.active;

@@ -65,7 +65,7 @@ export function installUi(app, { builtinSource }) {
     screenshotSize: (width, height) => panel.screenshotSize(width, height),
   });
   const canvas = /** @type {HTMLCanvasElement} */ (document.getElementById('view'));
-  const inspection = installInspection(app, { stage, canvas, toast, builtinSource });
+  const inspection = installInspection(app, { stage, canvas, builtinSource });
   const toolbar = new Toolbar(
     /** @type {HTMLElement} */ (document.getElementById('toolbar')),
     { ...actions, toggleInspect: () => inspection.toggle(), compare: () => inspection.compare() },
