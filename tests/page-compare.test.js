@@ -130,6 +130,39 @@ describe('compare with float64', () => {
     );
   });
 
+  // A heat map that no longer matches the picture is hidden, not left over it: dimmed after a
+  // change of view (two spheres, translucent), or stretched to another canvas's shape after a
+  // resize, at once (before the next frame says the comparison is out of date) and after.
+  /** @type {Array<[string, (page: import('puppeteer-core').Page) => Promise<unknown>]>} */
+  const CHANGES = [
+    ['a control change', (page) => page.evaluate(() => window.raytracer.setControls({ LIGHT_POSITION: [4, 3, 2] }))],
+    ['a resize', (page) => page.setViewport({ width: 1000, height: 800, deviceScaleFactor: 1 })],
+  ];
+  test.each(CHANGES)('after %s the out-of-date heat map is hidden, never dimmed or stretched over the picture', async (_, change) => {
+    await withPage(
+      async ({ page, goto }) => {
+        await goto('?time=0&SAMPLES=1&scale=0.25'); // the canvas fills the stage, at a quarter of its pixels
+        await page.evaluate(() => window.raytracer.compareWithFloat64());
+        const map = () =>
+          page.evaluate(() => {
+            const m = /** @type {HTMLCanvasElement} */ (document.querySelector('.heat-map'));
+            const v = document.getElementById('view').getBoundingClientRect();
+            const r = m.getBoundingClientRect();
+            return { shown: getComputedStyle(m).display !== 'none', over: [r.width, r.height], canvas: [v.width, v.height] };
+          });
+        expect((await map()).shown, 'the map, measured').toBe(true);
+        await change(page);
+        const now = await map();
+        if (now.shown)
+          now.over.forEach((v, i) => expect(Math.abs(v - now.canvas[i]), 'a map shown covers the canvas exactly').toBeLessThan(1));
+        await page.waitForFunction(() => window.raytracer.comparison().stale, { polling: 50 });
+        expect((await map()).shown, 'out of date: hidden').toBe(false);
+        expect(await page.$eval('.compare', (box) => box.textContent)).toMatch(/Out of date: .*its map is hidden/);
+      },
+      { viewport: VIEWPORT },
+    );
+  });
+
   // A refusal is not a comparison: its box is titled so, without the map's controls and legend,
   // and says why (no toast repeats it, half under the box). The reference draws the picture
   // only: a debug view compared with it would be all error.

@@ -86,10 +86,20 @@ export class CompareView {
     window.addEventListener('resize', () => this.place());
   }
 
-  /** Lays the map over the canvas's box (the canvas may be smaller than the stage: a fixed size). */
+  /**
+   * Lays the map over the canvas's box (the canvas may be smaller than the stage: a fixed size),
+   * or hides it: when there is none to show, and when it no longer matches the picture (out of
+   * date, or a canvas of another shape, before the next frame says so). A map that does not
+   * match is not left over the picture, dimmed or stretched.
+   */
   place() {
-    if (this.map.hidden) return;
+    const { result, stale } = this.comparison;
+    const mapOn = this.hideMap.getAttribute('aria-pressed') === 'true';
     const box = this.canvas.getBoundingClientRect();
+    // the map's pixels over the canvas's box: within a CSS pixel of its shape, or not the picture
+    const fits = result !== null && Math.abs((box.width * result.height) / result.width - box.height) <= 1;
+    this.map.hidden = !result || !mapOn || stale || !fits;
+    if (this.map.hidden) return;
     const stage = this.stage.getBoundingClientRect();
     Object.assign(this.map.style, {
       left: `${box.left - stage.left}px`,
@@ -120,9 +130,8 @@ export class CompareView {
       else this.bar.removeAttribute('value'); // indeterminate
     }
     this.toggle.setAttribute('aria-pressed', String(this.showing === 'canvas'));
-    const mapOn = this.hideMap.getAttribute('aria-pressed') === 'true';
-    this.map.hidden = !result || !mapOn;
-    this.map.classList.toggle('stale', comparison.stale);
+    // an out-of-date map is hidden (place): its buttons would change nothing on the page
+    this.toggle.disabled = this.hideMap.disabled = comparison.stale;
     if (result && (this._drawn?.[0] !== result || this._drawn[1] !== this.showing)) this._draw(result);
     this.place();
     this.figures.replaceChildren(...this._figures());
@@ -170,7 +179,10 @@ export class CompareView {
     ].filter(Boolean);
     parts.push(element('p', { class: 'note' }, notes.join(' · ') + '. Click the map to inspect a pixel.'));
     if (result.caveat) parts.push(element('p', { class: 'note' }, result.caveat));
-    if (stale) parts.push(element('p', { class: 'problem' }, 'Out of date: the view has changed since. Compare again to measure it.'));
+    if (stale)
+      parts.push(
+        element('p', { class: 'problem' }, 'Out of date: the view has changed since, so its map is hidden. Compare again to measure it.'),
+      );
     return parts;
   }
 }
