@@ -16,6 +16,7 @@ import { shareLink } from '../io/share-link.js';
 import { serializeProject, shaderNotes } from '../io/project-files.js';
 import { openShader } from '../io/open-shader.js';
 import { installInspection } from '../inspect/inspection.js';
+import { installViewNote } from './view-note.js';
 
 /** @typedef {import('../app/app.js').RaytracerApp} RaytracerApp */
 /** @typedef {import('./frame-readout.js').Activity} Activity */
@@ -73,6 +74,7 @@ export function installUi(app, { builtinSource }) {
   );
   inspection.inspector.on('mode', () => toolbar.setInspecting(inspection.inspector.active));
   const recording = installRecordDialog(app, toolbar.root, toast);
+  installViewNote(app, stage);
   const panel = new Panel({
     onConverge: (on) =>
       app.converge.set(on).catch((error) => {
