@@ -148,13 +148,23 @@ describe('compare with float64', () => {
             const m = /** @type {HTMLCanvasElement} */ (document.querySelector('.heat-map'));
             const v = document.getElementById('view').getBoundingClientRect();
             const r = m.getBoundingClientRect();
-            return { shown: getComputedStyle(m).display !== 'none', over: [r.width, r.height], canvas: [v.width, v.height] };
+            return {
+              shown: getComputedStyle(m).display !== 'none',
+              over: [r.width, r.height],
+              canvas: [v.width, v.height],
+              // the map's height over the canvas's box were its pixels square: not stretched
+              unstretched: (v.width * m.height) / m.width,
+            };
           });
         expect((await map()).shown, 'the map, measured').toBe(true);
         await change(page);
+        // what the next paint shows (a resize is laid out, and observed, before it)
+        await page.evaluate(() => new Promise((resolve) => requestAnimationFrame(() => resolve(null))));
         const now = await map();
-        if (now.shown)
+        if (now.shown) {
           now.over.forEach((v, i) => expect(Math.abs(v - now.canvas[i]), 'a map shown covers the canvas exactly').toBeLessThan(1));
+          expect(Math.abs(now.unstretched - now.canvas[1]), "a map shown has the canvas's shape").toBeLessThanOrEqual(1);
+        }
         await page.waitForFunction(() => window.raytracer.comparison().stale, { polling: 50 });
         expect((await map()).shown, 'out of date: hidden').toBe(false);
         expect(await page.$eval('.compare', (box) => box.textContent)).toMatch(/Out of date: .*its map is hidden/);

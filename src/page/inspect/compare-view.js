@@ -74,16 +74,16 @@ export class CompareView {
         this.again,
         close,
       ),
-      this.progress,
-      this.figures,
-      (this.legend = legend()),
+      element('div', { class: 'compare-body' }, this.progress, this.figures, (this.legend = legend())),
     );
     // on the page from the first comparison on (before, it would be one more <progress> there)
     /** The result drawn on the map, and which error. @type {[ComparisonResult, string] | null} */
     this._drawn = null;
     comparison.on('progress', () => this.render());
     comparison.on('result', () => this.render());
-    window.addEventListener('resize', () => this.place());
+    // the canvas's box changes with the window, the editor beside it, the panel: before the
+    // page is painted again, the map follows it or hides
+    new ResizeObserver(() => this.place()).observe(canvas);
   }
 
   /**

@@ -11,10 +11,14 @@ import { ReferenceCancelled, ReferenceClient } from './reference-client.js';
 import { InspectorPanel } from './inspector-panel.js';
 import { CompareView } from './compare-view.js';
 import { Loupe, pixelAt } from './loupe.js';
+import { BoxLayout } from './box-layout.js';
 import { isTyping } from '../ui/keys.js';
 import './inspect.css';
 
 /** @typedef {import('../app/app.js').RaytracerApp} RaytracerApp */
+
+/** The page's notes over the canvas (ui/notices.js, ui/view-note.js, the overlay), which the boxes keep clear of where they can. */
+const notes = () => [...document.querySelectorAll('#notes, .view-note, #overlay, #restored-note, #kept-offer')];
 
 /**
  * @param {RaytracerApp} app
@@ -25,7 +29,9 @@ export function installInspection(app, { stage, canvas, builtinSource }) {
   const reference = new ReferenceClient();
   const inspector = new Inspector(app, program, reference);
   const comparison = new Comparison(app, program, reference, builtinSource);
-  const loupe = new Loupe(stage, canvas);
+  /** The boxes the magnifier keeps clear of (set below). @type {HTMLElement[]} */
+  const boxes = [];
+  const loupe = new Loupe(stage, canvas, () => [...boxes, ...notes()]);
 
   /**
    * Runs the comparison (a press while one runs does nothing: it would only start again); why
@@ -49,7 +55,13 @@ export function installInspection(app, { stage, canvas, builtinSource }) {
 
   const panel = new InspectorPanel(stage, inspector, { compare });
   const compareView = new CompareView(stage, canvas, comparison, { pin, compare });
-  comparison.on('progress', () => panel.setComparing(Boolean(comparison.running)));
+  boxes.push(panel.root, compareView.root);
+  const layout = new BoxLayout(stage, canvas, { readout: panel.root, compare: compareView.root, pin: loupe.marker, avoid: notes });
+  comparison.on('progress', () => {
+    panel.setComparing(Boolean(comparison.running));
+    layout.layout();
+  });
+  comparison.on('result', () => layout.layout());
 
   // In Inspect mode the canvas's clicks pin pixels: the stage hears them first (capture), and
   // iMouse (app/shadertoy-inputs.js, on the canvas) never does.
@@ -69,17 +81,24 @@ export function installInspection(app, { stage, canvas, builtinSource }) {
     loupe.follow(inspector.active && over ? event : null, over);
   });
   stage.addEventListener('pointerleave', () => loupe.follow(null));
-  const mark = () => loupe.mark(inspector.active ? (inspector.pinned ?? null) : null);
+  /** Frames the pinned pixel, and lays the boxes out around it. */
+  const mark = () => {
+    loupe.mark(inspector.active ? (inspector.pinned ?? null) : null);
+    layout.layout();
+  };
   inspector.on('mode', () => {
     stage.classList.toggle('inspecting', inspector.active);
     if (!inspector.active) loupe.follow(null);
     mark();
   });
+  inspector.on('readout', () => layout.layout()); // the readout's size changes with its text
   app.on('drawn', () => {
     mark();
     compareView.place();
   });
+  app.on('state', () => layout.layout()); // a note over the canvas may have come or gone
   window.addEventListener('resize', mark);
+  new ResizeObserver(mark).observe(canvas); // the editor or the panel beside it changed its size
   window.addEventListener('keydown', (event) => {
     if (event.key !== 'Escape' || !inspector.active || !inspector.pinned || isTyping(event)) return;
     inspector.unpin();
