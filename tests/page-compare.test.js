@@ -3,7 +3,8 @@
 // 8-bit frame against renderReference with the same rays, the extra samples where the shader's
 // "Extra samples" view puts them), computed here in Node; the page answers while the reference
 // renders and says how far it has got; Cancel stops it; a click on the heat map pins that pixel in
-// the inspector; a shader that is not the raytracer, and a debug view, are told so.
+// the inspector; a shader that is not the raytracer, a multipass one and a debug view are told
+// so in a box that offers no map controls; a comparison under way is not started again.
 
 import fs from 'node:fs';
 import { afterAll, describe, expect, test } from 'vitest';
@@ -15,6 +16,7 @@ import { EXTRA_SAMPLES_VIEW, extraSampleMask } from '../src/shadertoy/extra-samp
 import { referenceView } from './hard-views.js';
 import { viewQuery } from './views.js';
 import { button, canvasBox, withPage } from './page-helpers.js';
+import { exportOf } from './page-multipass-helpers.js';
 
 afterAll(disconnect);
 
@@ -128,40 +130,144 @@ describe('compare with float64', () => {
     );
   });
 
-  test('a shader that is not the raytracer: "Compare with float64 is for the built-in raytracer"', async () => {
+  // A heat map that no longer matches the picture is hidden, not left over it: dimmed after a
+  // change of view (two spheres, translucent), or stretched to another canvas's shape after a
+  // resize, at once (before the next frame says the comparison is out of date) and after.
+  /** @type {Array<[string, (page: import('puppeteer-core').Page) => Promise<unknown>]>} */
+  const CHANGES = [
+    ['a control change', (page) => page.evaluate(() => window.raytracer.setControls({ LIGHT_POSITION: [4, 3, 2] }))],
+    ['a resize', (page) => page.setViewport({ width: 1000, height: 800, deviceScaleFactor: 1 })],
+  ];
+  test.each(CHANGES)('after %s the out-of-date heat map is hidden, never dimmed or stretched over the picture', async (_, change) => {
     await withPage(
-      async ({ page, goto, warnings }) => {
-        await goto('?shader=examples/pattern.glsl&size=160x90&time=0');
-        await (await button(page, 'Compare with float64')).click();
-        await page.waitForFunction(() => window.raytracer.comparison().error, { polling: 50 });
-        const said = await page.$eval('.compare', (box) => box.textContent);
-        expect(said).toMatch(
-          /Compare with float64 is for the built-in raytracer: this shader has no orbitCamera, sceneRelativeTo, eyeRay, radiance/,
-        );
-        expect(await page.$eval('#toast', (t) => t.textContent)).toMatch(/Compare with float64 is for the built-in raytracer/);
-        expect(warnings.some((w) => /Compare with float64 is for the built-in raytracer/.test(w))).toBe(true);
-        expect((await page.evaluate(() => window.raytracer.comparison())).shown).toBe(null);
+      async ({ page, goto }) => {
+        await goto('?time=0&SAMPLES=1&scale=0.25'); // the canvas fills the stage, at a quarter of its pixels
+        await page.evaluate(() => window.raytracer.compareWithFloat64());
+        const map = () =>
+          page.evaluate(() => {
+            const m = /** @type {HTMLCanvasElement} */ (document.querySelector('.heat-map'));
+            const v = document.getElementById('view').getBoundingClientRect();
+            const r = m.getBoundingClientRect();
+            return {
+              shown: getComputedStyle(m).display !== 'none',
+              over: [r.width, r.height],
+              canvas: [v.width, v.height],
+              // the map's height over the canvas's box were its pixels square: not stretched
+              unstretched: (v.width * m.height) / m.width,
+            };
+          });
+        expect((await map()).shown, 'the map, measured').toBe(true);
+        await change(page);
+        // what the next paint shows (a resize is laid out, and observed, before it)
+        await page.evaluate(() => new Promise((resolve) => requestAnimationFrame(() => resolve(null))));
+        const now = await map();
+        if (now.shown) {
+          now.over.forEach((v, i) => expect(Math.abs(v - now.canvas[i]), 'a map shown covers the canvas exactly').toBeLessThan(1));
+          expect(Math.abs(now.unstretched - now.canvas[1]), "a map shown has the canvas's shape").toBeLessThanOrEqual(1);
+        }
+        await page.waitForFunction(() => window.raytracer.comparison().stale, { polling: 50 });
+        expect((await map()).shown, 'out of date: hidden').toBe(false);
+        expect(await page.$eval('.compare', (box) => box.textContent)).toMatch(/Out of date: .*its map is hidden/);
       },
       { viewport: VIEWPORT },
     );
   });
 
-  // The reference draws the picture only: a debug view compared with it would be all error.
-  test("a debug view: the comparison and the inspector's float64 colour say the reference draws the picture", async () => {
+  // A refusal is not a comparison: its box is titled so, without the map's controls and legend,
+  // and says why (no toast repeats it, half under the box). The reference draws the picture
+  // only: a debug view compared with it would be all error.
+  /** @type {Array<[string, string, {setProject?: object}, RegExp]>} */
+  const REFUSALS = [
+    [
+      'a shader that is not the raytracer',
+      '?shader=examples/pattern.glsl&size=160x90&time=0',
+      {},
+      /Compare with float64 is for the built-in raytracer: this shader has no orbitCamera, sceneRelativeTo, eyeRay, radiance/,
+    ],
+    [
+      'a multipass shader',
+      '?size=160x90&time=0',
+      { setProject: exportOf() },
+      /Compare with float64 is for the built-in raytracer: this shader has buffers of its own/,
+    ],
+    [
+      'a debug view',
+      '?size=160x90&time=0&VIEW=1',
+      {},
+      /The float64 reference draws the picture, not the "Normals" view: set View to Picture to compare/,
+    ],
+  ];
+  test.each(REFUSALS)('%s: the box says it cannot compare, and why, with no map controls', async (_, query, shader, why) => {
     await withPage(
-      async ({ page, goto }) => {
-        await goto('?size=160x90&time=0&VIEW=1');
+      async ({ page, goto, warnings }) => {
+        await goto(query);
+        if (shader.setProject) expect((await page.evaluate((json) => window.raytracer.setProject(json), shader.setProject)).ok).toBe(true);
         await (await button(page, 'Compare with float64')).click();
         await page.waitForFunction(() => window.raytracer.comparison().error, { polling: 50 });
-        expect(await page.$eval('.compare', (box) => box.textContent)).toMatch(
-          /The float64 reference draws the picture, not the "Normals" view: set View to Picture to compare/,
-        );
+        const box = await page.$eval('.compare', (section) => {
+          const shown = (selector) => {
+            const e = /** @type {HTMLElement | null} */ (section.querySelector(selector));
+            return Boolean(e && e.offsetParent !== null);
+          };
+          const named = (name) => [...section.querySelectorAll('button')].find((b) => b.textContent === name);
+          return {
+            title: section.querySelector('header strong')?.textContent,
+            text: section.textContent,
+            eightBit: Boolean(named('8-bit')?.offsetParent),
+            map: Boolean(named('Map')?.offsetParent),
+            legend: shown('.legend'),
+          };
+        });
+        expect(box.title).toBe('Cannot compare with float64');
+        expect(box.text).toMatch(why);
+        expect({ eightBit: box.eightBit, map: box.map, legend: box.legend }, 'no map, so none of its controls').toEqual({
+          eightBit: false,
+          map: false,
+          legend: false,
+        });
+        expect(await page.$eval('#toast', (t) => /** @type {HTMLElement} */ (t).hidden), 'no toast repeats the box').toBe(true);
+        expect(warnings.some((w) => why.test(w))).toBe(true);
         expect((await page.evaluate(() => window.raytracer.comparison())).shown).toBe(null);
-        const readout = await page.evaluate(() => window.raytracer.inspect(80, 45));
-        expect(readout.reference).toBe(null);
-        expect(readout.referenceNote).toMatch(/draws the picture, not the "Normals" view/);
+        if (/VIEW=1/.test(query)) {
+          const readout = await page.evaluate(() => window.raytracer.inspect(80, 45));
+          expect(readout.reference).toBe(null);
+          expect(readout.referenceNote).toMatch(/draws the picture, not the "Normals" view/);
+        }
       },
       { viewport: VIEWPORT },
+    );
+  });
+
+  test('while a comparison runs its buttons wait, and a press does not start it again', async () => {
+    await withPage(
+      async ({ page, goto }) => {
+        await goto('?size=640x360&time=0&SAMPLES=1');
+        await page.evaluate(() => window.raytracer.inspect(10, 10)); // the readout's Compare button on the page
+        await (await button(page, 'Compare with float64')).click();
+        await page.waitForFunction(() => window.raytracer.comparison().running?.rows > 0, { polling: 20 });
+        const disabled = await page.evaluate(() =>
+          ['.compare header', '.inspector header'].map((where) =>
+            [...document.querySelectorAll(`${where} button`)]
+              .filter((b) => /Compare/.test(b.textContent ?? ''))
+              .map((b) => /** @type {HTMLButtonElement} */ (b).disabled),
+          ),
+        );
+        expect(disabled, '"Compare again" and the readout\'s "Compare with float64"').toEqual([[true], [true]]);
+        const before = (await page.evaluate(() => window.raytracer.comparison())).running;
+        // the toolbar's button (enabled) does nothing while one runs
+        await page.$eval('#toolbar [aria-label="Compare with float64"]', (b) => /** @type {HTMLButtonElement} */ (b).click());
+        const after = (await page.evaluate(() => window.raytracer.comparison())).running;
+        expect(after?.phase, 'still the same comparison').toBe(before.phase);
+        expect(after.rows).toBeGreaterThanOrEqual(before.rows);
+        await (await page.$('.compare-progress button')).click(); // Cancel
+        expect(
+          await page.$eval(
+            '.compare header',
+            (h) => [...h.querySelectorAll('button')].find((b) => b.textContent === 'Compare again')?.disabled,
+          ),
+        ).toBe(false);
+      },
+      { viewport: VIEWPORT, deterministic: false },
     );
   });
 });

@@ -74,22 +74,32 @@ export class CompareView {
         this.again,
         close,
       ),
-      this.progress,
-      this.figures,
-      legend(),
+      element('div', { class: 'compare-body' }, this.progress, this.figures, (this.legend = legend())),
     );
     // on the page from the first comparison on (before, it would be one more <progress> there)
     /** The result drawn on the map, and which error. @type {[ComparisonResult, string] | null} */
     this._drawn = null;
     comparison.on('progress', () => this.render());
     comparison.on('result', () => this.render());
-    window.addEventListener('resize', () => this.place());
+    // the canvas's box changes with the window, the editor beside it, the panel: before the
+    // page is painted again, the map follows it or hides
+    new ResizeObserver(() => this.place()).observe(canvas);
   }
 
-  /** Lays the map over the canvas's box (the canvas may be smaller than the stage: a fixed size). */
+  /**
+   * Lays the map over the canvas's box (the canvas may be smaller than the stage: a fixed size),
+   * or hides it: when there is none to show, and when it no longer matches the picture (out of
+   * date, or a canvas of another shape, before the next frame says so). A map that does not
+   * match is not left over the picture, dimmed or stretched.
+   */
   place() {
-    if (this.map.hidden) return;
+    const { result, stale } = this.comparison;
+    const mapOn = this.hideMap.getAttribute('aria-pressed') === 'true';
     const box = this.canvas.getBoundingClientRect();
+    // the map's pixels over the canvas's box: within a CSS pixel of its shape, or not the picture
+    const fits = result !== null && Math.abs((box.width * result.height) / result.width - box.height) <= 1;
+    this.map.hidden = !result || !mapOn || stale || !fits;
+    if (this.map.hidden) return;
     const stage = this.stage.getBoundingClientRect();
     Object.assign(this.map.style, {
       left: `${box.left - stage.left}px`,
@@ -105,16 +115,23 @@ export class CompareView {
     this.root.hidden = !running && !result && !error;
     if (!this.root.hidden && !this.root.isConnected) this.stage.append(this.map, this.root);
     this.progress.hidden = !running;
-    this.title.textContent = running ? 'Comparing with float64…' : 'Compared with float64';
+    // a refusal (or a failure) with nothing measured is not a comparison: no map, no map controls
+    const refused = !running && !result && Boolean(error);
+    this.title.textContent = running ? 'Comparing with float64…' : refused ? 'Cannot compare with float64' : 'Compared with float64';
+    this.toggle.hidden = !result;
+    this.hideMap.hidden = !result;
+    this.legend.hidden = !result;
+    // one comparison at a time: another press would only start it again
+    this.again.disabled = Boolean(running);
+    this.again.title = running ? 'A comparison is under way (Cancel stops it)' : 'Compare the frame on the canvas now';
     if (running) {
       this.phase.textContent = running.of ? `${running.phase}: ${running.rows} of ${running.of} rows` : `${running.phase}…`;
       if (running.of) this.bar.value = running.rows / running.of;
       else this.bar.removeAttribute('value'); // indeterminate
     }
     this.toggle.setAttribute('aria-pressed', String(this.showing === 'canvas'));
-    const mapOn = this.hideMap.getAttribute('aria-pressed') === 'true';
-    this.map.hidden = !result || !mapOn;
-    this.map.classList.toggle('stale', comparison.stale);
+    // an out-of-date map is hidden (place): its buttons would change nothing on the page
+    this.toggle.disabled = this.hideMap.disabled = comparison.stale;
     if (result && (this._drawn?.[0] !== result || this._drawn[1] !== this.showing)) this._draw(result);
     this.place();
     this.figures.replaceChildren(...this._figures());
@@ -162,7 +179,10 @@ export class CompareView {
     ].filter(Boolean);
     parts.push(element('p', { class: 'note' }, notes.join(' · ') + '. Click the map to inspect a pixel.'));
     if (result.caveat) parts.push(element('p', { class: 'note' }, result.caveat));
-    if (stale) parts.push(element('p', { class: 'problem' }, 'Out of date: the view has changed since. Compare again to measure it.'));
+    if (stale)
+      parts.push(
+        element('p', { class: 'problem' }, 'Out of date: the view has changed since, so its map is hidden. Compare again to measure it.'),
+      );
     return parts;
   }
 }

@@ -11,30 +11,40 @@ import { ReferenceCancelled, ReferenceClient } from './reference-client.js';
 import { InspectorPanel } from './inspector-panel.js';
 import { CompareView } from './compare-view.js';
 import { Loupe, pixelAt } from './loupe.js';
+import { BoxLayout } from './box-layout.js';
 import { isTyping } from '../ui/keys.js';
 import './inspect.css';
 
 /** @typedef {import('../app/app.js').RaytracerApp} RaytracerApp */
 
+/** The page's notes over the canvas (ui/notices.js, ui/view-note.js, the overlay), which the boxes keep clear of where they can. */
+const notes = () => [...document.querySelectorAll('#notes, .view-note, #overlay, #restored-note, #kept-offer')];
+
 /**
  * @param {RaytracerApp} app
- * @param {{stage: HTMLElement, canvas: HTMLCanvasElement, toast: (text: string) => void, builtinSource: string}} page
+ * @param {{stage: HTMLElement, canvas: HTMLCanvasElement, builtinSource: string}} page
  */
-export function installInspection(app, { stage, canvas, toast, builtinSource }) {
+export function installInspection(app, { stage, canvas, builtinSource }) {
   const program = new ProbeProgram(app);
   const reference = new ReferenceClient();
   const inspector = new Inspector(app, program, reference);
   const comparison = new Comparison(app, program, reference, builtinSource);
-  const loupe = new Loupe(stage, canvas);
+  /** The boxes the magnifier keeps clear of (set below). @type {HTMLElement[]} */
+  const boxes = [];
+  const loupe = new Loupe(stage, canvas, () => [...boxes, ...notes()]);
 
-  /** Runs the comparison; what stops it is said on the page (a cancel is not). */
-  const compare = () =>
-    comparison.run().catch((error) => {
+  /**
+   * Runs the comparison (a press while one runs does nothing: it would only start again); why
+   * it stops is said in its box (a cancel is not).
+   */
+  const compare = () => {
+    if (comparison.running) return Promise.resolve(null);
+    return comparison.run().catch((error) => {
       if (error instanceof ReferenceCancelled) return null;
       console.warn(`Compare with float64: ${error.message}`);
-      toast(error.message.split('\n')[0]);
       return null;
     });
+  };
   /** @param {boolean} [on] */
   const toggle = (on = !inspector.active) => inspector.setActive(on);
   /** Pins a pixel (y from the bottom), turning Inspect on. @param {number} x @param {number} y */
@@ -43,8 +53,15 @@ export function installInspection(app, { stage, canvas, toast, builtinSource }) 
     inspector.pin(x, y);
   };
 
-  new InspectorPanel(stage, inspector, { compare });
+  const panel = new InspectorPanel(stage, inspector, { compare });
   const compareView = new CompareView(stage, canvas, comparison, { pin, compare });
+  boxes.push(panel.root, compareView.root);
+  const layout = new BoxLayout(stage, canvas, { readout: panel.root, compare: compareView.root, pin: loupe.marker, avoid: notes });
+  comparison.on('progress', () => {
+    panel.setComparing(Boolean(comparison.running));
+    layout.layout();
+  });
+  comparison.on('result', () => layout.layout());
 
   // In Inspect mode the canvas's clicks pin pixels: the stage hears them first (capture), and
   // iMouse (app/shadertoy-inputs.js, on the canvas) never does.
@@ -64,17 +81,24 @@ export function installInspection(app, { stage, canvas, toast, builtinSource }) 
     loupe.follow(inspector.active && over ? event : null, over);
   });
   stage.addEventListener('pointerleave', () => loupe.follow(null));
-  const mark = () => loupe.mark(inspector.active ? (inspector.pinned ?? null) : null);
+  /** Frames the pinned pixel, and lays the boxes out around it. */
+  const mark = () => {
+    loupe.mark(inspector.active ? (inspector.pinned ?? null) : null);
+    layout.layout();
+  };
   inspector.on('mode', () => {
     stage.classList.toggle('inspecting', inspector.active);
     if (!inspector.active) loupe.follow(null);
     mark();
   });
+  inspector.on('readout', () => layout.layout()); // the readout's size changes with its text
   app.on('drawn', () => {
     mark();
     compareView.place();
   });
+  app.on('state', () => layout.layout()); // a note over the canvas may have come or gone
   window.addEventListener('resize', mark);
+  new ResizeObserver(mark).observe(canvas); // the editor or the panel beside it changed its size
   window.addEventListener('keydown', (event) => {
     if (event.key !== 'Escape' || !inspector.active || !inspector.pinned || isTyping(event)) return;
     inspector.unpin();

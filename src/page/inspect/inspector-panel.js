@@ -24,8 +24,8 @@ const formatSteps = (v) => `${v >= 0 ? '+' : '−'}${Math.abs(v).toFixed(Math.ab
 /** A distance along a ray (a miss: "—"). @param {number} t */
 const formatT = (t) => (Number.isFinite(t) && t < 1e30 ? formatFloat(t) : '—');
 
-/** A unit normal, 4 decimals. @param {number[]} n */
-const formatNormal = (n) => `(${n.map((v) => (Math.abs(v) < 5e-5 ? 0 : v).toFixed(4)).join(', ')})`;
+/** A unit normal, 3 decimals (the path table must fit a narrow canvas). @param {number[]} n */
+const formatNormal = (n) => `(${n.map((v) => (Math.abs(v) < 5e-4 ? 0 : v).toFixed(3)).join(', ')})`;
 
 /** A table row of cells (the first a header cell). @param {string} head @param {Array<string | Node>} cells */
 const row = (head, cells, attributes = {}) =>
@@ -60,6 +60,11 @@ export class InspectorPanel {
     stage.append(this.root);
     inspector.on('mode', () => this.render());
     inspector.on('readout', () => this.render());
+  }
+
+  /** A comparison is under way (its button waits: a press would only start it again), or not. @param {boolean} on */
+  setComparing(on) {
+    this.compareButton.disabled = on;
   }
 
   render() {

@@ -10,6 +10,8 @@ import { element } from '../ui/dom.js';
 const SPAN = 11;
 /** Screen pixels a magnified pixel takes. */
 const ZOOM = 11;
+/** How far from the cursor the magnifier lies (CSS px). */
+const OFFSET = 24;
 
 /**
  * The frame pixel under a point of the page, or null outside the canvas.
@@ -30,10 +32,12 @@ export class Loupe {
   /**
    * @param {HTMLElement} stage
    * @param {HTMLCanvasElement} canvas the page's canvas
+   * @param {() => Element[]} avoid the boxes over the canvas that the magnifier keeps clear of
    */
-  constructor(stage, canvas) {
+  constructor(stage, canvas, avoid = () => []) {
     this.stage = stage;
     this.canvas = canvas;
+    this.avoid = avoid;
     this.lens = element('canvas', { class: 'loupe', width: SPAN * ZOOM, height: SPAN * ZOOM, 'aria-hidden': 'true' });
     this.label = element('span', { class: 'loupe-label' });
     this.root = element('div', { class: 'loupe-box', hidden: true }, this.lens, this.label);
@@ -69,16 +73,46 @@ export class Loupe {
     context.lineWidth = 1;
     context.strokeRect(half * ZOOM - 1.5, half * ZOOM - 1.5, ZOOM + 3, ZOOM + 3);
     this.label.textContent = `fragCoord ${at.x + 0.5}, ${at.y + 0.5} · click to pin`;
-    const stageBox = this.stage.getBoundingClientRect();
-    const size = SPAN * ZOOM;
-    // beside the cursor, on the side with room
-    let left = pointer.clientX - stageBox.left + 24;
-    let top2 = pointer.clientY - stageBox.top + 24;
-    if (left + size > stageBox.width) left -= size + 48;
-    if (top2 + size + 24 > stageBox.height) top2 -= size + 72;
-    this.root.style.left = `${Math.max(0, left)}px`;
-    this.root.style.top = `${Math.max(0, top2)}px`;
     this.root.hidden = false;
+    this._place(pointer);
+  }
+
+  /**
+   * Puts the magnifier (lens and label) beside the cursor, wholly on the stage (the panel beside
+   * it would clip it), on a side where it covers none of the boxes, or the least of them.
+   * @param {{clientX: number, clientY: number}} pointer
+   */
+  _place(pointer) {
+    const stage = this.stage.getBoundingClientRect();
+    const { offsetWidth: width, offsetHeight: height } = this.root;
+    const boxes = this.avoid()
+      .filter((e) => e.isConnected && !(/** @type {HTMLElement} */ (e).hidden))
+      .map((e) => e.getBoundingClientRect());
+    const inside = (v, size, from, to) => Math.min(to - size, Math.max(from, v));
+    let best = null;
+    for (const [dx, dy] of [
+      [1, 1],
+      [-1, 1],
+      [1, -1],
+      [-1, -1],
+    ]) {
+      const left = inside(dx > 0 ? pointer.clientX + OFFSET : pointer.clientX - OFFSET - width, width, stage.left, stage.right);
+      const top = inside(dy > 0 ? pointer.clientY + OFFSET : pointer.clientY - OFFSET - height, height, stage.top, stage.bottom);
+      const covered = boxes.reduce((sum, b) => {
+        const w = Math.min(left + width, b.right) - Math.max(left, b.left);
+        const h = Math.min(top + height, b.bottom) - Math.max(top, b.top);
+        return sum + (w > 0 && h > 0 ? w * h : 0);
+      }, 0);
+      // the cursor's own pixel stays in sight: a side that would cover it is the last resort
+      const onCursor =
+        pointer.clientX >= left && pointer.clientX <= left + width && pointer.clientY >= top && pointer.clientY <= top + height;
+      const cost = covered + (onCursor ? 1e9 : 0);
+      if (!best || cost < best.cost) best = { cost, left, top };
+      if (cost === 0) break;
+    }
+    const { left, top } = /** @type {{left: number, top: number}} */ (best);
+    this.root.style.left = `${left - stage.left}px`;
+    this.root.style.top = `${top - stage.top}px`;
   }
 
   /**

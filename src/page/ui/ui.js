@@ -16,6 +16,7 @@ import { BUILTIN_BASE, shareLink } from '../io/share-link.js';
 import { serializeProject, shaderNotes } from '../io/project-files.js';
 import { openShader } from '../io/open-shader.js';
 import { installInspection } from '../inspect/inspection.js';
+import { installViewNote } from './view-note.js';
 
 /** @typedef {import('../app/app.js').RaytracerApp} RaytracerApp */
 /** @typedef {import('./frame-readout.js').Activity} Activity */
@@ -66,7 +67,7 @@ export function installUi(app, { builtinSource }) {
     shipped: () => shippedBase(),
   });
   const canvas = /** @type {HTMLCanvasElement} */ (document.getElementById('view'));
-  const inspection = installInspection(app, { stage, canvas, toast, builtinSource });
+  const inspection = installInspection(app, { stage, canvas, builtinSource });
   const toolbar = new Toolbar(
     /** @type {HTMLElement} */ (document.getElementById('toolbar')),
     { ...actions, toggleInspect: () => inspection.toggle(), compare: () => inspection.compare() },
@@ -74,6 +75,7 @@ export function installUi(app, { builtinSource }) {
   );
   inspection.inspector.on('mode', () => toolbar.setInspecting(inspection.inspector.active));
   const recording = installRecordDialog(app, toolbar.root, toast);
+  installViewNote(app, stage);
   const panel = new Panel({
     onConverge: (on) =>
       app.converge.set(on).catch((error) => {
