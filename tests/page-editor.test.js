@@ -201,7 +201,8 @@ describe('defect 1: an edited or pasted shader kept the previous file name', () 
       await page.waitForFunction(() => /** @type {any} */ (window).__saved.length === 2, { polling: 50 });
       const [glsl, png] = await saved();
       expect(glsl).toBe('untitled.glsl');
-      expect(png).toMatch(/^untitled-t1\.00-160x90\.png$/);
+      // a paste over everything is a new shader: it starts at iTime 0 (Shadertoy's contract)
+      expect(png).toMatch(/^untitled-t0\.00-160x90\.png$/);
 
       // an edit of the file: the file's name, marked as edited
       await page.reload({ waitUntil: 'load' });
