@@ -164,63 +164,6 @@ describe('heavy frames are drawn in bands, and the page keeps answering', () => 
   });
 });
 
-describe('a long compile is not a hang', () => {
-  // SwiftShader compiles a program on its first draw (the torus scene: ~3.5 s), which the render
-  // worker draws as one quad of its own: the watchdog says "Compiling", not "may never finish".
-  const COMPILING = { ...REAL_CLOCKS, timeouts: { ...SHORT_TIMEOUTS, compileHangMs: 120_000 } };
-  // SwiftShader keeps the programs it has compiled for the browser's life, so a torus that another
-  // test compiled first would compile at once here: each test's torus has a reflectivity of its own.
-  const torus = (reflectivity) => ({ SCENE: 2, TORUS_REFLECTIVITY: reflectivity });
-  const torusQuery = (reflectivity) => `size=64x36&SCENE=2&TORUS_REFLECTIVITY=${reflectivity}`;
-
-  test('a first draw that compiles for seconds says so, and its first frame clears the note', async () => {
-    await withPage(async ({ page, goto }) => {
-      await page.evaluateOnNewDocument(() => {
-        // every state of data-hung the page goes through
-        window.addEventListener('DOMContentLoaded', () => {
-          const seen = [];
-          /** @type {any} */ (window).__hungStates = seen;
-          new MutationObserver(() => seen.push(document.documentElement.dataset.hung ?? '')).observe(document.documentElement, {
-            attributeFilter: ['data-hung'],
-          });
-        });
-      });
-      await goto(`?${torusQuery(0.301)}`);
-      const seen = await page.evaluate(() => /** @type {any} */ (window).__hungStates);
-      expect(seen, 'data-hung went through "compiling" and never "true"').toContain('compiling');
-      expect(seen).not.toContain('true');
-      expect(await hangNote(page), 'the first frame cleared the note').toBeNull();
-    }, COMPILING);
-  });
-
-  test('a page closed while a shader compiled runs the last one that finished, says why, and runs it on request', async () => {
-    await withPage(async ({ page, goto }) => {
-      await goto('?size=64x36');
-      await page.evaluate((controls) => {
-        window.raytracer.setControls(controls);
-      }, torus(0.302));
-      await page.waitForFunction(() => document.documentElement.dataset.hung === 'compiling', { polling: 50, timeout: 60_000 });
-      expect(await page.$eval('[role="alert"]', (e) => e.textContent)).toContain('Compiling shaders/raytrace.glsl');
-      expect((await hangNote(page))?.phase).toBe('compiling');
-      // the page is opened again on the shader that was compiling
-      await goto(`?${torusQuery(0.302)}`);
-      expect((await info(page)).controls.SCENE).toBe(0); // the last shader that finished
-      const alert = await page.$eval('[role="alert"]', (e) => e.textContent);
-      expect(alert).toContain('was still compiling when the page closed');
-      await page.evaluate(() => {
-        const run = [...document.querySelectorAll('[role="alert"] button')].find((b) => b.textContent === 'Run shaders/raytrace.glsl');
-        /** @type {HTMLButtonElement} */ (run).click();
-      });
-      await page.waitForFunction(() => window.raytracer.info().controls.SCENE === 2 && window.raytracer.info().compiled >= 2, {
-        polling: 100,
-        timeout: 90_000,
-      });
-      await page.evaluate(() => window.raytracer.readPixels());
-      expect(await hangNote(page)).toBeNull();
-    }, COMPILING);
-  });
-});
-
 describe('the page never comes back with the shader that hung', () => {
   test('when the GPU is reset after a hang (a lost and restored context), the page runs the last shader that finished a frame', async () => {
     await withHeavyShader(async (base) => {

@@ -45,7 +45,9 @@ function allPixels(image, rgb) {
 /** Saves the page's downloads in a fresh folder; `next()` waits for the next finished file. */
 async function captureDownloads(page) {
   const dir = fs.mkdtempSync(path.join(os.tmpdir(), 'raytracer-downloads-'));
-  const session = await page.browser().target().createCDPSession();
+  // the page's own session: the browser target's (browser().target()) was found gone once in a
+  // full run ("No target with given id found"), and the Browser domain answers on a page's too
+  const session = await page.createCDPSession();
   await session.send('Browser.setDownloadBehavior', { behavior: 'allow', downloadPath: dir });
   const seen = new Set();
   return {
