@@ -61,3 +61,23 @@ export function extraSampleMask({ width, height, data }) {
 export function countExtraSamplePixels(image) {
   return extraSampleMask(image).reduce((n, v) => n + v, 0);
 }
+
+// The view marks the pixels that took adaptive anti-aliasing's extra samples, so with ADAPTIVE_AA
+// off (uniform supersampling: every pixel takes the grid) or SAMPLES at 1 it marks none, and would
+// look like a picture with no edges found: the page says which it is (ui/notices.js).
+/**
+ * Why the "Extra samples" view marks no pixel, or null (another view, or it marks them).
+ * @param {Array<{name: string, label: string, options?: Array<{label: string, value: number}>}>} controls
+ * @param {Record<string, any>} values
+ */
+export function extraSamplesViewNote(controls, values) {
+  const view = extraSamplesValues(controls);
+  if (!view || values.VIEW !== view.VIEW) return null;
+  const label = (name, fallback) => controls.find((c) => c.name === name)?.label ?? fallback;
+  const samples = values.SAMPLES;
+  if (samples === undefined) return null;
+  if (!(samples > 1))
+    return `"Extra samples" view: ${label('SAMPLES', 'SAMPLES')} is 1, so no pixel takes extra samples and none is marked.`;
+  if (values.ADAPTIVE_AA === undefined || values.ADAPTIVE_AA) return null;
+  return `"Extra samples" view: ${label('ADAPTIVE_AA', 'ADAPTIVE_AA')} is off, so every pixel takes all ${samples} samples (uniform supersampling) and none is marked.`;
+}

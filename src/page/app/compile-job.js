@@ -78,17 +78,7 @@ export class CompileJob {
     const serial = ++this._started;
     const job = app.gpu.ask('compile', { project: version.project, hostBlock, fileName, serial }).then(
       () => {
-        if (serial > this._runningSerial) {
-          if (this.running) this._before = { serial: this._runningSerial, version: this.running };
-          this.running = version;
-          this._runningSerial = serial;
-          // Shadertoy's contract: a shader loaded in place of another starts at iFrame 0 and
-          // iTime 0 with cleared buffers (its buffers may set themselves up on frame 0)
-          if (version.load !== this._clockOf) {
-            this._clockOf = version.load;
-            app.startClock();
-          }
-        }
+        if (serial > this._runningSerial) this._onScreen(version, serial);
         if (job !== this.latest) return;
         this.errors = [];
         this.count++;
@@ -129,11 +119,25 @@ export class CompileJob {
     const hostBlock = controls.length ? hostControlBlock(controls, values, values) : '';
     await app.gpu.ask('compile', { project: version.project, hostBlock, fileName: version.name, serial });
     if (this.running || serial < this._runningSerial) return; // the app's own shader compiled meanwhile
+    this._onScreen(version, serial);
+    app.frames.request();
+  }
+
+  /**
+   * `version`, compiled as compile number `serial`, is the shader on screen now.
+   * @param {ShaderVersion} version
+   * @param {number} serial
+   */
+  _onScreen(version, serial) {
+    if (this.running) this._before = { serial: this._runningSerial, version: this.running };
     this.running = version;
     this._runningSerial = serial;
-    this._clockOf = version.load ?? 0;
-    app.startClock();
-    app.frames.request();
+    // Shadertoy's contract: a shader loaded in place of another starts at iFrame 0 and iTime 0
+    // with cleared buffers (its buffers may set themselves up on frame 0)
+    if (version.load !== this._clockOf) {
+      this._clockOf = version.load;
+      this.app.startClock();
+    }
   }
 
   /** Resolves when no compile is under way (whatever the outcome). */

@@ -19,8 +19,8 @@ const SMALL_CANVAS = 0.6;
 const READOUT_CORNERS = ['bottom-left', 'top-left', 'bottom-right', 'top-right'];
 const COMPARE_CORNERS = ['top-left', 'top-right', 'bottom-left', 'bottom-right'];
 
-/** @param {Rect} a @param {Rect} b */
-function overlapArea(a, b) {
+/** The area two rectangles share. @param {Rect} a @param {Rect} b */
+export function overlapArea(a, b) {
   const w = Math.min(a.right, b.right) - Math.max(a.left, b.left);
   const h = Math.min(a.bottom, b.bottom) - Math.max(a.top, b.top);
   return w > 0 && h > 0 ? w * h : 0;
@@ -82,8 +82,8 @@ export function chooseCorners({ area, boxes, pin, avoid }) {
   return /** @type {{placed: Array<{corner: string, rect: Rect}>} | null} */ (best)?.placed ?? null;
 }
 
-/** @param {Element} e */
-const shown = (e) => e.isConnected && !(/** @type {HTMLElement} */ (e).hidden);
+/** Whether an element is on the page and not hidden. @param {Element} e */
+export const shown = (e) => e.isConnected && !(/** @type {HTMLElement} */ (e).hidden);
 
 export class BoxLayout {
   /**

@@ -17,8 +17,8 @@ import './inspect.css';
 
 /** @typedef {import('../app/app.js').RaytracerApp} RaytracerApp */
 
-/** The page's notes over the canvas (ui/notices.js, ui/view-note.js, the overlay), which the boxes keep clear of where they can. */
-const notes = () => [...document.querySelectorAll('#notes, .view-note, #overlay, #restored-note, #kept-offer')];
+/** The page's notes over the canvas (ui/notices.js: the notes column, the view's note; the overlay), which the boxes keep clear of where they can. */
+const notes = () => [...document.querySelectorAll('#notes, .view-note, #overlay')];
 
 /**
  * @param {RaytracerApp} app

@@ -5,6 +5,7 @@
 // y from the bottom, as fragCoord counts them), mapped through the canvas's box.
 
 import { element } from '../ui/dom.js';
+import { overlapArea, shown } from './box-layout.js';
 
 /** Pixels a side the magnifier shows (odd: the one under the cursor in the middle). */
 const SPAN = 11;
@@ -86,7 +87,7 @@ export class Loupe {
     const stage = this.stage.getBoundingClientRect();
     const { offsetWidth: width, offsetHeight: height } = this.root;
     const boxes = this.avoid()
-      .filter((e) => e.isConnected && !(/** @type {HTMLElement} */ (e).hidden))
+      .filter(shown)
       .map((e) => e.getBoundingClientRect());
     const inside = (v, size, from, to) => Math.min(to - size, Math.max(from, v));
     let best = null;
@@ -98,11 +99,7 @@ export class Loupe {
     ]) {
       const left = inside(dx > 0 ? pointer.clientX + OFFSET : pointer.clientX - OFFSET - width, width, stage.left, stage.right);
       const top = inside(dy > 0 ? pointer.clientY + OFFSET : pointer.clientY - OFFSET - height, height, stage.top, stage.bottom);
-      const covered = boxes.reduce((sum, b) => {
-        const w = Math.min(left + width, b.right) - Math.max(left, b.left);
-        const h = Math.min(top + height, b.bottom) - Math.max(top, b.top);
-        return sum + (w > 0 && h > 0 ? w * h : 0);
-      }, 0);
+      const covered = boxes.reduce((sum, b) => sum + overlapArea({ left, top, right: left + width, bottom: top + height }, b), 0);
       // the cursor's own pixel stays in sight: a side that would cover it is the last resort
       const onCursor =
         pointer.clientX >= left && pointer.clientX <= left + width && pointer.clientY >= top && pointer.clientY <= top + height;

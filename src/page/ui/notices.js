@@ -11,6 +11,7 @@ import { formatPassMessages } from '../../shadertoy/pass-errors.js';
 import { projectTabs } from '../io/project-files.js';
 import { goBack } from '../app/gpu-context.js';
 import { element } from './dom.js';
+import { extraSamplesViewNote } from '../../shadertoy/extra-samples.js';
 
 /** @typedef {import('../app/app.js').RaytracerApp} RaytracerApp */
 /** @typedef {import('./overlay.js').Overlay} Overlay */
@@ -148,6 +149,26 @@ export function showKeptOffer(parent, name, { open, discard }) {
     ],
     'Keep them for later and close this note',
   );
+}
+
+/**
+ * The line at the bottom of the canvas that says why a debug view shows nothing (the "Extra
+ * samples" view with nothing to mark: extraSamplesViewNote), while it applies.
+ * @param {RaytracerApp} app
+ * @param {HTMLElement} stage
+ */
+export function installViewNote(app, stage) {
+  const note = element('p', { class: 'view-note', role: 'status', hidden: true });
+  stage.append(note);
+  const update = () => {
+    const text = extraSamplesViewNote(app.controls, app.values);
+    note.hidden = text === null;
+    if (text !== null && note.textContent !== text) note.textContent = text;
+  };
+  app.on('state', update);
+  app.on('source', update);
+  update();
+  return note;
 }
 
 // ---- messages in the overlay ----------------------------------------------------------------

@@ -9,14 +9,13 @@ import { Toolbar } from './toolbar.js';
 import { installRecordDialog } from './record-dialog.js';
 import { installShortcuts, watchKeyboard } from './keys.js';
 import { pageActions } from './actions.js';
-import { showLoadNotes } from './notices.js';
+import { installViewNote, showLoadNotes } from './notices.js';
 import { KeptSource } from '../io/kept-source.js';
 import { droppedKind } from '../io/shader-loader.js';
 import { BUILTIN_BASE, shareLink } from '../io/share-link.js';
 import { serializeProject, shaderNotes } from '../io/project-files.js';
 import { openShader } from '../io/open-shader.js';
 import { installInspection } from '../inspect/inspection.js';
-import { installViewNote } from './view-note.js';
 
 /** @typedef {import('../app/app.js').RaytracerApp} RaytracerApp */
 /** @typedef {import('./frame-readout.js').Activity} Activity */
