@@ -140,9 +140,33 @@ describe('layout', () => {
     );
   });
 
-  test('390 wide: the panel does not cover the canvas, closed or open, and its sliders are finger-sized', async () => {
+  test('390 wide: the toolbar keeps the frame time and the name; the panel does not cover the canvas, its sliders finger-sized', async () => {
     await withPage(
       async ({ page, goto }) => {
+        await goto(`${PATTERN}&time=1`);
+        // the frame-time line (its graph left out) and the file's name without its folders, whole
+        const shown = await page.evaluate(() => {
+          const seen = (/** @type {Element} */ e) => {
+            const r = e.getBoundingClientRect();
+            return r.width > 0 && r.height > 0 && r.left >= 0 && r.right <= innerWidth;
+          };
+          const name = /** @type {HTMLElement} */ (document.querySelector('#toolbar .name'));
+          const fps = /** @type {HTMLElement} */ (document.querySelector('#toolbar .fps'));
+          return {
+            fps: seen(fps) && fps.textContent,
+            name: seen(name) && name.innerText,
+            nameClipped: name.scrollWidth > name.clientWidth,
+            title: name.title,
+          };
+        });
+        expect(shown.fps, 'the frame-time line').toMatch(/fps|first frame/);
+        expect(shown).toMatchObject({ name: 'pattern.glsl', nameClipped: false });
+        await goto('?size=64x36'); // the built-in shader, "shaders/raytrace.glsl", a small frame
+        const name = await page.$eval('#toolbar .name', (e) => {
+          const span = /** @type {HTMLElement} */ (e);
+          return [span.innerText, span.title];
+        });
+        expect(name).toEqual(['raytrace.glsl', 'shaders/raytrace.glsl']);
         await goto(`${PATTERN}&time=1`);
         expect(overlap(await box(page, '#view'), await box(page, PANEL)), 'closed panel over the canvas').toBe(0);
         await page.click(`${PANEL} > .lil-title`);

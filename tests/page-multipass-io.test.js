@@ -81,7 +81,7 @@ describe('the whole shader out and back', () => {
         await page.evaluate(() => window.raytracer.setSource('void mainImage(out vec4 c, in vec2 p) { c = vec4(1.0); }'));
         expect(await editorTabs(page)).toEqual({ names: [], selected: null });
         await dropFile(page, 'trip.json', first.text);
-        await named(page, 'trip.json');
+        await named(page, 'Round trip'); // an export goes by its shader's own name
         await page.evaluate(() => window.raytracer.ready);
         expect(await editorTabs(page)).toEqual({ names: ['Common', 'Buffer A', 'Image'], selected: 'Image' });
         expect((await loadNotes(page))?.lines).toHaveLength(2); // the texture and the sound pass, again

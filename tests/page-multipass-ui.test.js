@@ -167,11 +167,15 @@ describe('loading Shadertoy JSON', () => {
     });
   });
 
-  test('dropping a .json file loads it; a broken one is a message naming the file and the problem', async () => {
+  test('dropping a .json file loads it, by the name a paste of it gets; a broken one is a message naming the file', async () => {
     await withPage(async ({ page, goto }) => {
       await goto(PATTERN);
-      await dropFile(page, 'dropped.json', JSON.stringify(exportOf({ name: 'Dropped' })), 'application/json');
-      await named(page, 'dropped.json');
+      // an export that names no shader goes by its file's name
+      await dropFile(page, 'nameless.json', JSON.stringify(exportOf({ name: '' })), 'application/json');
+      await named(page, 'nameless.json');
+      // one that does goes by the shader's own name, as the same export pasted does (below)
+      await dropFile(page, 'dropped.json', JSON.stringify(exportOf({ name: 'Pasted one' })), 'application/json');
+      await named(page, 'Pasted one');
       expect(await editorTabs(page)).toEqual({ names: ['Common', 'Buffer A', 'Image'], selected: 'Image' });
       expect((await info(page)).origin).toBe('file');
 
@@ -180,7 +184,7 @@ describe('loading Shadertoy JSON', () => {
       const notes = await loadNotes(page);
       expect(notes?.title).toBe('Could not load broken.json');
       expect(notes?.lines.join('\n')).toMatch(/has no code/);
-      expect((await info(page)).fileName).toBe('dropped.json'); // the shader running stays
+      expect((await info(page)).fileName).toBe('Pasted one'); // the shader running stays
     });
   });
 

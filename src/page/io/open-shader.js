@@ -13,7 +13,10 @@ import { fetchShader, shaderName } from './shader-loader.js';
  * @typedef {object} ShaderFrom
  * @property {RaytracerApp['origin']} origin
  * @property {string} [name] its name in messages and downloads; omitted: a Shadertoy export's
- *   own name ("untitled" if it has none), and a plain shader keeps the page's current name
+ *   own name (else `fileName`, else "untitled"), and a plain shader `fileName` or, without one,
+ *   the page's current name
+ * @property {string} [fileName] the name of the file it was read from (a dropped file): a
+ *   dropped export goes by the shader's own name, as the same export pasted does
  * @property {string | null} [url] the URL it was fetched from (origin 'url')
  * @property {boolean} [json] it is Shadertoy's JSON export whatever it looks like (a .json file)
  */
@@ -25,9 +28,9 @@ import { fetchShader, shaderName } from './shader-loader.js';
  * @param {ShaderFrom} from
  * @returns {{project: MultipassShader, notes: string[], from: {name?: string, origin: RaytracerApp['origin'], url: string | null, info: object | null}}}
  */
-export function readShader(text, { origin, name, url = null, json = false }) {
+export function readShader(text, { origin, name, fileName, url = null, json = false }) {
   const { model, info, notes } = readShaderText(text, { json: json || (url !== null && isJsonName(url)) });
-  const ownName = info ? String(info.name || 'untitled') : undefined;
+  const ownName = info ? String(info.name || fileName || 'untitled') : fileName;
   return { project: model, notes, from: { name: name ?? ownName, origin, url, info } };
 }
 

@@ -98,7 +98,7 @@ export class Toolbar {
     /** The graph and the line beside it (frame-readout.js). */
     this.readout = new FrameReadout(this.graph, this.fpsText, activity);
 
-    this.nameText = element('span', { class: 'name', title: 'The running shader' });
+    this.nameText = element('span', { class: 'name', title: '' }); // its title: the whole name
     const editButton = element(
       'button',
       {
@@ -202,7 +202,12 @@ export class Toolbar {
       }
       this.speedSelect.value = [...this.speedSelect.options].find((o) => Number(o.value) === speed).value;
     }
-    if (this.nameText.textContent !== name) this.nameText.textContent = name;
+    if (this.nameText.title !== name) {
+      // the folders in their own span, which a phone's toolbar leaves out (style.css)
+      const cut = name.lastIndexOf('/') + 1;
+      this.nameText.title = name;
+      this.nameText.replaceChildren(element('span', { class: 'folder' }, name.slice(0, cut)), name.slice(cut));
+    }
     this.readout.refresh();
   }
 

@@ -247,7 +247,7 @@ export function installUi(app, { builtinSource }) {
         (error) => toast(error.message),
       );
     } else if (kind === 'shader' || kind === 'json') {
-      if (open(await file.text(), file.name, { name: file.name, origin: 'file', json: kind === 'json' })) toast(`Running ${file.name}`);
+      if (open(await file.text(), file.name, { fileName: file.name, origin: 'file', json: kind === 'json' })) toast(`Running ${file.name}`);
     } else {
       toast(`${file.name} is neither a shader (.glsl, Shadertoy's .json) nor an image`);
     }
