@@ -145,6 +145,29 @@ describe('the pixel inspector', () => {
     },
   );
 
+  test("the first pin shows the pixel's colour at once, and says the path is compiling", async () => {
+    await withPage(
+      async ({ page, goto }) => {
+        await goto(DEFAULT_VIEW);
+        // no path probe compiled yet: the colour read must not queue behind its compile
+        await page.evaluate(() => {
+          window.__complete = window.raytracer.inspect(96, 90);
+        });
+        const first = await page
+          .waitForFunction(() => window.raytracer.inspection().readout, { polling: 20 })
+          .then((handle) => handle.jsonValue());
+        expect(first.color).toHaveLength(4);
+        expect(first.path).toBe(null);
+        expect(first.pathNote).toMatch(/^Compiling the path probe/);
+        expect(first.complete).toBe(false);
+        const complete = await page.evaluate(() => window.__complete);
+        expect(complete.path?.rays.length, 'the path, once the probe compiled').toBeGreaterThan(0);
+        expect(complete.color).toEqual(first.color);
+      },
+      { viewport: VIEWPORT },
+    );
+  });
+
   test('the pinned pixel follows time and controls', async () => {
     await withPage(
       async ({ page, goto }) => {

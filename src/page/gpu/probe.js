@@ -114,15 +114,16 @@ export class PixelProbe {
    * @param {number} y
    * @param {number} width
    * @param {number} height
+   * @param {boolean} [withPath] the path probe too, if it has compiled (else the colours only)
    */
-  draw(x, y, width, height) {
+  draw(x, y, width, height, withPath = true) {
     const renderer = this.renderer;
     const [qx, qy] = [x - (x % 2), y - (y % 2)];
     const image = this._imageTarget(Math.min(qx + 2, width), Math.min(qy + 2, height), width, height);
     image.viewport.set(0, 0, width, height);
     renderer.beginStep(renderer.steps[renderer.steps.length - 1], width, height);
     renderer.drawRegion(image, qx, qy, Math.min(2, width - qx), Math.min(2, height - qy));
-    if (!this.step) return;
+    if (!this.step || !withPath) return;
     this.uniforms.probeMode.value = 0;
     this.uniforms.probePixel.value = [x, y];
     renderer.beginStep(this.step, width, height);
@@ -135,9 +136,10 @@ export class PixelProbe {
    * Reads what draw() drew, once the GPU has finished it.
    * @param {number} x
    * @param {number} y
+   * @param {boolean} [withPath] as draw() was given it
    * @returns {ProbeResult}
    */
-  read(x, y) {
+  read(x, y, withPath = true) {
     const renderer = this.renderer;
     const three = renderer.three;
     const floats = (target, px, py, w = 1) => {
@@ -150,7 +152,7 @@ export class PixelProbe {
     const buffers = {};
     for (const name of renderer.buffers.names()) buffers[name] = floats(renderer.buffers.lastWritten(name), x, y);
     const image = floats(this._image, x, y);
-    if (!this.step) return { image, canvas, buffers, path: null, extraSamples: null, probeKey: null };
+    if (!this.step || !withPath) return { image, canvas, buffers, path: null, extraSamples: null, probeKey: null };
     const shown = floats(this._quad, x % 2, y % 2).map((v) => Math.round(Math.min(Math.max(v, 0), 1) * 255));
     const extraSamples = edgeKind(shown, 0) !== null; // one of the view's colours, not its grey
     return { image, canvas, buffers, path: floats(this._records, 0, 0, PROBE_TEXELS), extraSamples, probeKey: this.key };

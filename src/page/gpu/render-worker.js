@@ -38,6 +38,8 @@ const PRESENT_EVERY_MS = 250;
  * @property {boolean} [float] a capture read as RGBA32F
  * @property {'aa-pixels'} [program] a capture of the path probe's mainImage instead of the Image pass
  * @property {{x: number, y: number}} [pixel] a probe's pixel (y from the bottom)
+ * @property {boolean} [warmUp] a probe that is the path probe's first draw (compileProbe's)
+ * @property {boolean} [withPath] a probe that draws the path probe too (startProbe decides)
  * @property {(result: any) => void} resolve
  * @property {(error: Error) => void} reject
  */
@@ -47,6 +49,8 @@ let renderer = null;
 const planner = new BandPlanner();
 /** @type {Job | null} */
 let job = null;
+/** A compiled path probe's first draw is still to come (compileProbe's warm-up job). */
+let probeWarming = false;
 /** Jobs waiting for the one under way. @type {Job[]} */
 const waiting = [];
 /** The band the GPU is drawing (`warmUp`: a new program's first quad, see pump; `compiling`: the
@@ -159,11 +163,15 @@ function startProbe(probe) {
     return pump();
   }
   writeUniforms(renderer.uniforms, lastFrame);
-  renderer.probe.draw(x, y, width, height);
-  // the path probe's first draw compiles it (pump): the watchdog is told so
+  // The path probe's first draw compiles it (pump: seconds for the torus scene), and the watchdog
+  // is told so. A pixel asked for while that draw is still to come (compileProbe's warm-up job,
+  // queued behind it) gets its colour at once, without the path.
   const material = renderer.probe.step?.material;
-  const compiling = Boolean(material) && !drawnPrograms.has(material);
-  if (compiling) drawnPrograms.add(material);
+  const warm = Boolean(material) && drawnPrograms.has(material);
+  probe.withPath = Boolean(material) && (warm || probe.warmUp || !probeWarming);
+  renderer.probe.draw(x, y, width, height, probe.withPath);
+  const compiling = probe.withPath && !warm;
+  if (compiling) drawnPrograms.add(/** @type {object} */ (material));
   startBand(1, { compiling });
 }
 
@@ -192,7 +200,7 @@ function bandDone(rows, ms) {
     job = null;
     tell('band', { kind: 'probe', y: 1, height: 1, bitmap: null });
     /** @type {ProbedPixel} */
-    const probed = { ...renderer.probe.read(probe.pixel.x, probe.pixel.y), inputs: lastFrame };
+    const probed = { ...renderer.probe.read(probe.pixel.x, probe.pixel.y, probe.withPath), inputs: lastFrame };
     probe.resolve(probed);
     return;
   }
@@ -304,13 +312,31 @@ const tell = serve(
     },
 
     async compileProbe({ project, hostBlock, fileName, key }) {
-      await renderer.probe.compile(project, hostBlock, fileName, key);
+      probeWarming = true;
+      try {
+        await renderer.probe.compile(project, hostBlock, fileName, key);
+        // its first draw, queued behind what is asked already: a pixel asked for before that is
+        // read without waiting for it (startProbe); the reply comes once the probe is ready
+        if (lastFrame)
+          await enqueue({
+            kind: 'probe',
+            inputs: null,
+            width: 1,
+            height: 1,
+            readBack: true,
+            target: null,
+            pixel: { x: 0, y: 0 },
+            warmUp: true,
+          });
+      } finally {
+        probeWarming = false;
+      }
       return null;
     },
 
     probe({ x, y }) {
       // a newer probe replaces one that has not started
-      const stale = waiting.findIndex((queued) => queued.kind === 'probe');
+      const stale = waiting.findIndex((queued) => queued.kind === 'probe' && !queued.warmUp);
       if (stale >= 0) waiting.splice(stale, 1)[0].reject(new Error('replaced by a newer probe'));
       return enqueue({ kind: 'probe', inputs: null, width: 1, height: 1, readBack: true, target: null, pixel: { x, y } });
     },

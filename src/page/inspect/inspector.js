@@ -177,16 +177,18 @@ export class Inspector extends Emitter {
     if (!pinned) return;
     const program = this.program;
     const wantsPath = program.unavailable === null;
-    if (wantsPath && !program.ready && !program.compiling) {
-      // compiled once; the next read has the path (or says why not)
-      program.ensure().then(
-        () => this.request(),
-        () => this.request(),
-      );
-    }
     let probed;
     try {
-      probed = await app.gpu.ask('probe', { x: pinned.x, y: pinned.y });
+      // asked before the probe's compile, which the worker would do first (seconds for the torus)
+      const asked = app.gpu.ask('probe', { x: pinned.x, y: pinned.y });
+      if (wantsPath && !program.ready && !program.compiling) {
+        // compiled once; the next read has the path (or says why not)
+        program.ensure().then(
+          () => this.request(),
+          () => this.request(),
+        );
+      }
+      probed = await asked;
     } catch (error) {
       if (/replaced by a newer/.test(error.message)) return;
       this.problem = app.gpu.contextLost ? LOST : `Could not read the pixel: ${error.message}.`;
