@@ -77,6 +77,27 @@ describe('Converge when still', () => {
     });
   });
 
+  test('while converging, Compare and the path say why they are not there and how to turn it off', async () => {
+    await withPage(async ({ page, goto }) => {
+      await goto(`?size=${WIDTH}x${HEIGHT}&time=0`);
+      await page.evaluate(() => window.raytracer.setConverging(true, { frames: 2 }));
+      const refused = await page.evaluate(() =>
+        window.raytracer.compareWithFloat64().then(
+          () => null,
+          (e) => e.message,
+        ),
+      );
+      for (const said of [refused, (await page.evaluate(() => window.raytracer.inspect(20, 20))).pathNote]) {
+        expect(said).toMatch(/Converge when still.*turn that off \(Controls → View\)/);
+        expect(said).not.toMatch(/buffers of its own/);
+      }
+      // off again: both are there
+      await page.evaluate(() => window.raytracer.setConverging(false));
+      const readout = await page.evaluate(() => window.raytracer.inspect(20, 20));
+      expect(readout.path?.rays.length).toBeGreaterThan(0);
+    });
+  });
+
   test('a shader that is not the raytracer cannot converge: the toggle is off limits and the hook says why', async () => {
     await withPage(async ({ page, goto }) => {
       await goto(`?shader=examples/pattern.glsl&size=${WIDTH}x${HEIGHT}&time=0`);

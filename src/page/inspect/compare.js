@@ -81,6 +81,8 @@ export class Comparison extends Emitter {
 
   /** Why the app's shader cannot be compared, or null. */
   get unavailable() {
+    if (this.app.converge.on)
+      return 'Compare with float64 measures one frame of the raytracer, not the mean that "Converge when still" sums: turn that off (Controls → View) to compare';
     const why = this.program.unavailable;
     return why
       ? `Compare with float64 is for the built-in raytracer: ${why.replace(/^the path is for the built-in raytracer: /, '')}`

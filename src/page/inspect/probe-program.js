@@ -15,6 +15,14 @@ import { pathProbeHostBlock, pathProbeProject } from '../../shadertoy/path-probe
 
 /** @typedef {import('../app/app.js').RaytracerApp} RaytracerApp */
 
+/**
+ * Why there is no path while "Converge when still" runs the raytracer's progressive form: each of
+ * its frames adds a jittered sample to a buffer, and the picture is their mean, which no one ray
+ * path (and no one float64 colour) describes.
+ */
+export const CONVERGING =
+  'the path and the float64 colour are of one frame of the raytracer, not of the mean that "Converge when still" sums: turn that off (Controls → View) to see them';
+
 export class ProbeProgram {
   /** @param {RaytracerApp} app */
   constructor(app) {
@@ -37,6 +45,7 @@ export class ProbeProgram {
   /** Why the app's shader has no path probe, or null when it has one. */
   get unavailable() {
     const app = this.app;
+    if (app.converge.on) return CONVERGING;
     if (app.isMultipass) return 'the path is for the built-in raytracer: this shader has buffers of its own';
     const missing = missingRaytracerFunctions(app.source);
     if (missing.length) return `the path is for the built-in raytracer: this shader has no ${missing.join(', ')}`;
