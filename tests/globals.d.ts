@@ -161,6 +161,8 @@ declare global {
     __benchmark: BenchmarkPage;
     /** Set by page-helpers.js's nextFrame(): the frame it waits for. */
     __nextFrame: ReturnType<RaytracerHook['nextFrame']>;
+    /** Set by page-heavy.test.js's compile test: hold back the next compiling band's messages this long. */
+    __holdCompileMs: number;
     /** Set by the first-pin test (tests/page-inspector.test.js): the complete readout to come. */
     __complete: ReturnType<RaytracerHook['inspect']>;
     /** Set by the lost-context test (tests/page-lifecycle.test.js). */

@@ -8,7 +8,7 @@ import puppeteer from 'puppeteer-core';
 import { CHROME_ARGS } from './harness/setup.js';
 import { findChrome } from './harness/chrome-path.js';
 import { harnessContext } from './harness/page.js';
-import { info, nextFrame, pixel, withPage, withServedDir } from './page-helpers.js';
+import { button, info, nextFrame, openEditor, pixel, typeInEditor, withControl, withPage, withServedDir } from './page-helpers.js';
 import { SHORT_TIMEOUTS } from './harness/config.js';
 import fs from 'node:fs';
 import path from 'node:path';
@@ -161,6 +161,89 @@ describe('heavy frames are drawn in bands, and the page keeps answering', () => 
         expect(await noteAfterFrame, 'the hang note after the first finished frame').toBeNull();
       }, REAL_CLOCKS);
     });
+  });
+});
+
+/**
+ * Before the page loads: the messages the render worker sends the page can be held back. Once the
+ * test sets window.__holdCompileMs, the band of a program's first draw (the worker's
+ * "bandStarted" with `compiling`) and everything after it reach the page that much later, in
+ * order: to the page, that first draw took so long. SwiftShader's own compile time varies from
+ * run to run (its caches), so this is how a test gets a compile that outlasts the watchdog.
+ */
+function holdCompileBands() {
+  const Native = window.Worker;
+  window.Worker = class extends Native {
+    set onmessage(handler) {
+      /** @type {MessageEvent[] | null} */
+      let held = null;
+      super.onmessage = (/** @type {MessageEvent} */ event) => {
+        if (held) return void held.push(event);
+        const { kind, type, params } = event.data ?? {};
+        if (window.__holdCompileMs && kind === 'event' && type === 'bandStarted' && params?.compiling) {
+          handler(event);
+          held = [];
+          setTimeout(() => {
+            const queued = /** @type {MessageEvent[]} */ (held);
+            held = null;
+            for (const e of queued) handler(e);
+          }, window.__holdCompileMs);
+          window.__holdCompileMs = 0; // once
+          return;
+        }
+        handler(event);
+      };
+    }
+  };
+}
+
+describe('a first draw that compiles for long is not a hang', () => {
+  test('the watchdog says "Compiling", the record says compiling, and the first frame clears both', async () => {
+    const hold = 3 * HANG_AFTER_MS;
+    expect(hold, 'the hold ends before the compile watchdog would call it a hang').toBeLessThan(SHORT_TIMEOUTS.compileHangMs);
+    await withPage(
+      async ({ page, goto }) => {
+        await goto(`?shader=examples/pattern.glsl&${SIZE}`);
+        await page.evaluate((ms) => {
+          window.__holdCompileMs = ms;
+          // a new program: its first draw compiles
+          void window.raytracer.setSource('void mainImage(out vec4 c, in vec2 p) { c = vec4(0.25, p.x / 128.0, 0.5, 1.0); }');
+        }, hold);
+        await page.waitForFunction(() => document.documentElement.dataset.hung, { polling: 20, timeout: 30_000 });
+        expect(await page.evaluate(() => document.documentElement.dataset.hung)).toBe('compiling');
+        expect(await page.$eval('[role="alert"]', (e) => e.textContent)).toMatch(/^Compiling pattern\.glsl/);
+        expect(await hangNote(page)).toMatchObject({ phase: 'compiling' });
+        // the held band arrives: the first frame follows, the message goes and the record with it
+        const noteAfterFrame = page.evaluate(() => window.raytracer.nextFrame().then(() => localStorage.getItem('shadertoy-runner.hung')));
+        await page.waitForFunction(() => !document.documentElement.dataset.hung, { polling: 50, timeout: 30_000 });
+        expect(await noteAfterFrame, 'the record after the first finished frame').toBeNull();
+        expect((await info(page)).hung).toBe(false);
+      },
+      { ...REAL_CLOCKS, beforeLoad: (page) => page.evaluateOnNewDocument(holdCompileBands) },
+    );
+  });
+
+  test('a reload while it compiles says it was compiling (not an endless loop), and offers to run it', async () => {
+    await withPage(
+      async ({ page, goto }) => {
+        const query = `?shader=examples/pattern.glsl&${SIZE}`;
+        await goto(query);
+        // an edit, typed (the page keeps it, and runs it again after a reload), whose first draw takes long
+        await page.evaluate((ms) => (window.__holdCompileMs = ms), 60_000);
+        await openEditor(page);
+        await typeInEditor(page, '\nconst float AN_EDIT = 1.0;', 'end');
+        await withControl(page, 'Enter');
+        await page.waitForFunction(() => document.documentElement.dataset.hung === 'compiling', { polling: 20, timeout: 30_000 });
+        await page.reload({ waitUntil: 'load' });
+        await page.waitForFunction(() => /was still compiling when the page closed/.test(document.body.innerText), {
+          polling: 50,
+          timeout: 30_000,
+        });
+        expect(await page.evaluate(() => document.body.innerText)).not.toMatch(/endless loop\?|did not finish drawing/);
+        expect(await button(page, 'Run pattern.glsl (edited)')).toBeTruthy();
+      },
+      { ...REAL_CLOCKS, beforeLoad: (page) => page.evaluateOnNewDocument(holdCompileBands) },
+    );
   });
 });
 
