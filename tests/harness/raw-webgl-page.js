@@ -159,5 +159,5 @@ function evaluateFloat(fragment, { width, height, table, tableHeight, tableUnifo
 }
 
 const rawWebGL = { context, program, setUniform, setShadertoyUniforms, readBase64, render, evaluateFloat };
-/** @typedef {typeof rawWebGL} RawWebGL window.__rawWebGL (tests/globals.d.ts) */
+/** @typedef {typeof rawWebGL} RawWebGL window.__rawWebGL (tests/globals.ts) */
 window.__rawWebGL = rawWebGL;
