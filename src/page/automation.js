@@ -75,7 +75,7 @@ import { singlePass } from '../shadertoy/multipass.js';
 const hooked = window;
 
 /**
- * @param {import('./app/app.js').RaytracerApp | null} app null when the page could not start
+ * @param {import('./app/app.js').RaytracerApp} app (a page that could not start has installFailedAutomation)
  * @param {Promise<void>} ready
  * @param {ReturnType<typeof import('./ui/ui.js').installUi>} ui
  */
@@ -103,7 +103,9 @@ export function installAutomation(app, ready, ui) {
     async renderFrames(n = 1) {
       await settled();
       await app.frames.draw(); // sizes the worker's frame, as the page draws it
-      const times = await app.gpu.ask('bench', { inputs: app.frames.last, n });
+      const inputs = app.frames.last;
+      if (!inputs) throw new Error(app.gpu.contextLost ? 'the GPU context is lost' : 'no shader is running');
+      const times = await app.gpu.ask('bench', { inputs, n });
       return { median: median(times), times };
     },
 

@@ -183,7 +183,7 @@ function runAgain(app, version) {
 
 async function start() {
   const canvas = /** @type {HTMLCanvasElement} */ (document.getElementById('view'));
-  const overlay = new Overlay(document.getElementById('overlay'));
+  const overlay = new Overlay(/** @type {HTMLElement} */ (document.getElementById('overlay')));
   const stage = /** @type {HTMLElement} */ (document.getElementById('stage'));
   const params = parseUrlParams(location.search, location.href);
   for (const warning of params.warnings) console.warn(warning);

@@ -123,7 +123,7 @@ function makeScene(s) {
       if (id === ID_GROUND && h[0] > 0) ground = { t: h[0], n: [h[1], h[2], h[3]], id };
       if (h[0] > 0 && (!best || h[0] < best.t)) best = { t: h[0], n: [h[1], h[2], h[3]], id };
     }
-    if (!ground || best.id === ID_GROUND) return best;
+    if (!ground || !best || best.id === ID_GROUND) return best; // (a ground hit is a hit: best is set)
     const fromEye = sub(ro, eye);
     const height = ro[1] + best.t * rd[1];
     const band = s.GROUND_BAND_ULPS * s.EPS32 * (ground.t + Math.max(...fromEye.map(Math.abs)) + Math.abs(eye[1]));
@@ -177,6 +177,11 @@ function makeScene(s) {
    * it: over the eye ray's exact footprint, and over a ray cone of coneSpread for reflected rays.
    * Without, it is point-sampled. With `path` (an array), each ray's hit is pushed onto it as the
    * shader's path probe records it (src/shadertoy/path-probe.js: PathRay).
+   * @param {number[]} eye
+   * @param {number[]} rd
+   * @param {number} coneSpread
+   * @param {{dirDx: number[], dirDy: number[]} | null} differentials
+   * @param {Array<{id: number, t: number, normal: number[], lit: boolean | null, weight: number}> | null} [path]
    */
   function radiance(eye, rd, coneSpread, differentials, path = null) {
     let ro = eye;
@@ -276,7 +281,9 @@ export function renderReference(shaderSource, view, { mode = 'same-rays', sample
   if (!converged && mode !== 'same-rays') throw new Error(`reference: unknown mode ${mode}`);
   const gridPerAxis = converged ? samplesPerAxis : Math.round(Math.sqrt(s.SAMPLES));
   const adaptive = !converged && s.ADAPTIVE_AA === 1 && gridPerAxis > 1;
-  if (adaptive && !extraSamples) {
+  // which pixels take the grid of samples; null: every pixel does
+  const mask = adaptive ? extraSamples : null;
+  if (adaptive && !mask) {
     throw new Error(
       'reference: adaptive anti-aliasing needs extraSamples, the pixels the shader gave extra samples (its "Extra samples" debug VIEW view)',
     );
@@ -296,7 +303,7 @@ export function renderReference(shaderSource, view, { mode = 'same-rays', sample
         });
         continue;
       }
-      const grid = !adaptive || extraSamples[row * width + x] !== 0;
+      const grid = !mask || mask[row * width + x] !== 0;
       const perAxis = grid ? gridPerAxis : 1;
       const sum = [0, 0, 0];
       for (let i = 0; i < perAxis * perAxis; i++) {

@@ -297,7 +297,8 @@ export function coerceControlValue(control, value) {
       const values = control.options.map((o) => o.value);
       return values.reduce((best, x) => (Math.abs(x - n) < Math.abs(best - n) ? x : best), values[0]);
     }
-    if (range.min !== undefined) n = Math.min(range.max, Math.max(range.min, n));
+    // a range has both ends or neither (parseRange)
+    if (range.min !== undefined && range.max !== undefined) n = Math.min(range.max, Math.max(range.min, n));
     if (control.type === 'int') n = Math.round(n);
     return n;
   };

@@ -96,7 +96,7 @@ const KEY_TO_KEYCODE = Object.freeze({
  */
 export function keyCodeOf(event) {
   const direct = event.keyCode;
-  if (Number.isInteger(direct) && direct > 0) return direct < KEYBOARD_WIDTH ? direct : null;
+  if (typeof direct === 'number' && Number.isInteger(direct) && direct > 0) return direct < KEYBOARD_WIDTH ? direct : null;
   const code = event.code ?? '';
   let m;
   if ((m = code.match(/^Key([A-Z])$/))) return m[1].charCodeAt(0);
@@ -167,4 +167,5 @@ export class KeyboardState {
   }
 }
 
-const validKey = (k) => Number.isInteger(k) && k > 0 && k < KEYBOARD_WIDTH;
+/** @type {(k: number | null) => k is number} */
+const validKey = (k) => k !== null && Number.isInteger(k) && k > 0 && k < KEYBOARD_WIDTH;

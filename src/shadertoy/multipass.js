@@ -36,8 +36,9 @@ export const BUFFER_NAMES = Object.freeze(/** @type {const} */ (['A', 'B', 'C', 
  *   supported: false, sampler: Sampler, extra?: Record<string, any>}} MediaChannel media the page cannot
  *   have: the renderer binds a black texture (of the sampler type the kind needs) and shows a note
  * @typedef {BufferChannel | KeyboardChannel | MediaChannel} Channel
- * @typedef {{name: string, kind: 'buffer' | 'image', buffer: BufferName | null, code: string,
- *   channels: Array<Channel | null>, extra?: Record<string, any>}} Pass four channels, null = nothing bound
+ * @typedef {{name: string, code: string, channels: Array<Channel | null>, extra?: Record<string, any>}
+ *   & ({kind: 'buffer', buffer: BufferName} | {kind: 'image', buffer: null})} Pass four channels, null = nothing bound;
+ *   a buffer pass writes its buffer, the Image pass none
  * @typedef {{common: string | null, passes: Pass[], extra?: Record<string, any>}} MultipassShader
  */
 
@@ -81,15 +82,16 @@ export function validateModel(model) {
   const seen = new Set();
   for (const pass of model.passes) {
     const where = pass.name || '(unnamed pass)';
-    if (pass.kind !== 'image' && pass.kind !== 'buffer')
-      throw new MultipassError(`${where}: unknown pass kind ${JSON.stringify(pass.kind)}`);
+    // as a file may have them: what the checks are for
+    const { kind, buffer } = /** @type {{kind: string, buffer: string | null}} */ (pass);
+    if (kind !== 'image' && kind !== 'buffer') throw new MultipassError(`${where}: unknown pass kind ${JSON.stringify(kind)}`);
     if (typeof pass.code !== 'string') throw new MultipassError(`${where}: its code is not text`);
     if (pass.kind === 'buffer') {
       if (!BUFFER_NAMES.includes(pass.buffer)) throw new MultipassError(`${where}: writes no buffer A–D (${JSON.stringify(pass.buffer)})`);
       if (seen.has(pass.buffer)) throw new MultipassError(`${where}: Buffer ${pass.buffer} is written by two passes`);
       seen.add(pass.buffer);
-    } else if (pass.buffer !== null) {
-      throw new MultipassError(`${where}: the Image pass writes the screen, not Buffer ${pass.buffer}`);
+    } else if (buffer !== null) {
+      throw new MultipassError(`${where}: the Image pass writes the screen, not Buffer ${buffer}`);
     }
     if (!Array.isArray(pass.channels) || pass.channels.length !== 4) throw new MultipassError(`${where}: needs exactly four channels`);
     pass.channels.forEach((channel, i) => {
@@ -123,20 +125,25 @@ export function validateModel(model) {
  * @returns {Pass[]}
  */
 export function renderOrder(model) {
-  const buffers = BUFFER_NAMES.map((b) => model.passes.find((p) => p.kind === 'buffer' && p.buffer === b)).filter(Boolean);
-  return [...buffers, model.passes.find((p) => p.kind === 'image')];
+  const buffers = BUFFER_NAMES.map((b) => model.passes.find((p) => p.kind === 'buffer' && p.buffer === b)).filter((p) => p !== undefined);
+  const image = model.passes.find((p) => p.kind === 'image');
+  if (!image) throw new MultipassError('a shader needs exactly one Image pass, this one has 0');
+  return [...buffers, image];
 }
 
 /**
- * @typedef {object} ChannelBinding what one channel of one pass reads in a frame
+ * What one channel of one pass reads in a frame. `source` is 'black' for media the page cannot
+ * have. For a buffer, `frame` is the texture written this frame before this pass ('current') or
+ * the one from last frame ('previous': the pass itself, or a buffer that paints after it).
+ * @typedef {ChannelBindingBase & ({source: 'buffer', buffer: BufferName, frame: 'current' | 'previous', sampler: Sampler}
+ *   | {source: 'keyboard' | 'black', buffer?: undefined, frame?: undefined, sampler: Sampler}
+ *   | {source: 'none', buffer?: undefined, frame?: undefined, sampler?: undefined})} ChannelBinding
+ */
+
+/**
+ * @typedef {object} ChannelBindingBase
  * @property {number} channel 0..3
- * @property {'buffer' | 'keyboard' | 'black' | 'none'} source 'black' for media the page cannot have
- * @property {BufferName} [buffer] for a buffer
- * @property {'current' | 'previous'} [frame] for a buffer: the texture written this frame before
- *   this pass ('current') or the one from last frame ('previous': the pass itself, or a buffer
- *   that paints after it)
  * @property {'2D' | 'Cube' | '3D'} samplerType the GLSL sampler the header declares
- * @property {Sampler} [sampler]
  * @property {[number, number, number] | 'canvas'} resolution iChannelResolution: 'canvas' for a
  *   buffer ((width, height, 1) of the canvas), (256, 3, 1) for the keyboard, 0 for nothing; a
  *   black stand-in texture is (1, 1, 1)
@@ -152,16 +159,17 @@ export function renderOrder(model) {
  */
 export function frameSchedule(model) {
   const order = renderOrder(model);
-  const position = new Map(order.map((p, i) => [p, i]));
-  const writer = (/** @type {BufferName} */ b) => order.find((p) => p.buffer === b);
-  return order.map((pass) => ({
+  // where in the order buffer b is written (-1: no pass writes it, as validateModel rules out)
+  const written = (/** @type {BufferName} */ b) => order.findIndex((p) => p.buffer === b);
+  return order.map((pass, index) => ({
     pass,
     target: pass.kind === 'image' ? 'screen' : pass.buffer,
     bindings: pass.channels.map((channel, i) => {
       /** @type {ChannelBinding} */
       if (channel === null) return { channel: i, source: 'none', samplerType: '2D', resolution: [0, 0, 0] };
       if (channel.kind === 'buffer') {
-        const earlier = position.get(writer(channel.buffer)) < position.get(pass);
+        const at = written(channel.buffer);
+        const earlier = at >= 0 && at < index;
         return {
           channel: i,
           source: 'buffer',

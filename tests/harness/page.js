@@ -179,7 +179,7 @@ async function renderViewOnce(view) {
       .catch((error) => {
         throw fail(`${error.message}${navigations > 1 ? ` (the page navigated ${navigations} times)` : ''}`);
       });
-    if (result.error) throw fail(result.error);
+    if (result.error !== undefined) throw fail(result.error);
     if (result.datasetError) throw fail(`the page reports an error: ${result.datasetError}`);
     if (!(result.frame >= 1)) throw fail(`no rendered frame: canvas data-frame is ${result.frame}`);
     const { pixels, info } = result;

@@ -32,19 +32,21 @@ function context(width, height, attributes = {}) {
 function program(gl, fragment) {
   const compile = (type, text) => {
     const shader = gl.createShader(type);
+    if (!shader) throw new Error('createShader failed: the WebGL2 context is lost');
     gl.shaderSource(shader, text);
     gl.compileShader(shader);
     return shader;
   };
   const vs = compile(gl.VERTEX_SHADER, VERTEX);
-  if (!gl.getShaderParameter(vs, gl.COMPILE_STATUS)) return { stage: 'vertex', log: gl.getShaderInfoLog(vs) };
+  if (!gl.getShaderParameter(vs, gl.COMPILE_STATUS)) return { stage: 'vertex', log: gl.getShaderInfoLog(vs) ?? '' };
   const fs = compile(gl.FRAGMENT_SHADER, fragment);
-  if (!gl.getShaderParameter(fs, gl.COMPILE_STATUS)) return { stage: 'compile', log: gl.getShaderInfoLog(fs) };
+  if (!gl.getShaderParameter(fs, gl.COMPILE_STATUS)) return { stage: 'compile', log: gl.getShaderInfoLog(fs) ?? '' };
   const linked = gl.createProgram();
+  if (!linked) throw new Error('createProgram failed: the WebGL2 context is lost');
   gl.attachShader(linked, vs);
   gl.attachShader(linked, fs);
   gl.linkProgram(linked);
-  if (!gl.getProgramParameter(linked, gl.LINK_STATUS)) return { stage: 'link', log: gl.getProgramInfoLog(linked) };
+  if (!gl.getProgramParameter(linked, gl.LINK_STATUS)) return { stage: 'link', log: gl.getProgramInfoLog(linked) ?? '' };
   gl.useProgram(linked);
   return { program: linked };
 }
@@ -114,8 +116,7 @@ function render(fragment, { width, height, uniforms = {} }) {
   if (!gl) return { stage: 'setup', log: 'no WebGL2 context' };
   document.body.appendChild(/** @type {HTMLCanvasElement} */ (gl.canvas));
   const built = program(gl, fragment);
-  // (with strictNullChecks off, a truthy `stage` does not narrow the union: say what it is)
-  if (built.stage) return /** @type {RawRenderFailure} */ (built);
+  if (built.stage) return { stage: built.stage, log: built.log };
   try {
     setShadertoyUniforms(gl, built.program, { width, height, overrides: uniforms });
   } catch (error) {
@@ -127,7 +128,10 @@ function render(fragment, { width, height, uniforms = {} }) {
   return { data, glError: gl.getError(), renderer: rendererName(gl) };
 }
 
-/** A fragment shader over a table of inputs, read back as RGBA32F (see evaluateFloatShader). */
+/**
+ * A fragment shader over a table of inputs, read back as RGBA32F (see evaluateFloatShader).
+ * @returns {{error: string, data?: undefined} | {data: number[], error?: undefined}}
+ */
 function evaluateFloat(fragment, { width, height, table, tableHeight, tableUniform }) {
   const gl = document.createElement('canvas').getContext('webgl2');
   if (!gl) return { error: 'no WebGL2 context' };
@@ -159,5 +163,5 @@ function evaluateFloat(fragment, { width, height, table, tableHeight, tableUnifo
 }
 
 const rawWebGL = { context, program, setUniform, setShadertoyUniforms, readBase64, render, evaluateFloat };
-/** @typedef {typeof rawWebGL} RawWebGL window.__rawWebGL (tests/globals.d.ts) */
+/** @typedef {typeof rawWebGL} RawWebGL window.__rawWebGL (tests/globals.ts) */
 window.__rawWebGL = rawWebGL;

@@ -55,8 +55,7 @@ export async function renderRawShader(code, { width, height, uniforms = {} }) {
       uniforms,
     });
     if (errors.length) throw new Error(`raw WebGL2 page logged errors:\n  ${errors.join('\n  ')}`);
-    // (with strictNullChecks off, a truthy `stage` does not narrow the union: say what it is)
-    if (result.stage) return /** @type {RawShaderFailure} */ (result);
+    if (result.stage) return { stage: result.stage, log: result.log };
     return {
       width,
       height,
@@ -86,7 +85,7 @@ export async function evaluateFloatShader(code, { width, height, table, tableHei
       tableUniform,
     });
     if (errors.length) throw new Error(`float WebGL2 page logged errors:\n  ${errors.join('\n  ')}`);
-    if (result.error) throw new Error(`evaluateFloatShader: ${result.error}`);
+    if (result.error !== undefined) throw new Error(`evaluateFloatShader: ${result.error}`);
     return new Float32Array(result.data);
   } finally {
     await page.close().catch(() => {});

@@ -61,7 +61,7 @@ export function watchPage(page, browser, { waitTimeoutMs = WAIT_TIMEOUT_MS } = {
   /** @type {(why: string) => void} */
   let onCrash = () => {};
   const crashed = new Promise((resolve) => (onCrash = resolve));
-  const setCrash = (why) => {
+  const setCrash = (/** @type {string} */ why) => {
     crash ??= why;
     onCrash(crash);
   };
@@ -86,9 +86,11 @@ export function watchPage(page, browser, { waitTimeoutMs = WAIT_TIMEOUT_MS } = {
           const overlay = /** @type {HTMLElement | null} */ (document.querySelector('[role="alert"]'));
           /** @type {object | null} */
           let info;
+          // the hook may not be there yet, or not whole: this page is being asked why it is stuck
+          const hook = /** @type {Partial<import('../globals.js').RaytracerHook> | undefined} */ (window.raytracer);
           try {
-            const { fileName, origin, time, playing, width, height } = window.raytracer?.info?.() ?? {};
-            info = window.raytracer?.info ? { fileName, origin, time, playing, width, height } : null;
+            const { fileName, origin, time, playing, width, height } = hook?.info?.() ?? {};
+            info = hook?.info ? { fileName, origin, time, playing, width, height } : null;
           } catch (error) {
             info = { error: String(error?.message ?? error) };
           }

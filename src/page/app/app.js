@@ -188,7 +188,7 @@ export class RaytracerApp extends Emitter {
     if (from.name) this.fileName = from.name;
     if (from.origin) {
       this.origin = from.origin;
-      this.shaderUrl = from.origin === 'url' ? from.url : from.origin === 'editor' ? this.shaderUrl : null;
+      this.shaderUrl = from.origin === 'url' ? (from.url ?? null) : from.origin === 'editor' ? this.shaderUrl : null;
     }
     this.controls = controls;
     this.values = values;

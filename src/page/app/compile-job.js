@@ -28,7 +28,7 @@ export class CompileJob {
     this._runningSerial = 0;
     /** The shader on screen before `running`, with its compile's number (a frame under way may still be its). @type {{serial: number, version: ShaderVersion} | null} */
     this._before = null;
-    /** The load (ShaderVersion.load) whose clock was started: a newly loaded shader starts at iFrame 0. */
+    /** The load (ShaderVersion.load) whose clock was started: a newly loaded shader starts at iFrame 0. @type {number | undefined} */
     this._clockOf = 0;
   }
 
@@ -68,7 +68,7 @@ export class CompileJob {
     if (app.gpu.contextLost) {
       // compiled when the context comes back: this job ends as the compile started then does
       /** @type {Promise<void>} */
-      const job = new Promise((resolve) => app.once('context', () => resolve(this.latest)));
+      const job = new Promise((resolve) => app.once('context', () => resolve(this.latest ?? undefined)));
       this.latest = job;
       return job;
     }

@@ -164,21 +164,22 @@ export class FrameLoop {
 
   /**
    * The last drawn frame drawn again at width × height (default: its own size), with the same
-   * iTime, iFrame, iDate, and iMouse scaled to the new size. Rows top to bottom.
+   * iTime, iFrame, iDate, and iMouse scaled to the new size. Rows top to bottom; `time` is its iTime.
    * @param {{width: number, height: number} | null} [size]
-   * @returns {Promise<{width:number, height:number, data:Uint8Array}>}
+   * @returns {Promise<{width:number, height:number, data:Uint8Array, time: number}>}
    */
   async capture(size = null) {
     const app = this.app;
     if (!app.compiles.hasProgram || app.gpu.contextLost) throw new Error('nothing to capture: no shader is running');
     if (!this.last) await this.draw();
-    const last = /** @type {FrameInputs} */ (this.last);
+    const last = this.last;
+    if (!last) throw new Error('nothing to capture: the GPU context is lost');
     // a multipass shader's buffers are the canvas's size: its Image pass is drawn again over them
     // as they are, which only means the same picture at the same size
     const wanted = size && !app.isMultipass ? size : { width: last.width, height: last.height };
     const rounded = { width: Math.max(1, Math.round(wanted.width)), height: Math.max(1, Math.round(wanted.height)) };
     const { width, height } = fitGpu(rounded, app.gpu.maxSize, 'screenshot size');
-    return { width, height, data: await app.gpu.ask('capture', { inputs: last, width, height, allPasses: false }) };
+    return { width, height, data: await app.gpu.ask('capture', { inputs: last, width, height, allPasses: false }), time: last.time };
   }
 
   /** Puts a bitmap from the worker on the canvas (sized to it: the mouse maps through that size). @param {ImageBitmap} bitmap */

@@ -160,7 +160,7 @@ export class RenderClient extends Emitter {
     const id = ++this._serial;
     return new Promise((resolve, reject) => {
       this._pending.set(id, { resolve, reject });
-      this.worker.postMessage({ kind: 'request', id, type, params }, transferables(params));
+      this._spawned().postMessage({ kind: 'request', id, type, params }, transferables(params));
     });
   }
 
@@ -171,7 +171,13 @@ export class RenderClient extends Emitter {
    * @param {Commands[K]} params
    */
   tell(type, params) {
-    this.worker.postMessage({ kind: 'command', type, params }, transferables(params));
+    this._spawned().postMessage({ kind: 'command', type, params }, transferables(params));
+  }
+
+  /** The worker: start() spawns it before anything is asked or told. */
+  _spawned() {
+    if (!this.worker) throw new Error('the render worker has not started');
+    return this.worker;
   }
 
   // ---- the watchdog ----------------------------------------------------------------------------

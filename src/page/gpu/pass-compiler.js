@@ -17,6 +17,12 @@ import { ShaderCompileError } from './errors.js';
 const MATERIALS_KEPT = 15;
 
 /** @typedef {ReturnType<typeof frameSchedule>[number] & {material: THREE.RawShaderMaterial}} Step */
+/**
+ * A program three.js is checking: the pass's text and where it sits in the program, and the
+ * error _onShaderError found in it.
+ * @typedef {{userText: string, sections: PassSection[] | null, body: string, firstBodyLine: number, error: ShaderCompileError | null}} ProgramCheck
+ * @typedef {import('../../shadertoy/header.js').PassSection} PassSection
+ */
 
 export const VERTEX_SHADER = `
 in vec3 position;
@@ -39,10 +45,15 @@ export class PassCompiler {
     three.debug.onShaderError = (...args) => this._onShaderError(...args);
     // compiled away from the visible scene, swapped in only when it works
     this.stagingScene = new THREE.Scene();
-    this.stagingMesh = new THREE.Mesh(geometry, null);
+    // it holds a pass's material only while that compiles; a mesh made without one has a
+    // MeshBasicMaterial of three.js's, the stand-in the rest of the time (never compiled: the
+    // staging scene is compiled only with a pass's material in it)
+    this.stagingMesh = new THREE.Mesh(geometry);
+    this._standIn = this.stagingMesh.material;
     this.stagingMesh.frustumCulled = false;
     this.stagingScene.add(this.stagingMesh);
-    this._compiling = null; // set while three.js checks a program, read by _onShaderError
+    /** Set while three.js checks a program, read by _onShaderError. @type {ProgramCheck | null} */
+    this._compiling = null;
     /**
      * Materials that compiled, by their code, most recent last.
      * @type {Map<string, THREE.RawShaderMaterial>}
@@ -125,11 +136,12 @@ export class PassCompiler {
     const compiled = this.three.extensions.has('KHR_parallel_shader_compile')
       ? this.three.compileAsync(this.stagingScene, this.camera)
       : Promise.resolve(this.three.compile(this.stagingScene, this.camera));
-    this.stagingMesh.material = null;
+    this.stagingMesh.material = this._standIn;
     await compiled;
 
     // Asking for the uniforms makes three.js check the program, calling onShaderError on failure.
     const program = /** @type {{currentProgram: {getUniforms: () => unknown}}} */ (this.three.properties.get(material)).currentProgram;
+    /** @type {ProgramCheck} */
     const check = { userText, sections, body, firstBodyLine: firstSourceLine - 1, error: null };
     this._compiling = check;
     try {

@@ -23,29 +23,31 @@ const POLL_MS = 2;
 const PRESENT_EVERY_MS = 250;
 
 /**
- * @typedef {object} Job a frame, a capture or a probe under way
- * @property {'frame' | 'capture' | 'probe'} kind
- * @property {FrameInputs} inputs
+ * A frame, a capture or a probe under way: a probe reads the last frame drawn at its pixel (y
+ * from the bottom).
+ * @typedef {JobState & JobKind} Job
+ * @typedef {{kind: 'frame' | 'capture', inputs: FrameInputs} | {kind: 'probe', inputs: null, pixel: {x: number, y: number}, warmUp?: boolean, withPath?: boolean}} JobKind
+ */
+
+/**
+ * @typedef {object} JobState
  * @property {number} width
  * @property {number} height
  * @property {boolean} readBack
  * @property {any} target the render target drawn into
- * @property {number} step the pass being drawn (an index into renderer.steps; a capture draws
+ * @property {number} step the pass being drawn (an index into renderer().steps; a capture draws
  *   only the last, the Image pass, over the buffers as they are)
  * @property {number} y rows of it done
  * @property {boolean} redo something changed while a band was being drawn: it starts again
  * @property {boolean} [allPasses] a capture that draws every pass (a recorded frame)
  * @property {boolean} [float] a capture read as RGBA32F
  * @property {'aa-pixels'} [program] a capture of the path probe's mainImage instead of the Image pass
- * @property {{x: number, y: number}} [pixel] a probe's pixel (y from the bottom)
- * @property {boolean} [warmUp] a probe that is the path probe's first draw (compileProbe's)
- * @property {boolean} [withPath] a probe that draws the path probe too (startProbe decides)
  * @property {(result: any) => void} resolve
  * @property {(error: Error) => void} reject
  */
 
-/** @type {ShaderRenderer | null} */
-let renderer = null;
+/** The renderer, once start() has made it. @type {ShaderRenderer | null} */
+let made = null;
 const planner = new BandPlanner();
 /** @type {Job | null} */
 let job = null;
@@ -65,8 +67,17 @@ let loseContext = null;
 let lastFrame = null;
 
 /**
+ * The renderer. Only start() can fail to make it, and then the page is told 'failed' and asks
+ * this worker nothing more.
+ */
+function renderer() {
+  if (!made) throw new Error('the renderer was not made');
+  return made;
+}
+
+/**
  * A frame or capture, queued; resolves when it is done.
- * @param {Omit<Job, 'step' | 'y' | 'redo' | 'resolve' | 'reject'>} fields
+ * @param {Omit<JobState, 'step' | 'y' | 'redo' | 'resolve' | 'reject'> & JobKind} fields
  */
 function enqueue(fields) {
   return new Promise((resolve, reject) => {
@@ -86,22 +97,22 @@ function changed() {
 
 /** Starts the next band, if the GPU is free and there is something to draw. */
 function pump() {
-  if (band || !renderer || renderer.contextLost) return;
+  if (band || !made || renderer().contextLost) return;
   if (!job) {
     job = waiting.shift() ?? null;
     if (!job) return;
-    if (job.kind === 'frame' && (job.width !== renderer.width || job.height !== renderer.height)) {
-      renderer.setSize(job.width, job.height);
+    if (job.kind === 'frame' && (job.width !== renderer().width || job.height !== renderer().height)) {
+      renderer().setSize(job.width, job.height);
       planner.forget();
     }
   }
-  if (!renderer.hasProgram) {
+  if (!made.hasProgram) {
     job.reject(new Error('no shader has compiled'));
     job = null;
     return pump();
   }
   if (job.kind === 'probe') return startProbe(job);
-  const steps = renderer.steps;
+  const steps = renderer().steps;
   // a capture draws only the Image pass over the buffers as they are, unless it is a recorded
   // frame of a multipass shader (allPasses); a new shader meanwhile may have fewer passes
   if ((job.kind === 'capture' && !job.allPasses) || job.step >= steps.length) job.step = steps.length - 1;
@@ -109,12 +120,12 @@ function pump() {
   const first = job.step === 0 && job.y === 0;
   const last = job.step === steps.length - 1;
   if (first && job.kind === 'frame') {
-    renderer.gpuTimer.begin();
-    if (job.inputs.keyboard) renderer.setKeyboard(job.inputs.keyboard);
+    renderer().gpuTimer.begin();
+    if (job.inputs.keyboard) renderer().setKeyboard(job.inputs.keyboard);
   }
-  writeUniforms(renderer.uniforms, job.inputs, { width: job.width, height: job.height });
-  const drawn = job.program === 'aa-pixels' ? renderer.probe.mainImageAt(0, 0) : step;
-  const target = renderer.beginStep(drawn, job.width, job.height) ?? job.target;
+  writeUniforms(renderer().uniforms, job.inputs, { width: job.width, height: job.height });
+  const drawn = job.program === 'aa-pixels' ? renderer().probe.mainImageAt(0, 0) : step;
+  const target = renderer().beginStep(drawn, job.width, job.height) ?? job.target;
   // SwiftShader turns a program into machine code on its first draw, not when it links (the
   // raytracer's torus scene: 22 ms to link, 3.5 s for its first 2×2 quad, 2 ms for the next).
   // So a program's first draw is one quad of the band about to be drawn, a band of its own that
@@ -123,13 +134,13 @@ function pump() {
   // covers the quad again with the same inputs, so the frame's pixels are the same.
   if (!drawnPrograms.has(drawn.material)) {
     drawnPrograms.add(drawn.material);
-    renderer.drawRegion(target, 0, job.y, Math.min(2, job.width), Math.min(2, job.height - job.y));
+    renderer().drawRegion(target, 0, job.y, Math.min(2, job.width), Math.min(2, job.height - job.y));
     startBand(0, { warmUp: true, compiling: true });
     return;
   }
   const rows = planner.rows(job.width, job.height - job.y);
-  renderer.drawRows(job.y, job.y + rows, target);
-  if (last && job.y + rows >= job.height && job.kind === 'frame') renderer.gpuTimer.end();
+  renderer().drawRows(job.y, job.y + rows, target);
+  if (last && job.y + rows >= job.height && job.kind === 'frame') renderer().gpuTimer.end();
   startBand(rows);
 }
 
@@ -140,15 +151,16 @@ function pump() {
  *   quad (pump); compiling: the band includes a program's first draw
  */
 function startBand(rows, { warmUp = false, compiling = false } = {}) {
-  const gl = renderer.gl;
+  const gl = renderer().gl;
   const sync = gl.fenceSync(gl.SYNC_GPU_COMMANDS_COMPLETE, 0);
+  if (!sync) return; // the context is lost: webglcontextlost rejects the jobs
   gl.flush();
   band = { sync, rows, started: performance.now(), warmUp };
   tell('bandStarted', { compiling });
   setTimeout(poll, POLL_MS);
 }
 
-/** A probe's draws (probe.js), over the last frame drawn: one band of its own. @param {Job} probe */
+/** A probe's draws (probe.js), over the last frame drawn: one band of its own. @param {Job & {kind: 'probe'}} probe */
 function startProbe(probe) {
   if (!lastFrame) {
     probe.reject(new Error('no frame has been drawn yet'));
@@ -162,22 +174,22 @@ function startProbe(probe) {
     job = null;
     return pump();
   }
-  writeUniforms(renderer.uniforms, lastFrame);
+  writeUniforms(renderer().uniforms, lastFrame);
   // The path probe's first draw compiles it (pump: seconds for the torus scene), and the watchdog
   // is told so. A pixel asked for while that draw is still to come (compileProbe's warm-up job,
   // queued behind it) gets its colour at once, without the path.
-  const material = renderer.probe.step?.material;
+  const material = renderer().probe.step?.material;
   const warm = Boolean(material) && drawnPrograms.has(material);
   probe.withPath = Boolean(material) && (warm || probe.warmUp || !probeWarming);
-  renderer.probe.draw(x, y, width, height, probe.withPath);
+  renderer().probe.draw(x, y, width, height, probe.withPath);
   const compiling = probe.withPath && !warm;
   if (compiling) drawnPrograms.add(/** @type {object} */ (material));
   startBand(1, { compiling });
 }
 
 function poll() {
-  if (!band || !renderer) return; // the context was lost meanwhile
-  const gl = renderer.gl;
+  if (!band || !made) return; // the context was lost meanwhile
+  const gl = renderer().gl;
   if (gl.getSyncParameter(band.sync, gl.SYNC_STATUS) !== gl.SIGNALED) {
     setTimeout(poll, POLL_MS);
     return;
@@ -194,21 +206,23 @@ function poll() {
 
 /** @param {number} rows @param {number} ms */
 function bandDone(rows, ms) {
-  if (!job || !renderer) return;
+  if (!job || !made) return;
   if (job.kind === 'probe') {
     const probe = job;
     job = null;
     tell('band', { kind: 'probe', y: 1, height: 1, bitmap: null });
+    // startProbe drew over lastFrame, and no frame can finish while the probe's band is the job
+    const inputs = /** @type {FrameInputs} */ (lastFrame);
     /** @type {ProbedPixel} */
-    const probed = { ...renderer.probe.read(probe.pixel.x, probe.pixel.y, probe.withPath), inputs: lastFrame };
+    const probed = { ...renderer().probe.read(probe.pixel.x, probe.pixel.y, probe.withPath), inputs };
     probe.resolve(probed);
     return;
   }
   planner.measured(job.width, rows, ms);
   if (job.redo) job.redo = false;
   else job.y += rows;
-  if (job.y >= job.height && job.step < renderer.steps.length - 1) {
-    renderer.endStep(renderer.steps[job.step]); // a buffer is done: the next pass reads it
+  if (job.y >= job.height && job.step < renderer().steps.length - 1) {
+    renderer().endStep(renderer().steps[job.step]); // a buffer is done: the next pass reads it
     job.step++;
     job.y = 0;
   }
@@ -216,7 +230,7 @@ function bandDone(rows, ms) {
   const now = performance.now();
   const show = !done && job.kind === 'frame' && now - lastPresent > PRESENT_EVERY_MS;
   if (show) lastPresent = now;
-  tell('band', { kind: job.kind, y: job.y, height: job.height, bitmap: show ? renderer.present() : null });
+  tell('band', { kind: job.kind, y: job.y, height: job.height, bitmap: show ? renderer().present() : null });
   if (!done) return;
   const finished = job;
   job = null;
@@ -225,7 +239,7 @@ function bandDone(rows, ms) {
     lastFrame = finished.inputs;
     const pixels = finished.readBack ? readOpaque(finished.target, finished.width, finished.height) : null;
     /** @type {DrawnFrame} */
-    const drawn = { bitmap: renderer.present(), pixels, gpuTimes: renderer.gpuTimer.poll(), program: renderer.installed };
+    const drawn = { bitmap: renderer().present(), pixels, gpuTimes: renderer().gpuTimer.poll(), program: renderer().installed };
     finished.resolve(drawn);
   } else {
     const pixels = finished.float
@@ -239,7 +253,7 @@ function bandDone(rows, ms) {
 /** A float target's pixels, RGBA32F, rows top to bottom. */
 function readFloat(target, width, height) {
   const pixels = new Float32Array(width * height * 4);
-  renderer.three.readRenderTargetPixels(target, 0, 0, width, height, pixels);
+  renderer().three.readRenderTargetPixels(target, 0, 0, width, height, pixels);
   const row = width * 4;
   const out = new Float32Array(pixels.length);
   for (let y = 0; y < height; y++) out.set(pixels.subarray((height - 1 - y) * row, (height - y) * row), y * row);
@@ -248,7 +262,7 @@ function readFloat(target, width, height) {
 
 /** A target's pixels as the page shows them: rows top to bottom, alpha 1 (the page's canvas has none). */
 function readOpaque(target, width, height) {
-  const pixels = flipRows(renderer.readTarget(target), width, height);
+  const pixels = flipRows(renderer().readTarget(target), width, height);
   for (let i = 3; i < pixels.length; i += 4) pixels[i] = 255;
   return pixels;
 }
@@ -257,7 +271,7 @@ function readOpaque(target, width, height) {
 function start() {
   const canvas = new OffscreenCanvas(1, 1);
   try {
-    renderer = new ShaderRenderer(canvas);
+    made = new ShaderRenderer(canvas);
   } catch (error) {
     tell('failed', { name: error.name, message: error.message });
     return;
@@ -272,11 +286,11 @@ function start() {
   });
   canvas.addEventListener('webglcontextrestored', () => {
     // three.js has rebuilt its state; programs and textures are made again from our objects
-    renderer.forgetCompiled();
+    renderer().forgetCompiled();
     planner.forget();
     tell('context', { lost: false });
   });
-  tell('ready', { maxSize: renderer.maxSize, info: renderer.info() });
+  tell('ready', { maxSize: renderer().maxSize, info: renderer().info() });
 }
 
 const tell = serve(
@@ -284,7 +298,7 @@ const tell = serve(
   {
     async compile({ project, hostBlock, fileName, serial }) {
       try {
-        await renderer.compile(project, hostBlock, fileName, serial);
+        await renderer().compile(project, hostBlock, fileName, serial);
         changed();
         return null;
       } finally {
@@ -297,24 +311,24 @@ const tell = serve(
       const stale = waiting.findIndex((queued) => queued.kind === 'frame');
       if (stale >= 0) waiting.splice(stale, 1)[0].reject(new Error('replaced by a newer frame'));
       const { width, height } = inputs;
-      return enqueue({ kind: 'frame', inputs, width, height, readBack, target: renderer.frameTarget });
+      return enqueue({ kind: 'frame', inputs, width, height, readBack, target: renderer().frameTarget });
     },
 
     capture({ inputs, width, height, allPasses, program }) {
-      if (program && !renderer.probe.step) throw new Error('the path probe has not compiled');
-      const target = renderer.makeTarget(width, height);
+      if (program && !renderer().probe.step) throw new Error('the path probe has not compiled');
+      const target = renderer().makeTarget(width, height);
       return enqueue({ kind: 'capture', inputs, width, height, readBack: true, target, allPasses, program });
     },
 
     captureFloat({ inputs, width, height }) {
-      const target = renderer.makeTarget(width, height, true);
+      const target = renderer().makeTarget(width, height, true);
       return enqueue({ kind: 'capture', inputs, width, height, readBack: true, target, float: true });
     },
 
     async compileProbe({ project, hostBlock, fileName, key }) {
       probeWarming = true;
       try {
-        await renderer.probe.compile(project, hostBlock, fileName, key);
+        await renderer().probe.compile(project, hostBlock, fileName, key);
         // its first draw, queued behind what is asked already: a pixel asked for before that is
         // read without waiting for it (startProbe); the reply comes once the probe is ready
         if (lastFrame)
@@ -343,12 +357,12 @@ const tell = serve(
 
     bench({ inputs, n }) {
       const times = [];
-      renderer.setSize(inputs.width, inputs.height);
-      writeUniforms(renderer.uniforms, inputs);
+      renderer().setSize(inputs.width, inputs.height);
+      writeUniforms(renderer().uniforms, inputs);
       for (let i = 0; i < n; i++) {
         const begun = performance.now();
-        renderer.render();
-        renderer.readTarget(renderer.frameTarget, 0, 0, 1, 1); // waits until the GPU has finished
+        renderer().render();
+        renderer().readTarget(renderer().frameTarget, 0, 0, 1, 1); // waits until the GPU has finished
         times.push(performance.now() - begun);
       }
       return times;
@@ -358,27 +372,27 @@ const tell = serve(
     init: start,
 
     clearBuffers() {
-      renderer.buffers.clear();
+      renderer().buffers.clear();
       changed();
     },
 
     controlUniforms({ controls, values }) {
-      renderer.setControlUniforms(controls, values);
+      renderer().setControlUniforms(controls, values);
       changed();
     },
 
     controlUniform({ name, value }) {
-      renderer.setControlUniform(name, value);
+      renderer().setControlUniform(name, value);
       changed();
     },
 
     channel({ index, image }) {
-      renderer.setChannel(index, image);
+      renderer().setChannel(index, image);
       changed();
     },
 
     loseContext() {
-      loseContext = renderer.gl.getExtension('WEBGL_lose_context');
+      loseContext = renderer().gl.getExtension('WEBGL_lose_context');
       loseContext?.loseContext();
     },
 

@@ -69,7 +69,9 @@ export class ShaderRenderer {
     const geometry = fullscreenTriangle();
     this.camera = new THREE.OrthographicCamera(); // required by render(); the shader ignores it
     this.scene = new THREE.Scene();
-    this.mesh = new THREE.Mesh(geometry, null);
+    // drawn with the material of the pass being drawn (beginStep); until the first, with none:
+    // three.js's stand-in MeshBasicMaterial is never drawn (nothing is before a shader compiled)
+    this.mesh = new THREE.Mesh(geometry);
     this.mesh.frustumCulled = false;
     this.scene.add(this.mesh);
     /** Compiles the passes (pass-compiler.js); keeps compiled materials, never disposing one on screen. */
@@ -99,14 +101,16 @@ export class ShaderRenderer {
     this._copySource = /** @type {THREE.RawShaderMaterial} */ (copy.material).uniforms.frame;
 
     this._black = this.uniforms.iChannel0.value;
-    this._channels = [null, null, null, null]; // textures loaded into iChannel0..3
+    /** The textures loaded into iChannel0..3. @type {Array<THREE.Texture | null>} */
+    this._channels = [null, null, null, null];
 
     /** The passes of a frame, in order, with their compiled materials (the last is Image). @type {Step[]} */
     this.steps = [];
     /** Buffer A–D of a multipass shader. */
     this.buffers = new PassBuffers(this.three, (source, target, width, height) => this._copy(source, target, width, height));
     /** Shadertoy's keyboard texture: 256 × 3 bytes, nearest (keyboard.js). */
-    this.keyboard = new THREE.DataTexture(new Uint8Array(256 * 3), 256, 3, THREE.RedFormat, THREE.UnsignedByteType);
+    this._keyboardBytes = new Uint8Array(256 * 3);
+    this.keyboard = new THREE.DataTexture(this._keyboardBytes, 256, 3, THREE.RedFormat, THREE.UnsignedByteType);
     this.keyboard.needsUpdate = true;
     /** The sampler objects of the pass being drawn (channel-bindings.js). */
     this.samplers = new ChannelSamplers(gl, this.three);
@@ -200,7 +204,7 @@ export class ShaderRenderer {
 
   /** The keyboard texture's bytes for the next frame (Shadertoy's 256 × 3: keyboard.js). @param {Uint8Array} data */
   setKeyboard(data) {
-    this.keyboard.image.data.set(data);
+    this._keyboardBytes.set(data); // the texture's own bytes
     this.keyboard.needsUpdate = true;
   }
 

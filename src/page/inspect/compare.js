@@ -118,6 +118,7 @@ export class Comparison extends Emitter {
       await app.frames.idle(); // the frame under way is the one compared
       if (!app.frames.last) await app.frames.draw();
       const inputs = app.frames.last;
+      if (!inputs) throw new Error('no frame was drawn: the GPU context is lost');
       const values = structuredClone(app.values);
       const source = app.source;
       const viewKey = this._viewKey();

@@ -199,9 +199,9 @@ export class Inspector extends Emitter {
     this.problem = null;
     const values = app.values;
     const named = (/** @type {PathRay} */ ray) => ({ ...ray, object: objectName(ray.id, values) });
-    const { inputs } = probed;
-    const pathOk = wantsPath && probed.path && probed.probeKey === program.key;
-    const decoded = pathOk ? readPath(probed.path) : null;
+    const { inputs, path } = probed;
+    const pathOk = wantsPath && path && probed.probeKey === program.key;
+    const decoded = pathOk ? readPath(path) : null;
     /** @type {Readout} */
     const readout = {
       pixel: { x: pinned.x, y: pinned.y },

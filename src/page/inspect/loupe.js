@@ -107,7 +107,7 @@ export class Loupe {
       if (!best || cost < best.cost) best = { cost, left, top };
       if (cost === 0) break;
     }
-    const { left, top } = /** @type {{left: number, top: number}} */ (best);
+    const { left, top } = /** @type {{cost: number, left: number, top: number}} */ (best); // the first corner set it
     this.root.style.left = `${left - stage.left}px`;
     this.root.style.top = `${top - stage.top}px`;
   }

@@ -34,8 +34,10 @@ function finiteNumbers(text) {
 }
 
 /**
- * A same-origin URL from a query value, or null. `base` is the page's address.
- * @returns {{url: string|null, why?: string}}
+ * A same-origin URL from a query value, or null and why not. `base` is the page's address.
+ * @param {string} value
+ * @param {string} base
+ * @returns {{url: string, why?: undefined} | {url: null, why: string}}
  */
 export function sameOriginUrl(value, base) {
   let url;
@@ -68,15 +70,20 @@ const INSTEAD = {
 const RESERVED_NAME = /^gl_|__/;
 
 /**
+ * @typedef {{shader?: string, time?: number, mouse?: number[], size?: {width:number, height:number},
+ *   scale?: number, cap?: number, speed?: number, channels: (string|undefined)[],
+ *   controls: Record<string, string>, warnings: string[], refusedShader?: {url: string, why: string}}} UrlParams
+ */
+
+/**
  * @param {string} search location.search
  * @param {string} [base] the page's address (resolves `shader` and `iChannelN` URLs)
- * @returns {{shader?: string, time?: number, mouse?: number[], size?: {width:number, height:number},
- *   scale?: number, cap?: number, speed?: number, channels: (string|undefined)[],
- *   controls: Record<string, string>, warnings: string[], refusedShader?: {url: string, why: string}}}
+ * @returns {UrlParams}
  */
 export function parseUrlParams(search, base = 'http://localhost/') {
   /** @type {Record<string, string>} no prototype: any name is just a key (`constructor`, `toString`) */
   const controls = Object.create(null);
+  /** @type {UrlParams} */
   const out = { controls, channels: [], warnings: [] };
   const warn = (key, value, why) => {
     const instead = INSTEAD[key] ?? (CHANNEL_PARAMS.includes(key) ? 'the channel is black' : '');
@@ -97,8 +104,9 @@ export function parseUrlParams(search, base = 'http://localhost/') {
   const entries = [...new URLSearchParams(search)];
   const last = new Map(entries.map(([key, value], i) => [key, { value, i }]));
   for (const [i, [key, value]] of entries.entries()) {
-    if (last.get(key).i !== i) {
-      warn(key, value, `${key} is given more than once; the last one is used (${key}=${last.get(key).value})`);
+    const kept = /** @type {{value: string, i: number}} */ (last.get(key)); // every key is in `last`
+    if (kept.i !== i) {
+      warn(key, value, `${key} is given more than once; the last one is used (${key}=${kept.value})`);
       continue;
     }
     if (key === 'time') {
@@ -132,11 +140,11 @@ export function parseUrlParams(search, base = 'http://localhost/') {
       const s = number(key, value, 0, MAX_SPEED, `a number in 0 .. ${MAX_SPEED}`);
       if (s !== undefined) out.speed = s;
     } else if (key === 'shader' || CHANNEL_PARAMS.includes(key)) {
-      const { url, why } = value.trim() ? sameOriginUrl(value.trim(), base) : { url: null, why: 'empty' };
-      if (!url) {
-        warn(key, value, why);
+      const checked = value.trim() ? sameOriginUrl(value.trim(), base) : { url: null, why: 'empty' };
+      if (checked.url === null) {
+        warn(key, value, checked.why);
         // the page says so too (main.js), not only the console
-        if (key === 'shader') out.refusedShader = { url: value, why };
+        if (key === 'shader') out.refusedShader = { url: value, why: checked.why };
       } else if (key === 'shader') out.shader = value.trim();
       else out.channels[CHANNEL_PARAMS.indexOf(key)] = value.trim();
     } else if (!/^[A-Za-z_]\w*$/.test(key)) {
@@ -158,12 +166,12 @@ function formatNumber(v) {
 /**
  * The query string (with its `?`) for a view, the inverse of parseUrlParams.
  * @param {object} state
- * @param {string} [state.shader] the shader's URL as the page was given it (omitted: built-in)
+ * @param {string | null} [state.shader] the shader's URL as the page was given it (omitted: built-in)
  * @param {{width:number, height:number} | null} [state.size] a fixed drawing buffer, device pixels (omitted: the window's)
  * @param {number | null} [state.time] a fixed time (omitted: the link plays, from 0)
  * @param {number[]} [state.mouse] iMouse; omitted when all zero
  * @param {number} [state.speed] omitted when 1
- * @param {(string|undefined)[]} [state.channels] image URLs
+ * @param {(string | null | undefined)[]} [state.channels] image URLs
  * @param {Record<string, unknown>} [state.controls] control values to write (vectors as arrays, a
  *   choice by its name as a string)
  */

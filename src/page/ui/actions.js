@@ -98,7 +98,7 @@ export function pageActions(app, { stage, toast, activeTab, toggleEditor, screen
       try {
         const { width, height } = app.frames.size;
         const image = await app.frames.capture(size ?? screenshotSize(width, height));
-        const name = screenshotFileName(app.fileName, { time: app.frames.last.time, width: image.width, height: image.height });
+        const name = screenshotFileName(app.fileName, { time: image.time, width: image.width, height: image.height });
         saveBlob(await pngBlob(image), name);
         toast(`Saved ${name}`);
         return { name, width: image.width, height: image.height };

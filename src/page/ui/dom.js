@@ -68,6 +68,7 @@ export function pngBlob({ width, height, data }) {
   canvas.width = width;
   canvas.height = height;
   const context = canvas.getContext('2d');
+  if (!context) return Promise.reject(new Error('PNG encoding failed: no 2D canvas context'));
   const clamped = /** @type {Uint8ClampedArray<ArrayBuffer>} */ (new Uint8ClampedArray(data.buffer, data.byteOffset, data.byteLength));
   context.putImageData(new ImageData(clamped, width, height), 0, 0);
   return new Promise((resolve, reject) =>

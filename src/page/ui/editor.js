@@ -131,7 +131,7 @@ export class Editor {
         if (!update.docChanged || this._settingProject) return;
         const project = this.project();
         const paste = update.transactions.find((tr) => tr.isUserEvent('input.paste'));
-        const whole = Boolean(paste) && replacedAll(paste);
+        const whole = paste !== undefined && replacedAll(paste);
         // kept under its new name at once: a paste over a whole single-pass shader is a new one
         this.onChange(project, true, whole && this.tabs.length === 1);
         if (!paste) return;

@@ -197,10 +197,12 @@ export class Toolbar {
     }
     this.timeText.value = `${time.toFixed(2)} s`;
     if (Number(this.speedSelect.value) !== speed) {
-      if (![...this.speedSelect.options].some((o) => Number(o.value) === speed)) {
-        this.speedSelect.append(element('option', { value: String(speed) }, `${speed}×`));
+      let option = [...this.speedSelect.options].find((o) => Number(o.value) === speed);
+      if (!option) {
+        option = element('option', { value: String(speed) }, `${speed}×`);
+        this.speedSelect.append(option);
       }
-      this.speedSelect.value = [...this.speedSelect.options].find((o) => Number(o.value) === speed).value;
+      this.speedSelect.value = option.value;
     }
     if (this.nameText.title !== name) {
       // the folders in their own span, which a phone's toolbar leaves out (style.css)

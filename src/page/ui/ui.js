@@ -215,6 +215,7 @@ export function installUi(app, { builtinSource }) {
 
   const dropHint = /** @type {HTMLElement} */ (document.getElementById('drop-hint'));
   let dragDepth = 0;
+  /** @type {(event: DragEvent) => event is DragEvent & {dataTransfer: DataTransfer}} */
   const hasFiles = (event) => [...(event.dataTransfer?.types ?? [])].includes('Files');
   document.addEventListener('dragenter', (event) => {
     if (!hasFiles(event)) return;

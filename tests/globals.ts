@@ -1,6 +1,8 @@
 // Types for `npm run typecheck` only (nothing imports this file at run time): the globals that
 // the pages under test define on `window`, which the tests reach through page.evaluate(), and
-// what vitest's globalSetup (tests/harness/setup.js) provides to the test files.
+// what vitest's globalSetup (tests/harness/setup.js) provides to the test files. It is a .ts
+// file, not a .d.ts, so that skipLibCheck (jsconfig.json) does not skip it: a broken import()
+// here is an error. JSDoc reaches its types as import('./globals.js').
 
 /** Base64 RGBA8 pixels, rows top to bottom, as the page hands them over page.evaluate(). */
 export interface Base64Frame {
@@ -32,7 +34,7 @@ export interface RaytracerInfo {
   controls: Record<string, any>;
   fileName: string;
   shaderUrl: string | null;
-  origin: import('../src/page/app.js').RaytracerApp['origin'];
+  origin: import('../src/page/app/app.js').RaytracerApp['origin'];
   contextLost: boolean;
   /** successful compiles so far */
   compiled: number;
@@ -57,7 +59,7 @@ export interface CompileOutcome {
 }
 
 /** What record() resolves with: the recording's settings and the file as base64. */
-export type RecordingResult = Omit<import('../src/page/recorder.js').Recording, 'bytes'> & { data: string };
+export type RecordingResult = Omit<import('../src/page/io/recorder.js').Recording, 'bytes'> & { data: string };
 
 /** window.raytracer: the page's automation hook, installed by src/page/automation.js (see its header). */
 export interface RaytracerHook {
@@ -98,8 +100,8 @@ export interface RaytracerHook {
   shareUrl(): string;
   /** The editor's text (what it holds, compiled or not). */
   editorSource(): string;
-  /** Records the shader frame by frame (src/page/recorder.js); `data` is the file as base64. */
-  record(request?: import('../src/page/recorder.js').RecordRequest): Promise<RecordingResult>;
+  /** Records the shader frame by frame (src/page/io/recorder.js); `data` is the file as base64. */
+  record(request?: import('../src/page/io/recorder.js').RecordRequest): Promise<RecordingResult>;
   /** Stops the recording under way: its record() rejects, nothing is made. */
   cancelRecording(): void;
   recording(): { busy: boolean };
