@@ -20,7 +20,7 @@ export default defineConfig({
   test: {
     environment: 'node',
     include: ['tests/**/*.test.js'],
-    // Starts one headless Chromium (SwiftShader) and one Vite server for the whole run.
+    // Starts one headless Chromium (SwiftShader) and serves the built page for the whole run.
     globalSetup: ['tests/harness/setup.js'],
     // The browser is shared and SwiftShader uses every core: one test file at a time.
     fileParallelism: false,

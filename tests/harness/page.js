@@ -100,8 +100,8 @@ export async function openPage({
   page.on('pageerror', (error) => errors.push(`page error: ${/** @type {Error} */ (error)?.message ?? error}`));
   page.on('error', (error) => errors.push(`page crashed: ${error?.message ?? error}`));
   await page.setViewport({ width: 800, height: 600, deviceScaleFactor: 1 });
-  // Every page loads fresh from the server: no 304s, nothing left over from an earlier test.
-  await page.setCacheEnabled(false);
+  // The HTTP cache stays on: the build's files are revalidated (ETag; page-server.js), and what
+  // the tests write into public/ is served with no-store (routes.js).
   if (deterministic) await page.evaluateOnNewDocument(INJECTION_SOURCE);
   if (timeouts)
     await page.evaluateOnNewDocument((chosen) => {

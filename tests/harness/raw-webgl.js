@@ -1,14 +1,16 @@
 // Raw WebGL2 pages: a complete fragment shader (e.g. composeImageShader(source).code) compiled
 // in a plain WebGL2 context, no three.js and no page code, as Shadertoy compiles a paste. The
-// in-page half is raw-webgl-page.js, served with raw-webgl.html by the harness's Vite server;
+// in-page half is raw-webgl-page.js, served with raw-webgl.html by the harness's routes (routes.js);
 // this is the Node half. Used by the Shadertoy paste test, the example-shader comparisons, the
 // intersector tests (evaluateFloatShader) and the benchmark's timer (tests/bench/timer.js).
 
 import { countNewlines } from '../../src/shadertoy/header.js';
 import { formatShaderMessages, parseShaderLog, userLineOffset } from '../../src/shadertoy/shader-errors.js';
 import { decodeRgba, openPage } from './page.js';
+import { HARNESS_ROUTES } from './routes.js';
 
-const RAW_PAGE_PATH = new URL('./raw-webgl.html', import.meta.url).pathname;
+/** raw-webgl.html, as the harness's routes serve it (routes.js: on the build's server too). */
+const RAW_PAGE_PATH = `${HARNESS_ROUTES}repo/tests/harness/raw-webgl.html`;
 
 /**
  * A fresh page (openPage: `deterministic: false` keeps the real clock) at raw-webgl.html, with
@@ -18,7 +20,7 @@ const RAW_PAGE_PATH = new URL('./raw-webgl.html', import.meta.url).pathname;
 export async function openRawPage(title, options) {
   const opened = await openPage(options);
   const { page, errors, context } = opened;
-  const url = `${context.baseUrl}/@fs${RAW_PAGE_PATH}`;
+  const url = `${context.baseUrl}${RAW_PAGE_PATH}`;
   const response = await page.goto(url, { waitUntil: 'load' });
   if (!response?.ok()) throw new Error(`${url} answered HTTP ${response?.status()}`);
   const ready = await page.evaluate((t) => {

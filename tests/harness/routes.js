@@ -4,8 +4,12 @@
 //   /__harness/hang               never answers (the connection stays open until the client
 //                                 gives up or the server closes, which destroys open sockets)
 //   /__harness/redirect?to=URL    302 to URL (another origin, or back to this one)
+//   /__harness/repo/PATH          the repository's file PATH under src/ or tests/harness/, as it
+//                                 is on disk: the raw WebGL2 page (raw-webgl.html) and the plain
+//                                 ES modules it imports, on the build's server as on the dev one
 //
-// Only the test harness adds them (a Vite plugin); vite.config.js and `npm run dev` have none.
+// Only the test harness adds them (a Vite plugin, on the dev server or the build's preview server:
+// page-server.js); vite.config.js and `npm run dev` have none.
 //
 // The same plugin serves files the tests write into public/ while the server runs (withServedDir
 // in tests/page-helpers.js) as soon as they are on disk. Vite serves public/ from a list of its
@@ -15,24 +19,38 @@
 
 import fs from 'node:fs';
 import path from 'node:path';
+import { REPO_ROOT } from './config.js';
 
 export const HARNESS_ROUTES = '/__harness/';
 
 /** Content types of the files tests write into public/. */
-const TYPES = { '.glsl': 'text/plain', '.json': 'application/json', '.png': 'image/png', '.txt': 'text/plain' };
+const TYPES = {
+  '.glsl': 'text/plain',
+  '.json': 'application/json',
+  '.png': 'image/png',
+  '.txt': 'text/plain',
+  '.html': 'text/html',
+  '.js': 'text/javascript',
+};
+/** What /__harness/repo/ serves. */
+const REPO_DIRS = ['src', path.join('tests', 'harness')].map((dir) => path.join(REPO_ROOT, dir));
 
 /**
- * Serves `pathname` from `publicDir` when it is a file there, with no cache (the tests rewrite
- * files). Returns false when it is not.
+ * Serves `pathname` from `dir` when it is a file there (or in one of `within`, folders of `dir`),
+ * with no cache (the tests rewrite files). Returns false when it is not.
+ * @param {string} dir
+ * @param {string} pathname
+ * @param {import('node:http').ServerResponse} res
+ * @param {string[]} [within]
  */
-function servePublicFile(publicDir, pathname, res) {
+function serveFile(dir, pathname, res, within = [dir]) {
   let file;
   try {
-    file = path.join(publicDir, decodeURIComponent(pathname));
+    file = path.join(dir, decodeURIComponent(pathname));
   } catch {
     return false;
   }
-  if (!file.startsWith(publicDir + path.sep) || !fs.existsSync(file) || !fs.statSync(file).isFile()) return false;
+  if (!within.some((d) => file.startsWith(d + path.sep)) || !fs.existsSync(file) || !fs.statSync(file).isFile()) return false;
   const type = TYPES[path.extname(file).toLowerCase()] ?? 'application/octet-stream';
   res.writeHead(200, { 'content-type': type, 'cache-control': 'no-store' });
   res.end(fs.readFileSync(file));
@@ -44,30 +62,31 @@ function servePublicFile(publicDir, pathname, res) {
  * @returns {import('vite').Plugin}
  */
 export function harnessRoutes() {
-  return {
-    name: 'raytracer-harness-routes',
-    configureServer(server) {
-      server.middlewares.use((req, res, next) => {
-        const url = new URL(req.url ?? '/', 'http://harness');
-        if (!url.pathname.startsWith(HARNESS_ROUTES)) {
-          const publicDir = server.config.publicDir;
-          const plain = req.method === 'GET' && url.search === '' && publicDir;
-          if (plain && servePublicFile(path.resolve(publicDir), url.pathname, res)) return undefined;
-          return next();
-        }
-        const route = url.pathname.slice(HARNESS_ROUTES.length);
-        // never a status, never a byte; Vite's close() destroys the open socket
-        if (route === 'hang') return undefined;
-        const to = url.searchParams.get('to');
-        if (route === 'redirect' && to) {
-          res.writeHead(302, { location: to, 'cache-control': 'no-store' });
-          return res.end();
-        }
-        res.writeHead(404, { 'content-type': 'text/plain' });
-        return res.end(`no harness route ${url.pathname}`);
-      });
-    },
+  /** @param {{config: import('vite').ResolvedConfig, middlewares: import('vite').Connect.Server}} server */
+  const install = (server) => {
+    server.middlewares.use((req, res, next) => {
+      const url = new URL(req.url ?? '/', 'http://harness');
+      if (!url.pathname.startsWith(HARNESS_ROUTES)) {
+        const publicDir = server.config.publicDir;
+        const plain = req.method === 'GET' && url.search === '' && publicDir;
+        if (plain && serveFile(path.resolve(publicDir), url.pathname, res)) return undefined;
+        return next();
+      }
+      const route = url.pathname.slice(HARNESS_ROUTES.length);
+      // never a status, never a byte; the server's close() destroys the open socket
+      if (route === 'hang') return undefined;
+      if (route.startsWith('repo/') && serveFile(REPO_ROOT, route.slice('repo'.length), res, REPO_DIRS)) return undefined;
+      const to = url.searchParams.get('to');
+      if (route === 'redirect' && to) {
+        res.writeHead(302, { location: to, 'cache-control': 'no-store' });
+        return res.end();
+      }
+      res.writeHead(404, { 'content-type': 'text/plain' });
+      return res.end(`no harness route ${url.pathname}`);
+    });
   };
+  // the dev server (npm run dev's) and the build's (vite preview): page-server.js
+  return { name: 'raytracer-harness-routes', configureServer: install, configurePreviewServer: install };
 }
 
 /** The URL of a harness route on the page server at `baseUrl`. */

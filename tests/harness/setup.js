@@ -3,7 +3,7 @@
 // As vitest's globalSetup (tests/vitest.config.js), `setup` runs once in the main process: it finds a
 // Chromium (chrome-path.js), launches it headless on SwiftShader (the CPU WebGL2 implementation,
 // identical on every machine that runs the same Chromium build), checks that WebGL2 really is
-// SwiftShader, serves the real page with Vite on a free loopback port, and hands the browser's
+// SwiftShader, builds the page and serves the build on a free loopback port (page-server.js), and hands the browser's
 // endpoint and the page's URL to the test files (project.provide → inject('harness'), read by
 // page.js). The function it returns stops both. Scripts (the benchmark, the accuracy report,
 // the README picture) do the same through withHarness.
@@ -11,12 +11,11 @@
 import fs from 'node:fs';
 import os from 'node:os';
 import path from 'node:path';
-import net from 'node:net';
 import puppeteer from 'puppeteer-core';
-import { ENVIRONMENT_FILE, GOLDEN_DIR, REPO_ROOT, UPDATING } from './config.js';
+import { ENVIRONMENT_FILE, GOLDEN_DIR, UPDATING } from './config.js';
 import { findChrome } from './chrome-path.js';
 import { disconnect, useHarness } from './page.js';
-import { harnessRoutes } from './routes.js';
+import { startPageServer } from './page-server.js';
 import { CLOSE_TIMEOUT_MS, WAIT_TIMEOUT_MS, closeBrowser, watchPage, withTimeout } from './watch.js';
 
 export const CHROME_ARGS = [
@@ -63,52 +62,6 @@ export function rendererLabel(renderer) {
   return renderer.replace(/\s*\(0x[0-9A-F]+\)/i, '');
 }
 
-function freePort() {
-  return new Promise((resolve, reject) => {
-    const server = net.createServer();
-    server.unref();
-    server.on('error', reject);
-    server.listen(0, '127.0.0.1', () => {
-      const { port } = /** @type {import('node:net').AddressInfo} */ (server.address());
-      server.close(() => resolve(port));
-    });
-  });
-}
-
-/**
- * Serves the page (vite.config.js) on a free loopback port. The shared server of a test run does
- * not watch files; `watch: true` gives one that does, with hot updates, for tests of what
- * `npm run dev` does when a shader file changes.
- * @returns {Promise<{baseUrl: string, close: () => Promise<void>}>}
- */
-async function startPageServer({ watch = false } = {}) {
-  const configFile = path.join(REPO_ROOT, 'vite.config.js');
-  if (!fs.existsSync(configFile)) throw new Error(`${configFile} is missing; the page cannot be served.`);
-  const { createServer } = await import('vite');
-  const port = await freePort();
-  const server = await createServer({
-    configFile,
-    logLevel: 'warn',
-    clearScreen: false,
-    server: { host: '127.0.0.1', port, strictPort: true, open: false, ...(watch ? {} : { watch: null }) },
-    // answers that are hard to get otherwise: a request that hangs, a redirect (routes.js)
-    plugins: [harnessRoutes()],
-  });
-  const close = () => server.close();
-  try {
-    await server.listen();
-  } catch (error) {
-    await close();
-    throw error;
-  }
-  return { baseUrl: `http://127.0.0.1:${port}`, close };
-}
-
-/** Another page server, in the test worker, with file watching and hot updates on. Close it after. */
-export function startWatchingServer() {
-  return startPageServer({ watch: true });
-}
-
 /** Opens a blank page and asks WebGL2 who it is. */
 async function probeWebGL(browser) {
   const page = await browser.newPage();
@@ -129,9 +82,10 @@ async function probeWebGL(browser) {
 }
 
 /**
- * Loads the page once before any test, so Vite has transformed every module and pre-bundled
- * every dependency: a dependency Vite discovers during a test's page load makes it reload that
- * page mid-test. Best effort: a page that fails here fails, with a message, in the tests.
+ * Loads the page once before any test. On the dev server (RAYTRACER_TEST_SERVER=dev) Vite then
+ * has transformed every module and pre-bundled every dependency (one it discovers during a test's
+ * page load makes it reload that page mid-test); on either, the built-in shader has compiled once.
+ * Best effort: a page that fails here fails, with a message, in the tests.
  */
 async function warmUp(browser, baseUrl) {
   const page = await withTimeout('opening a page', browser.newPage(), WAIT_TIMEOUT_MS);
