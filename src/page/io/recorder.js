@@ -5,8 +5,6 @@
 // seconds per frame still records smoothly. The live frame loop is paused meanwhile (and plays
 // again after, if it was playing); iMouse is the page's, scaled to the recording's size.
 
-import { BufferTarget, EncodedPacket, EncodedVideoPacketSource, Output, WebMOutputFormat } from 'mediabunny';
-import { zipSync } from 'fflate';
 import { fitGpu } from '../app/canvas-size.js';
 import { shadertoyDate } from '../app/shadertoy-inputs.js';
 
@@ -91,6 +89,8 @@ async function videoCodec(width, height, fps) {
 /** WebM: each frame into the VideoEncoder, each chunk it gives into mediabunny's WebM muxer. */
 async function webmWriter({ width, height, fps }) {
   const codec = await videoCodec(width, height, fps);
+  // loaded when first needed: mediabunny is a third of the page's script (measured below, README)
+  const { BufferTarget, EncodedPacket, EncodedVideoPacketSource, Output, WebMOutputFormat } = await import('mediabunny');
   const output = new Output({ format: new WebMOutputFormat(), target: new BufferTarget() });
   const source = new EncodedVideoPacketSource(codec.name);
   output.addVideoTrack(source, { frameRate: fps });
@@ -139,7 +139,7 @@ async function webmWriter({ width, height, fps }) {
       check();
       encoder.close();
       await output.finalize();
-      return new Uint8Array(/** @type {ArrayBuffer} */ (/** @type {BufferTarget} */ (output.target).buffer));
+      return new Uint8Array(/** @type {ArrayBuffer} */ (/** @type {import('mediabunny').BufferTarget} */ (output.target).buffer));
     },
     async cancel() {
       if (encoder.state !== 'closed') encoder.close();
@@ -170,6 +170,7 @@ function pngWriter({ width, height, frames }) {
       files[`frame-${String(i).padStart(digits, '0')}.png`] = await pngBytes(rgba, width, height);
     },
     async finish() {
+      const { zipSync } = await import('fflate'); // loaded when first needed
       return zipSync(files, { level: 0 });
     },
     async cancel() {},
