@@ -65,6 +65,8 @@ export type RecordingResult = Omit<import('../src/page/io/recorder.js').Recordin
 export interface RaytracerHook {
   /** Resolves after the first frame has been drawn; rejects when WebGL2 is missing or the first compile fails. */
   ready: Promise<void>;
+  /** The page as a fresh load of `query` ("?…" and "#…") gives it, without a reload (src/page/open-view.js). */
+  open(query: string): Promise<void>;
   /** Draws one frame and reads it back. */
   readPixels(): Promise<Base64Frame>;
   /** Draws n frames back to back: per-frame times in ms and their median. */

@@ -2,6 +2,11 @@
 //
 //   ready                 Promise: resolves after the first frame has been drawn; rejects with
 //                         the error when WebGL2 is missing or the first compile fails.
+//   open(query)           Promise: the page as a fresh load of `query` ("?shader=…&size=…&time=…
+//                         &NAME=value", and a "#source=…" fragment) would give it, without a
+//                         reload (open-view.js): its shader, controls, size, clock, mouse,
+//                         channels, kept edits and notes; the inspector off. Resolves once its
+//                         first frame is drawn; rejects with the compile error.
 //   readPixels()          Promise<{width, height, data}>: draws one frame and reads it back (the
 //                         render worker keeps each frame in a render target). `data` is base64
 //                         of RGBA8 pixels, rows top to bottom, alpha 255 (as the canvas shows).
@@ -78,8 +83,9 @@ const hooked = window;
  * @param {import('./app/app.js').RaytracerApp} app (a page that could not start has installFailedAutomation)
  * @param {Promise<void>} ready
  * @param {ReturnType<typeof import('./ui/ui.js').installUi>} ui
+ * @param {{open: (query: string) => Promise<void>}} page what the page does for open()
  */
-export function installAutomation(app, ready, ui) {
+export function installAutomation(app, ready, ui, { open }) {
   // the first source may still be on its way (?shader= is fetched): calls wait for it
   const loaded = () => (app.loading ?? Promise.resolve()).catch(() => {});
   // A first compile that failed rejects `ready` for good; once another shader has compiled,
@@ -90,8 +96,23 @@ export function installAutomation(app, ready, ui) {
     if (!app.compiles.hasProgram) await ready;
   };
 
+  /** One open() at a time; the one before is waited for. @type {Promise<unknown>} */
+  let opening = Promise.resolve();
+
   hooked.raytracer = {
     ready,
+
+    async open(query) {
+      const previous = opening;
+      const next = (async () => {
+        await previous.catch(() => {});
+        await loaded();
+        await app.compiles.settled();
+        await open(query);
+      })();
+      opening = next;
+      return next;
+    },
 
     async readPixels() {
       await settled();
@@ -254,6 +275,7 @@ export function installFailedAutomation(error) {
   const fail = async () => failed;
   hooked.raytracer = {
     ready: failed,
+    open: fail,
     readPixels: fail,
     renderFrames: fail,
     setControls: fail,

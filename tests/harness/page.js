@@ -65,6 +65,7 @@ async function connect() {
 
 /** Call from afterAll in every test file that renders. */
 export async function disconnect() {
+  await closeViewPage();
   if (!connection) return;
   const pending = connection;
   connection = undefined;
@@ -120,7 +121,8 @@ export function decodeRgba(base64, width, height, what) {
 }
 
 /**
- * Opens the page at a view (tests/views.js), waits until `window.raytracer.ready`, and reads one
+ * Brings the page to a view (tests/views.js: a fresh load for the first view of a test file,
+ * window.raytracer.open() after), waits until its first frame, and reads one
  * rendered frame. Throws if the page reports a WebGL/compile error, logs a console error or
  * throws, renders a frame of the wrong size, or does not report the view's controls and time as
  * its current values (window.raytracer.info()).
@@ -138,44 +140,75 @@ export async function renderView(view) {
   }
 }
 
+/**
+ * The page renderView draws on, kept for the rest of the test file: loaded at the first view's
+ * URL, then brought to each next view by window.raytracer.open() (src/page/open-view.js), which
+ * gives what a fresh load of that URL gives (tests/page-open.test.js) without loading the page
+ * again. Closed by disconnect(), and after a view that failed (the next one gets a fresh page).
+ * @type {{page: import('puppeteer-core').Page, errors: string[], context: any} | null}
+ */
+let viewSession = null;
+
+async function closeViewPage() {
+  const session = viewSession;
+  viewSession = null;
+  await session?.page.close().catch(() => {});
+}
+
 async function renderViewOnce(view) {
-  const { page, errors, context } = await openPage();
-  const url = context.baseUrl + viewQuery(view);
+  const reused = viewSession !== null && !viewSession.page.isClosed();
+  if (!reused) viewSession = await openPage();
+  const { page, context, errors: logged } = /** @type {NonNullable<typeof viewSession>} */ (viewSession);
+  const seen = logged.length;
+  /** What the page logged while it drew this view. */
+  const errorsNow = () => logged.slice(seen);
+  const query = viewQuery(view);
+  const url = context.baseUrl + query;
   const [width, height] = viewSize(view);
   let navigations = 0;
-  page.on('framenavigated', (frame) => {
+  const onNavigated = (frame) => {
     if (frame === page.mainFrame()) navigations++;
-  });
+  };
+  page.on('framenavigated', onNavigated);
+  let ok = false;
   const fail = (message) => {
-    const logged = errors.length ? `\nThe page logged:\n  ${errors.join('\n  ')}` : '';
+    const errors = errorsNow();
+    const said = errors.length ? `\nThe page logged:\n  ${errors.join('\n  ')}` : '';
     /** @type {Error & {selfNavigated?: boolean}} */
-    const error = new Error(`${view.name} (${url}): ${message}${logged}`);
+    const error = new Error(`${view.name} (${url}): ${message}${said}`);
     error.selfNavigated = navigations > 1;
     return error;
   };
   try {
-    const response = await page.goto(url, { waitUntil: 'load' });
-    if (!response || (!response.ok() && response.status() !== 304)) throw fail(`the page answered HTTP ${response?.status()}`);
-    await page
-      .waitForFunction(() => window.raytracer || document.documentElement.dataset.error, { polling: 100 })
-      .catch((error) => {
-        throw fail(`window.raytracer never appeared (${error.message})`);
-      });
+    if (!reused) {
+      const response = await page.goto(url, { waitUntil: 'load' });
+      if (!response || (!response.ok() && response.status() !== 304)) throw fail(`the page answered HTTP ${response?.status()}`);
+      await page
+        .waitForFunction(() => window.raytracer || document.documentElement.dataset.error, { polling: 100 })
+        .catch((error) => {
+          throw fail(`window.raytracer never appeared (${error.message})`);
+        });
+    }
     const result = await page
-      .evaluate(async () => {
-        const datasetError = () => document.documentElement.dataset.error;
-        if (!window.raytracer) return { error: `page error: ${datasetError()}` };
-        try {
-          await window.raytracer.ready;
-        } catch (error) {
-          return { error: `raytracer.ready rejected: ${error?.message ?? error}; data-error: ${datasetError() ?? '(none)'}` };
-        }
-        const pixels = await window.raytracer.readPixels();
-        const canvas = /** @type {HTMLCanvasElement | null} */ (document.querySelector('canvas[data-frame]'));
-        const frame = canvas ? Number(canvas.dataset.frame) : NaN;
-        const info = window.raytracer.info();
-        return { pixels, frame, info: JSON.parse(JSON.stringify(info)), datasetError: datasetError() };
-      })
+      .evaluate(
+        async (opening) => {
+          const datasetError = () => document.documentElement.dataset.error;
+          if (!window.raytracer) return { error: `page error: ${datasetError()}` };
+          try {
+            if (opening === null) await window.raytracer.ready;
+            else await window.raytracer.open(opening);
+          } catch (error) {
+            const what = opening === null ? 'raytracer.ready' : `raytracer.open(${opening})`;
+            return { error: `${what} rejected: ${error?.message ?? error}; data-error: ${datasetError() ?? '(none)'}` };
+          }
+          const pixels = await window.raytracer.readPixels();
+          const canvas = /** @type {HTMLCanvasElement | null} */ (document.querySelector('canvas[data-frame]'));
+          const frame = canvas ? Number(canvas.dataset.frame) : NaN;
+          const info = window.raytracer.info();
+          return { pixels, frame, info: JSON.parse(JSON.stringify(info)), datasetError: datasetError() };
+        },
+        reused ? query : null,
+      )
       .catch((error) => {
         throw fail(`${error.message}${navigations > 1 ? ` (the page navigated ${navigations} times)` : ''}`);
       });
@@ -195,9 +228,11 @@ async function renderViewOnce(view) {
       throw fail(`asked for time=${view.params.time} paused, page reports time=${info?.time} playing=${info?.playing}`);
     }
     const data = decodeRgba(pixels.data, width, height, view.name);
-    if (errors.length) throw fail('console errors or page errors while rendering');
+    if (errorsNow().length) throw fail('console errors or page errors while rendering');
+    ok = true;
     return { width, height, data, url, frame: result.frame, info };
   } finally {
-    await page.close().catch(() => {});
+    page.off('framenavigated', onNavigated);
+    if (!ok) await closeViewPage();
   }
 }

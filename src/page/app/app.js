@@ -196,6 +196,12 @@ export class RaytracerApp extends Emitter {
     this.emit('source');
   }
 
+  /** The next shader loaded starts from its own defaults (a new page's view: open-view.js), not from these values. */
+  forgetValues() {
+    this.controls = [];
+    this.values = {};
+  }
+
   /**
    * loadProject + compile: resolves on success, rejects with the compile error.
    * @param {MultipassShader} project

@@ -70,6 +70,19 @@ export class CanvasSize {
   }
 
   /**
+   * A fixed drawing-buffer size (device px), or null: the canvas follows the layout again.
+   * @param {Size | null} size
+   */
+  setFixed(size) {
+    this.fixed = size ? fitGpu(size, this.maxSide(), 'size') : null;
+    if (!this.fixed) {
+      this.canvas.style.width = '';
+      this.canvas.style.height = '';
+    }
+    this.fitFixedSize();
+  }
+
+  /**
    * The drawing-buffer size for the current layout, in device pixels.
    * @returns {Size}
    */

@@ -86,6 +86,15 @@ export class ShadertoyInputs {
   }
 
   /**
+   * The mouse the page opens with (null: all 0), and iMouse set to it.
+   * @param {number[] | null} mouse [x, y, z, w]
+   */
+  setStartMouse(mouse) {
+    this._startMouse = mouse ? mouse.slice() : null;
+    this.resetMouse();
+  }
+
+  /**
    * iMouse as the page opened with it (all 0, or the link's mouse=): a click or a drag on the
    * canvas sets iMouse as Shadertoy does, and for the raytracer that turns the camera; this puts
    * it back.

@@ -104,5 +104,13 @@ export function installInspection(app, { stage, canvas, builtinSource }) {
     inspector.unpin();
   });
 
-  return { inspector, comparison, program, compare, toggle, pin };
+  /** Inspect off, no pixel pinned, no comparison: as on a page just opened (open-view.js). */
+  const reset = () => {
+    comparison.cancel();
+    comparison.clear();
+    inspector.unpin();
+    inspector.setActive(false);
+  };
+
+  return { inspector, comparison, program, compare, toggle, pin, reset };
 }

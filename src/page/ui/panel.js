@@ -41,6 +41,23 @@ export class Panel {
    * @param {boolean} on
    * @param {boolean} available
    */
+  /**
+   * The View folder as a page opened with these gives it (io/open-view.js).
+   * @param {{scale: number, cap: number, sizeFixed: boolean}} view
+   */
+  setView({ scale, cap, sizeFixed }) {
+    this._state.scale = scale;
+    this._state.cap = Object.values(CAP_CHOICES).includes(cap) ? cap : 0;
+    this._scale
+      .name(sizeFixed ? 'Scale (size fixed)' : 'Resolution scale')
+      .enable(!sizeFixed)
+      .updateDisplay();
+    this._cap
+      .name(sizeFixed ? 'Max size (size fixed)' : 'Max canvas size')
+      .enable(!sizeFixed)
+      .updateDisplay();
+  }
+
   setConverging(on, available) {
     this._state.converge = on;
     this._converge.updateDisplay();
@@ -71,10 +88,9 @@ export class Panel {
       .add(this._state, 'cap', CAP_CHOICES)
       .name('Max canvas size')
       .onChange((v) => onCap(Number(v)));
-    if (sizeFixed) {
-      scaleController.name('Scale (size fixed)').disable();
-      capController.name('Max size (size fixed)').disable();
-    }
+    this._scale = scaleController;
+    this._cap = capController;
+    this.setView({ scale, cap, sizeFixed });
     view.add(this._state, 'screenshot', SCREENSHOT_CHOICES).name('Screenshot size');
     // a single-pass shader's progressive form: one more sample per pixel each still frame
     this._converge = view.add(this._state, 'converge').name('Converge when still').onChange(onConverge);

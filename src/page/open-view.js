@@ -1,0 +1,265 @@
+// The page opened at a URL's view: the shader (the one a link carries in its #source=, the
+// ?shader= file, or the built-in raytracer), its controls, size, clock, mouse and channels, the
+// edits kept for it, and the notes on what it could not have. The page's own load (main.js) and
+// window.raytracer.open() (automation.js) both go through openView, so that a page put in a
+// state by open() is the page a fresh load of that URL gives (tests/page-open.test.js holds the
+// two pixel-identical).
+
+import builtinSource from '../../shaders/raytrace.glsl?raw';
+import { sayOnNote, showKeptOffer, showRestoredNote, showValueNotes } from './ui/notices.js';
+import { fetchShader, shaderName } from './io/shader-loader.js';
+import { BUILTIN_BASE, sourceFromHash } from './io/share-link.js';
+import { sharedKey } from './io/kept-source.js';
+import { deserializeProject, serializeProject } from './io/project-files.js';
+import { readShader } from './io/open-shader.js';
+import { CHANNEL_PARAMS } from './io/url-params.js';
+import { singlePass } from '../shadertoy/multipass.js';
+
+/** @typedef {import('./app/app.js').RaytracerApp} RaytracerApp */
+/** @typedef {import('./io/hang-guard.js').HangGuard} HangGuard */
+/** @typedef {ReturnType<typeof import('./ui/ui.js').installUi>} PageUi */
+/** @typedef {ReturnType<typeof import('./io/url-params.js').parseUrlParams>} UrlParams */
+
+export const BUILTIN_NAME = 'shaders/raytrace.glsl';
+
+/** @typedef {import('./ui/notices.js').Notice} Notice */
+/** @typedef {import('./app/app.js').ShaderVersion} ShaderVersion */
+/**
+ * @typedef {object} FirstSource the shader the page opens with
+ * @property {import('../shadertoy/multipass.js').MultipassShader} project
+ * @property {{name: string, origin: RaytracerApp['origin'], url?: string | null, info?: object | null}} from
+ * @property {Notice} [notice]
+ */
+
+/** The built-in raytracer, with a notice when the page was asked for another shader. @param {Notice} [notice] @returns {FirstSource} */
+const builtin = (notice) => ({ project: singlePass(builtinSource), from: { name: BUILTIN_NAME, origin: 'builtin' }, notice });
+
+/**
+ * The shader a link carries in its fragment (#source=), or the built-in raytracer with a notice
+ * when it cannot be read; null when the fragment holds none.
+ * @param {string} hash
+ * @returns {Promise<FirstSource | null>}
+ */
+export async function linkedShader(hash) {
+  try {
+    // a patch link's base: the built-in raytracer, or a file the page serves
+    const baseText = async (/** @type {string} */ base) => (base === BUILTIN_BASE ? builtinSource : fetchShader(base));
+    const shared = await sourceFromHash(hash, baseText);
+    if (!shared) return null;
+    const { project, from } = readShader(shared.source, { name: shared.name, origin: 'editor' });
+    const notice = shared.note ? { title: `${shared.name}: made against another version of its file`, detail: shared.note } : undefined;
+    return { project, from: { ...from, name: shared.name }, notice };
+  } catch (error) {
+    console.warn(`The shader in the link's #source= could not be read: ${error.message}`);
+    return builtin({
+      title: 'Could not read the shader in this link',
+      detail: `${error.message.startsWith('its ') ? `The link's ${error.message.slice(4)}` : `The link's shader: ${error.message}`}.\nShowing the built-in raytracer (${BUILTIN_NAME}) instead.`,
+    });
+  }
+}
+
+/**
+ * The first shader: the one a link carries (#source=), the ?shader= file, or the built-in
+ * raytracer (also when those cannot be had or read: then with a notice that says so). A text
+ * that is Shadertoy's JSON export (a .json file, or any text that looks like JSON) is read as one.
+ * @param {{shader?: string, refusedShader?: {url: string, why: string}}} params
+ * @param {string} hash the URL's fragment (#source=…)
+ * @returns {Promise<FirstSource>}
+ */
+async function initialSource(params, hash) {
+  const linked = await linkedShader(hash);
+  if (linked) return linked;
+  if (params.refusedShader) {
+    const { url, why } = params.refusedShader;
+    return builtin({ title: `Could not load ${url}`, detail: `${why}.\nShowing the built-in raytracer (${BUILTIN_NAME}) instead.` });
+  }
+  if (!params.shader) return builtin();
+  try {
+    const url = params.shader;
+    const { project, from } = readShader(await fetchShader(url), { name: shaderName(url), origin: 'url', url });
+    return { project, from: { ...from, name: shaderName(url) } };
+  } catch (error) {
+    console.warn(`URL parameter shader=${params.shader}: ${error.message}`);
+    return builtin({
+      title: `Could not load ${params.shader}`,
+      detail: `${error.message}\nShowing the built-in raytracer (${BUILTIN_NAME}) instead.`,
+    });
+  }
+}
+
+/** A console warning as the page's note says it: without the console's "who says". @param {string} warning */
+const plainWarning = (warning) => warning.replace(/^(URL parameter |URL: )/, '');
+
+/** Whether this load is the same page again (a reload, back or forward), not a link opened afresh. */
+function reopened() {
+  const navigation = /** @type {PerformanceNavigationTiming | undefined} */ (performance.getEntriesByType?.('navigation')[0]);
+  return navigation?.type === 'reload' || navigation?.type === 'back_forward';
+}
+
+/**
+ * Work is never lost (io/kept-source.js): edits kept for the page's shader (the ?shader= file, the
+ * built-in one, or the shader a link carries), every tab of a multipass one, come back on a
+ * reload, with a note that can discard them. A link opened afresh runs what it names: kept edits
+ * of that shader are set aside and offered, never run in its place.
+ * @param {RaytracerApp} app
+ * @param {{kept: import('./io/kept-source.js').KeptSource}} ui the page's kept edits
+ * @param {string | undefined} shader the ?shader= parameter
+ * @param {FirstSource} first what the page loaded
+ * @returns {(() => ShaderVersion) | null} edits restored: the file, to run while they do not compile
+ */
+export function keptWork(app, ui, shader, { project, from }) {
+  const stage = /** @type {HTMLElement} */ (document.getElementById('stage'));
+  const file = { name: from.name, source: serializeProject(project) };
+  const own = app.version(); // the file as it is, before any edit of it
+  const kept = ui.kept.open(from.origin === 'editor' ? sharedKey(file) : (shader ?? BUILTIN_NAME), file);
+  /** @param {{name: string, source: string}} edits */
+  const load = (edits) =>
+    app.loadProject(deserializeProject(edits.source), { name: edits.name, origin: 'editor', info: from.info ?? null });
+  if (kept && reopened()) {
+    load(kept);
+    const note = showRestoredNote(stage, kept.name, () => app.setProject(project, from).catch(() => {}));
+    // the note belongs to the text it restored: once that is edited or replaced, Discard would
+    // throw away what it did not restore
+    const stale = (/** @type {string} */ text) => text !== kept.source && note.remove();
+    ui.kept.watch(stale);
+    app.on('source', () => stale(serializeProject(app.project)));
+    // edits that do not compile (kept mid-work): the file runs until they do, and the note says so
+    app.on('compile', (error) => {
+      const standing = error && app.compiles.running?.load === own.load;
+      sayOnNote(note, standing ? `They do not compile yet: the picture is ${from.name} as the file has it, until they do.` : null);
+    });
+    // with the values the page runs (a link's): those of the file's controls
+    return () => ({
+      ...own,
+      values: Object.fromEntries(Object.keys(own.values ?? {}).flatMap((name) => (name in app.values ? [[name, app.values[name]]] : []))),
+    });
+  }
+  if (kept) ui.kept.setAside();
+  const earlier = ui.kept.earlier();
+  if (!earlier) return null;
+  showKeptOffer(stage, earlier.name, {
+    open: () => {
+      ui.kept.forgetEarlier();
+      load(earlier);
+      app.compiles.compile().catch(() => {});
+    },
+    discard: () => ui.kept.forgetEarlier(),
+  });
+  return null;
+}
+
+/**
+ * The shader about to run is the one that hung last time (io/hang-guard.js): run the last one that
+ * finished a frame instead, say so, and offer the text that hung back to the editor, not run.
+ * @param {RaytracerApp} app
+ * @param {(notice: Notice) => void} notice
+ */
+function avoidHungShader(app, notice) {
+  const guard = /** @type {HangGuard} */ (app.hangGuard);
+  const back = guard.backFor(app.project, app.values);
+  const hung = guard.note;
+  if (!back || !hung) return;
+  app.runVersion(back, 'the last shader that finished');
+  const compiling = hung.phase === 'compiling';
+  notice({
+    title: compiling ? `${hung.name} was still compiling when the page closed` : `${hung.name} did not finish drawing last time`,
+    detail: compiling
+      ? `It had been compiling for ${Math.round(hung.seconds ?? 0)} s (SwiftShader compiles a shader on its first draw; a large one takes a while, an endless loop never ends), so the page runs ${back.name}, the last shader that finished a frame. Run it again, or put it in the editor without running it.`
+      : `It may never finish (an endless loop?), so the page runs ${back.name}, the last shader that finished a frame. The text that hung is kept: it goes back into the editor, not run, with the button below.`,
+    actions: [
+      ...(compiling && hung.version
+        ? [{ label: `Run ${hung.name}`, run: () => runAgain(app, /** @type {ShaderVersion} */ (hung.version)) }]
+        : []),
+      { label: `Edit ${hung.name} (not run)`, run: () => app.loadProject(hung.project, { name: hung.name, origin: 'editor' }) },
+    ],
+  });
+}
+
+/**
+ * Runs a shader as it ran before (its tabs and control values).
+ * @param {RaytracerApp} app
+ * @param {ShaderVersion} version
+ */
+function runAgain(app, version) {
+  app.runVersion(version, 'the shader that was compiling');
+  app.compiles.compile().catch(() => {}); // shown on the page
+}
+
+/**
+ * Brings the page to the view `params` (parseUrlParams of a URL) and `hash` describe, as a load
+ * of that URL does: on the page's own load with the app just started, or again later
+ * (window.raytracer.open) with the page as it was left: then what the last view left behind (an
+ * inspected pixel, a comparison, notes, the controls' values, the clock, the channels) goes first.
+ * Resolves once the view's first frame is drawn; rejects with the compile error when its shader
+ * does not compile.
+ * @param {RaytracerApp} app
+ * @param {PageUi} ui
+ * @param {UrlParams} params
+ * @param {{hash: string, noticeAfterCompile: (notice: Notice) => void, again?: boolean}} options
+ * @returns {Promise<void>}
+ */
+export async function openView(app, ui, params, { hash, noticeAfterCompile, again = false }) {
+  const stage = /** @type {HTMLElement} */ (document.getElementById('stage'));
+  for (const warning of params.warnings) console.warn(warning);
+  const first = initialSource(params, hash); // fetched meanwhile
+  if (again) await leaveView(app, ui, params);
+  if (params.time !== undefined) app.inputs.setTime(params.time);
+  if (params.speed !== undefined) app.inputs.setSpeed(params.speed);
+  if (params.mouse) app.inputs.setMouse(params.mouse, { start: true });
+  params.channels.forEach((url, i) => {
+    if (!url) return;
+    app.setChannel(i, url).catch((error) => {
+      console.warn(`URL parameter ${CHANNEL_PARAMS[i]}=${url} ignored: ${error.message}`);
+      ui.toast(`Could not load ${url} into iChannel${i}`);
+    });
+  });
+  const opened = first.then((loaded) => {
+    if (loaded.notice) noticeAfterCompile(loaded.notice);
+    app.loadProject(loaded.project, loaded.from);
+    const standIn = keptWork(app, ui, params.shader, loaded);
+    const { warnings } = app.applyControls(params.controls, 'URL');
+    avoidHungShader(app, noticeAfterCompile); // after the link's values: a value can be what hung
+    showValueNotes(stage, [...params.warnings, ...warnings].map(plainWarning));
+    return standIn;
+  });
+  app.loading = opened.then(() => {});
+  const standIn = await opened;
+  const compiled = app.compiles.compile({ orElse: standIn?.() });
+  if (!again) {
+    compiled.catch(() => {}); // shown on the page; `ready` rejects
+    app.frames.request();
+    return app.ready;
+  }
+  await compiled;
+  // the view's clock from its start, as on a fresh page: iFrame 0 at the view's iTime, cleared buffers
+  await app.frames.idle();
+  app.inputs.restart();
+  app.gpu.tell('clearBuffers', {});
+  app.inputs.setTime(params.time ?? 0);
+  await app.frames.draw();
+}
+
+/**
+ * What the page holds from the view before, undone, so that the next view starts as a fresh
+ * page would: the inspector and the comparison off, the notes gone, the clock stopped at 0 with
+ * the view's play state, speed, mouse, size and channels, and no control values carried over.
+ * @param {RaytracerApp} app
+ * @param {PageUi} ui
+ * @param {UrlParams} params
+ */
+async function leaveView(app, ui, params) {
+  ui.inspection.reset();
+  document.getElementById('notes')?.replaceChildren();
+  app.inputs.pause();
+  await app.frames.idle();
+  app.inputs.restart();
+  app.inputs.playing = params.time === undefined;
+  app.inputs.setSpeed(params.speed ?? 1);
+  app.inputs.setStartMouse(params.mouse ?? null);
+  app.canvasSize.setFixed(params.size ?? null);
+  app.canvasSize.scale = params.scale ?? 1;
+  app.canvasSize.cap = params.cap ?? 0;
+  ui.panel.setView({ scale: app.canvasSize.scale, cap: app.canvasSize.cap, sizeFixed: Boolean(app.canvasSize.fixed) });
+  await Promise.all(params.channels.map((url, i) => (url || !app.channels.inUse(i) ? null : app.setChannel(i, null))));
+  app.forgetValues();
+}
