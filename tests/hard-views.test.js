@@ -4,14 +4,13 @@
 import fs from 'node:fs';
 import { afterAll, describe, expect, test } from 'vitest';
 import { parseControls } from '../src/shadertoy/controls.js';
-import { renderReference } from '../src/reference/render.js';
-import { imageError, formatImageError } from '../src/reference/error.js';
+import { formatImageError } from '../src/reference/error.js';
 import { SHADER_FILE } from './harness/config.js';
 import { assertNotBlank } from './harness/images.js';
-import { disconnect, renderView } from './harness/page.js';
-import { EXTRA_SAMPLES_VIEW, extraSampleMask } from '../src/shadertoy/extra-samples.js';
+import { disconnect } from './harness/page.js';
+import { measureSameRay } from './harness/same-ray.js';
 import { viewControlProblems } from './views.js';
-import { HARD_VIEWS, MAX_OVER_2, referenceView } from './hard-views.js';
+import { HARD_VIEWS, MAX_OVER_2 } from './hard-views.js';
 
 afterAll(disconnect);
 
@@ -21,9 +20,8 @@ const controls = parseControls(source);
 describe('hard views against the same-ray float64 reference', () => {
   test.each(HARD_VIEWS.map((v) => [v.name, { ...v, params: { ...v.params, SAMPLES: 1 } }]))('%s, one sample per pixel', async (_, view) => {
     expect(viewControlProblems(view, controls)).toEqual([]);
-    const image = await renderView(view);
+    const { image, error } = await measureSameRay(source, view);
     if (!view.uniform) assertNotBlank(image, view.name);
-    const error = imageError(image, renderReference(source, referenceView(view)));
     console.log(`${view.name}: ${formatImageError(error)}`);
     expect(error.nonFinite).toBe(0);
     expect(error.over2, `${view.name} (${view.what}): ${formatImageError(error)}`).toBeLessThanOrEqual(view.maxOver2 ?? MAX_OVER_2);
@@ -33,11 +31,8 @@ describe('hard views against the same-ray float64 reference', () => {
   // view marks take the 4x4 grid, the others their centre. The same bound holds.
   test.each(HARD_VIEWS.map((v) => [v.name, v]))('%s, adaptive anti-aliasing', async (_, view) => {
     const adaptive = { ...view, params: { ...view.params, SAMPLES: 16, ADAPTIVE_AA: 1 } };
-    const extraSamples = extraSampleMask(await renderView({ ...adaptive, params: { ...adaptive.params, ...EXTRA_SAMPLES_VIEW } }));
-    const image = await renderView(adaptive);
-    const error = imageError(image, renderReference(source, referenceView(adaptive), { extraSamples }));
-    const share = extraSamples.reduce((n, v) => n + v, 0) / extraSamples.length;
-    console.log(`${view.name}, adaptive (extra samples in ${(100 * share).toFixed(2)}% of pixels): ${formatImageError(error)}`);
+    const { error, share } = await measureSameRay(source, adaptive);
+    console.log(`${view.name}, adaptive (extra samples in ${(100 * (share ?? 0)).toFixed(2)}% of pixels): ${formatImageError(error)}`);
     expect(error.nonFinite).toBe(0);
     expect(error.over2, `${view.name}, adaptive: ${formatImageError(error)}`).toBeLessThanOrEqual(
       view.adaptiveMaxOver2 ?? view.maxOver2 ?? MAX_OVER_2,

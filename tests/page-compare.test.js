@@ -1,19 +1,17 @@
 // "Compare with float64" (src/page/inspect/compare.js), in the real page: its figures for a view
 // are the ones `npm run accuracy` computes for it (tests/scripts/accuracy-report.js: the page's
 // 8-bit frame against renderReference with the same rays, the extra samples where the shader's
-// "Extra samples" view puts them), computed here in Node; the page answers while the reference
+// "Extra samples" view puts them: tests/harness/same-ray.js), computed here in Node; the page answers while the reference
 // renders and says how far it has got; Cancel stops it; a click on the heat map pins that pixel in
 // the inspector; a shader that is not the raytracer, a multipass one and a debug view are told
 // so in a box that offers no map controls; a comparison under way is not started again.
 
 import fs from 'node:fs';
 import { afterAll, describe, expect, test } from 'vitest';
-import { renderReference } from '../src/reference/render.js';
-import { imageError, formatImageError } from '../src/reference/error.js';
+import { formatImageError } from '../src/reference/error.js';
 import { SHADER_FILE } from './harness/config.js';
-import { disconnect, renderView } from './harness/page.js';
-import { EXTRA_SAMPLES_VIEW, extraSampleMask } from '../src/shadertoy/extra-samples.js';
-import { referenceView } from './hard-views.js';
+import { disconnect } from './harness/page.js';
+import { measureSameRay } from './harness/same-ray.js';
 import { viewQuery } from './views.js';
 import { button, canvasBox, withPage } from './page-helpers.js';
 import { exportOf } from './page-multipass-helpers.js';
@@ -24,13 +22,7 @@ const source = fs.readFileSync(SHADER_FILE, 'utf8');
 const VIEWPORT = { width: 1280, height: 800, deviceScaleFactor: 1 };
 
 /** What the accuracy report measures for a view: its same-ray error, and the share of pixels with extra samples. */
-async function accuracyReportFigures(view) {
-  const adaptive = view.params.ADAPTIVE_AA !== 0 && view.params.SAMPLES !== 1;
-  const mask = adaptive ? extraSampleMask(await renderView({ ...view, params: { ...view.params, ...EXTRA_SAMPLES_VIEW } })) : undefined;
-  const image = await renderView(view);
-  const error = imageError(image, renderReference(source, referenceView(view), { extraSamples: mask }));
-  return { error, share: mask ? mask.reduce((n, v) => n + v, 0) / mask.length : null };
-}
+const accuracyReportFigures = (view) => measureSameRay(source, view);
 
 // The accuracy report's views (its size, 320x180; 1 sample per pixel and adaptive anti-aliasing,
 // 16 samples at edges, the defaults), each scene's.

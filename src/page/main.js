@@ -12,8 +12,10 @@ import { parseUrlParams } from './io/url-params.js';
 import { fetchShader, shaderName } from './io/shader-loader.js';
 import { HangGuard, watchHangs } from './io/hang-guard.js';
 import { openShader } from './io/open-shader.js';
-import { BUILTIN_NAME, keptWork, linkedShader, openView } from './open-view.js';
+import { BUILTIN_NAME, keptWork, linkedShader, openView, useBuiltinSource } from './open-view.js';
 import { singlePass } from '../shadertoy/multipass.js';
+
+useBuiltinSource(builtinSource);
 
 async function start() {
   const canvas = /** @type {HTMLCanvasElement} */ (document.getElementById('view'));
@@ -70,6 +72,7 @@ start().then((started) => (app = started));
 // glsl-file-changed event (vite.config.js). A shader edited in the page's editor is left alone.
 if (import.meta.hot) {
   import.meta.hot.accept('../../shaders/raytrace.glsl?raw', (module) => {
+    if (module) useBuiltinSource(module.default);
     if (!app || !module || app.origin !== 'builtin') return;
     app.setProject(singlePass(module.default)).catch(() => {});
   });

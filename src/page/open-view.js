@@ -5,7 +5,6 @@
 // state by open() is the page a fresh load of that URL gives (tests/page-open.test.js holds the
 // two pixel-identical).
 
-import builtinSource from '../../shaders/raytrace.glsl?raw';
 import { sayOnNote, showKeptOffer, showRestoredNote, showValueNotes } from './ui/notices.js';
 import { fetchShader, shaderName } from './io/shader-loader.js';
 import { BUILTIN_BASE, sourceFromHash } from './io/share-link.js';
@@ -30,6 +29,17 @@ export const BUILTIN_NAME = 'shaders/raytrace.glsl';
  * @property {{name: string, origin: RaytracerApp['origin'], url?: string | null, info?: object | null}} from
  * @property {Notice} [notice]
  */
+
+/**
+ * The built-in raytracer's text, as main.js imports it (`?raw`). Only main.js imports the file: it
+ * accepts the file's hot updates under `npm run dev`, and a second importer that does not would
+ * make Vite reload the whole page instead.
+ */
+let builtinSource = '';
+/** @param {string} text the built-in raytracer's text (main.js: at start, and after a hot update) */
+export function useBuiltinSource(text) {
+  builtinSource = text;
+}
 
 /** The built-in raytracer, with a notice when the page was asked for another shader. @param {Notice} [notice] @returns {FirstSource} */
 const builtin = (notice) => ({ project: singlePass(builtinSource), from: { name: BUILTIN_NAME, origin: 'builtin' }, notice });

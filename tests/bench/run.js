@@ -34,7 +34,7 @@ import { timeShaders } from './timer.js';
 import { renderRawShader } from '../harness/raw-webgl.js';
 import { EXTRA_SAMPLES_VIEW, countExtraSamplePixels } from '../../src/shadertoy/extra-samples.js';
 import { composePeer } from './peers/compose-peer.js';
-import { renderReferenceParallel } from './reference.js';
+import { renderReferenceParallel } from '../harness/reference-threads.js';
 import { paretoFront, chartSvg } from './chart.js';
 import {
   ONE_TRACE_SITE,

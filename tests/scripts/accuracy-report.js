@@ -10,11 +10,10 @@
 
 import fs from 'node:fs';
 import path from 'node:path';
-import { renderReference } from '../../src/reference/render.js';
 import { imageError } from '../../src/reference/error.js';
 import { REPO_ROOT, SHADER_FILE } from '../harness/config.js';
-import { renderView } from '../harness/page.js';
-import { EXTRA_SAMPLES_VIEW, extraSampleMask } from '../../src/shadertoy/extra-samples.js';
+import { renderReferenceParallel } from '../harness/reference-threads.js';
+import { measureSameRay } from '../harness/same-ray.js';
 import { rendererLabel, withHarness } from '../harness/setup.js';
 import { HARD_VIEWS, referenceView } from '../hard-views.js';
 import { DEFAULT_SIZE, viewSize } from '../views.js';
@@ -37,10 +36,9 @@ const row = (name, settings, same, converged) =>
   `${converged.rmse.toExponential(1)} | ${converged.psnr.toFixed(1)} | ${pct(converged.over1)} | ${pct(converged.over2)} |`;
 
 /** The page's image and its errors against the same-ray reference and the view's converged one. */
-async function measure(source, view, converged, extraSamples) {
-  const image = await renderView(view);
-  const same = imageError(image, renderReference(source, referenceView(view), { extraSamples }));
-  return { same, converged: imageError(image, converged) };
+async function measure(source, view, converged) {
+  const { image, error, share } = await measureSameRay(source, view);
+  return { same: error, converged: imageError(image, converged), share };
 }
 
 async function main() {
@@ -52,13 +50,15 @@ async function main() {
       process.stdout.write(`[${i + 1}/${VIEWS.length}] ${view.name}: 1 spp`);
       // The converged reference does not depend on the sampling controls (its samples are its
       // own): one per view serves both rows.
-      const converged = renderReference(source, referenceView(view), { mode: 'converged', samplesPerAxis: CONVERGED_SAMPLES_PER_AXIS });
+      const converged = await renderReferenceParallel(source, referenceView(view), {
+        mode: 'converged',
+        samplesPerAxis: CONVERGED_SAMPLES_PER_AXIS,
+      });
       const one = await measure(source, { ...view, params: { ...view.params, SAMPLES: 1 } }, converged);
       process.stdout.write(', adaptive');
       const adaptiveView = { ...view, params: { ...view.params, ...ADAPTIVE } };
-      const mask = extraSampleMask(await renderView({ ...adaptiveView, params: { ...adaptiveView.params, ...EXTRA_SAMPLES_VIEW } }));
-      const adaptive = await measure(source, adaptiveView, converged, mask);
-      const extraSampleFraction = mask.reduce((n, v) => n + v, 0) / mask.length;
+      const adaptive = await measure(source, adaptiveView, converged);
+      const extraSampleFraction = adaptive.share ?? 0;
       console.log(' done');
       results.push({
         name: view.name,

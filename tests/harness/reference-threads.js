@@ -1,5 +1,6 @@
-// The converged float64 reference for the benchmark, split by rows over worker threads (one per
-// core): at 640x360 and 64 samples per pixel it is ~15 million paths.
+// The float64 reference (src/reference/render.js) split by rows over worker threads (one per
+// core, reference-thread.js): the benchmark's converged reference (at 640x360 and 64 samples per
+// pixel, ~15 million paths) and the accuracy report's converged references.
 import os from 'node:os';
 import { Worker } from 'node:worker_threads';
 
@@ -20,7 +21,7 @@ export async function renderReferenceParallel(
     bands.map(
       (rows) =>
         new Promise((resolve, reject) => {
-          const worker = new Worker(new URL('./reference-worker.js', import.meta.url), {
+          const worker = new Worker(new URL('./reference-thread.js', import.meta.url), {
             workerData: { source, view, options: { ...options, rows } },
           });
           worker.once('message', resolve);
