@@ -196,6 +196,8 @@ describe('defect 1: an edited or pasted shader kept the previous file name', () 
       expect(alert).not.toContain('raytrace');
       await pasteIntoEditor(page, solid(10, 20, 30));
       await page.waitForFunction(() => document.getElementById('overlay').hidden, { polling: 50 });
+      // the new shader's first frame is on the canvas (compiled is not yet drawn): the Screenshot is of it
+      await page.evaluate(() => window.raytracer.readPixels());
       await (await button(page, 'Download .glsl')).click();
       await (await button(page, 'Screenshot')).click();
       await page.waitForFunction(() => /** @type {any} */ (window).__saved.length === 2, { polling: 50 });
