@@ -16,7 +16,7 @@ import { renderView } from './page.js';
 import { renderReference } from '../../src/reference/render.js';
 
 /** Whether a view's shader takes extra samples at edges (adaptive anti-aliasing, the default). */
-export const isAdaptive = (params) => params.ADAPTIVE_AA !== 0 && params.SAMPLES !== 1;
+const isAdaptive = (params) => params.ADAPTIVE_AA !== 0 && params.SAMPLES !== 1;
 
 /**
  * Renders `view` in the page and measures it against the same-ray float64 reference.

@@ -86,6 +86,14 @@ function enqueue(fields) {
   });
 }
 
+/**
+ * A probe of one pixel of the last frame (warmUp: the path probe's first draw, compileProbe's).
+ * @param {{x: number, y: number}} pixel
+ */
+function enqueueProbe(pixel, warmUp = false) {
+  return enqueue({ kind: 'probe', inputs: null, width: 1, height: 1, readBack: true, target: null, pixel, warmUp });
+}
+
 /** Something the picture depends on changed: the frame under way starts again, and its cost is
  * learnt again (a control can make a shader far heavier). */
 function changed() {
@@ -331,17 +339,7 @@ const tell = serve(
         await renderer().probe.compile(project, hostBlock, fileName, key);
         // its first draw, queued behind what is asked already: a pixel asked for before that is
         // read without waiting for it (startProbe); the reply comes once the probe is ready
-        if (lastFrame)
-          await enqueue({
-            kind: 'probe',
-            inputs: null,
-            width: 1,
-            height: 1,
-            readBack: true,
-            target: null,
-            pixel: { x: 0, y: 0 },
-            warmUp: true,
-          });
+        if (lastFrame) await enqueueProbe({ x: 0, y: 0 }, true);
       } finally {
         probeWarming = false;
       }
@@ -352,7 +350,7 @@ const tell = serve(
       // a newer probe replaces one that has not started
       const stale = waiting.findIndex((queued) => queued.kind === 'probe' && !queued.warmUp);
       if (stale >= 0) waiting.splice(stale, 1)[0].reject(new Error('replaced by a newer probe'));
-      return enqueue({ kind: 'probe', inputs: null, width: 1, height: 1, readBack: true, target: null, pixel: { x, y } });
+      return enqueueProbe({ x, y });
     },
 
     bench({ inputs, n }) {
