@@ -53,6 +53,12 @@ export default [
     files: ['src/shadertoy/**/*.js', 'src/reference/**/*.js', 'src/shared/**/*.js'],
     languageOptions: { globals: { ...globals.browser, ...globals.node } },
   },
+  // The engine (headless Chromium, the page's server) and the command line run in Node; the
+  // functions they pass to page.evaluate() run in the page.
+  {
+    files: ['src/engine/**/*.js', 'src/cli/**/*.js', 'bin/**/*.js'],
+    languageOptions: { globals: { ...globals.node, ...globals.browser } },
+  },
   // Tests, scripts, the benchmark and configs run in Node; functions passed to page.evaluate()
   // run in the page, so the browser's globals are known there too.
   { files: ['tests/**/*.js', '*.js'], languageOptions: { globals: { ...globals.node, ...globals.browser } } },

@@ -6,9 +6,9 @@ import { spawn } from 'node:child_process';
 import puppeteer from 'puppeteer-core';
 import { afterAll, describe, expect, test } from 'vitest';
 import { REPO_ROOT } from './harness/config.js';
-import { INSTALL_HINT, findChrome } from './harness/chrome-path.js';
+import { INSTALL_HINT, findChrome } from '../src/engine/chrome-path.js';
 import { disconnect, harnessContext, openPage, useHarness } from './harness/page.js';
-import { CHROME_ARGS } from './harness/setup.js';
+import { CHROME_ARGS } from '../src/engine/browser.js';
 
 afterAll(disconnect);
 

@@ -2,7 +2,7 @@
 // animation loop running, and the page under test is the real one, drawn by SwiftShader.
 import { afterAll, describe, expect, test } from 'vitest';
 import { disconnect, harnessContext, openPage } from './harness/page.js';
-import { CHROME_ARGS, GPU_CHROME_ARGS, rendererKind } from './harness/setup.js';
+import { CHROME_ARGS, GPU_CHROME_ARGS, rendererKind } from '../src/engine/browser.js';
 
 afterAll(disconnect);
 

@@ -5,7 +5,7 @@ import os from 'node:os';
 import path from 'node:path';
 import { describe, expect, test } from 'vitest';
 import { composeImageShader } from '../src/shadertoy/header.js';
-import { findChrome } from './harness/chrome-path.js';
+import { findChrome } from '../src/engine/chrome-path.js';
 import { OUTPUT_DIR } from './harness/config.js';
 import {
   allowedDiffPixels,

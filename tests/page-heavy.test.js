@@ -5,8 +5,8 @@
 
 import { describe, expect, test } from 'vitest';
 import puppeteer from 'puppeteer-core';
-import { CHROME_ARGS } from './harness/setup.js';
-import { findChrome } from './harness/chrome-path.js';
+import { CHROME_ARGS } from '../src/engine/browser.js';
+import { findChrome } from '../src/engine/chrome-path.js';
 import { harnessContext } from './harness/page.js';
 import { button, info, nextFrame, openEditor, pixel, typeInEditor, withControl, withPage, withServedDir } from './page-helpers.js';
 import { SHORT_TIMEOUTS } from './harness/config.js';

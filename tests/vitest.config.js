@@ -3,7 +3,7 @@
 // tests/harness/setup.js starts that page server itself.
 import { fileURLToPath } from 'node:url';
 import { defineConfig } from 'vitest/config';
-import { findChrome } from './harness/chrome-path.js';
+import { findChrome } from '../src/engine/chrome-path.js';
 
 // No Chromium, no test can run: say so and how to install one before vitest prints anything
 // (its banner, then "No test files found" and a stack, if the global setup were left to fail).

@@ -67,25 +67,42 @@ async function start() {
 let app = null;
 start().then((started) => (app = started));
 
-// Under `npm run dev`, editing a shader recompiles it in place (errors go to the overlay): the
-// built-in one through its `?raw` import, a ?shader= file through the dev server's
-// glsl-file-changed event (vite.config.js). A shader edited in the page's editor is left alone.
+/**
+ * The ?shader= file at URL path `url` changed on disk: run it again in place (errors go to the
+ * overlay). A shader edited in the page's editor, or replaced meanwhile, is left alone.
+ * @param {string} url
+ */
+async function reloadChangedShader(url) {
+  if (!app || app.origin !== 'url' || !app.shaderUrl) return;
+  if (new URL(app.shaderUrl, location.href).pathname !== url) return;
+  const shaderUrl = app.shaderUrl;
+  try {
+    const source = await fetchShader(shaderUrl);
+    if (app.origin !== 'url' || app.shaderUrl !== shaderUrl) return; // replaced meanwhile
+    await openShader(app, source, { name: shaderName(shaderUrl), origin: 'url', url: shaderUrl }).running;
+  } catch (error) {
+    console.warn(`${shaderUrl} changed but could not be reloaded: ${error.message}`);
+  }
+}
+
+// Under `npm run dev`, editing a shader recompiles it in place: the built-in one through its
+// `?raw` import, a ?shader= file through the dev server's glsl-file-changed event
+// (vite.config.js).
 if (import.meta.hot) {
   import.meta.hot.accept('../../shaders/raytrace.glsl?raw', (module) => {
     if (module) useBuiltinSource(module.default);
     if (!app || !module || app.origin !== 'builtin') return;
     app.setProject(singlePass(module.default)).catch(() => {});
   });
-  import.meta.hot.on('glsl-file-changed', async ({ url }) => {
-    if (!app || app.origin !== 'url' || !app.shaderUrl) return;
-    if (new URL(app.shaderUrl, location.href).pathname !== url) return;
-    const shaderUrl = app.shaderUrl;
-    try {
-      const source = await fetchShader(shaderUrl);
-      if (app.origin !== 'url' || app.shaderUrl !== shaderUrl) return; // replaced meanwhile
-      await openShader(app, source, { name: shaderName(shaderUrl), origin: 'url', url: shaderUrl }).running;
-    } catch (error) {
-      console.warn(`${shaderUrl} changed but could not be reloaded: ${error.message}`);
-    }
+  import.meta.hot.on('glsl-file-changed', ({ url }) => reloadChangedShader(url));
+}
+
+// Served by the command line's `open` (src/engine/page-server.js), the page hears of a saved file
+// through Server-Sent Events at the address this tag names.
+const fileEvents = document.querySelector('meta[name="raytracer-file-events"]')?.getAttribute('content');
+if (fileEvents) {
+  new EventSource(fileEvents).addEventListener('message', (event) => {
+    const { url } = JSON.parse(event.data);
+    reloadChangedShader(url);
   });
 }

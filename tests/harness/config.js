@@ -11,8 +11,6 @@ export const SHADER_FILE = path.join(REPO_ROOT, 'shaders', 'raytrace.glsl');
 export const UPDATE_COMMAND = 'npm run test:update';
 /** Goldens are written only when this is set (by `npm run test:update`). */
 export const UPDATING = process.env.UPDATE_GOLDENS === '1';
-/** How long a page may take to load or answer (SwiftShader compiles on the CPU). */
-export const PAGE_TIMEOUT_MS = 90_000;
 
 /**
  * The page's timeouts shortened for the tests that wait for one (src/page/timeouts.js): a test

@@ -5,23 +5,13 @@
 
 import fs from 'node:fs';
 import path from 'node:path';
-import { PNG } from 'pngjs';
+import { readPng, writePng } from '../../src/engine/png.js';
 import pixelmatch from 'pixelmatch';
 import { ENVIRONMENT_FILE, GOLDEN_DIR, OUTPUT_DIR, UPDATE_COMMAND, UPDATING, rel } from './config.js';
 import { harnessContext } from './page.js';
 import { INCLUDE_AA, MAX_DIFF_FRACTION, PIXEL_THRESHOLD } from '../views.js';
 
-export function readPng(file) {
-  const png = PNG.sync.read(fs.readFileSync(file));
-  return { width: png.width, height: png.height, data: png.data };
-}
-
-export function writePng(file, { width, height, data }) {
-  fs.mkdirSync(path.dirname(file), { recursive: true });
-  const png = new PNG({ width, height });
-  Buffer.from(data.buffer, data.byteOffset, data.byteLength).copy(png.data);
-  fs.writeFileSync(file, PNG.sync.write(png, { colorType: 6 }));
-}
+export { readPng, writePng };
 
 /** An opaque image whose pixel (x, y) has the colour `colourAt(x, y)` ([r, g, b]). */
 export function makeImage(width, height, colourAt) {

@@ -6,8 +6,9 @@
 import fs from 'node:fs';
 import puppeteer from 'puppeteer-core';
 import { fromBase64 } from '../../src/shared/pixels.js';
-import { CLOSE_TIMEOUT_MS, SCRIPT_WAIT_TIMEOUT_MS, WAIT_TIMEOUT_MS, closeBrowser, watchPage, withTimeout } from './watch.js';
+import { CLOSE_TIMEOUT_MS, SCRIPT_WAIT_TIMEOUT_MS, WAIT_TIMEOUT_MS, closeBrowser, watchPage, withTimeout } from '../../src/engine/watch.js';
 import { PAGE_PARAMS, viewQuery, viewSize } from '../views.js';
+import { drawView } from '../../src/engine/view.js';
 
 const INJECTION_SOURCE = fs.readFileSync(new URL('./deterministic-injection.js', import.meta.url), 'utf8');
 
@@ -54,7 +55,7 @@ async function connect() {
       );
       return { browser, context, own: false };
     } catch (error) {
-      const { launchBrowser } = await import('./setup.js');
+      const { launchBrowser } = await import('../../src/engine/browser.js');
       console.warn(`The test run's Chromium is gone (${error.message}); launching another for the rest of this test file.`);
       return { browser: await launchBrowser(), context, own: true };
     }
@@ -180,39 +181,11 @@ async function renderViewOnce(view) {
     return error;
   };
   try {
-    if (!reused) {
-      const response = await page.goto(url, { waitUntil: 'load' });
-      if (!response || (!response.ok() && response.status() !== 304)) throw fail(`the page answered HTTP ${response?.status()}`);
-      await page
-        .waitForFunction(() => window.raytracer || document.documentElement.dataset.error, { polling: 100 })
-        .catch((error) => {
-          throw fail(`window.raytracer never appeared (${error.message})`);
-        });
-    }
-    const result = await page
-      .evaluate(
-        async (opening) => {
-          const datasetError = () => document.documentElement.dataset.error;
-          if (!window.raytracer) return { error: `page error: ${datasetError()}` };
-          try {
-            if (opening === null) await window.raytracer.ready;
-            else await window.raytracer.open(opening);
-          } catch (error) {
-            const what = opening === null ? 'raytracer.ready' : `raytracer.open(${opening})`;
-            return { error: `${what} rejected: ${error?.message ?? error}; data-error: ${datasetError() ?? '(none)'}` };
-          }
-          const pixels = await window.raytracer.readPixels();
-          const canvas = /** @type {HTMLCanvasElement | null} */ (document.querySelector('canvas[data-frame]'));
-          const frame = canvas ? Number(canvas.dataset.frame) : NaN;
-          const info = window.raytracer.info();
-          return { pixels, frame, info: JSON.parse(JSON.stringify(info)), datasetError: datasetError() };
-        },
-        reused ? query : null,
-      )
-      .catch((error) => {
-        throw fail(`${error.message}${navigations > 1 ? ` (the page navigated ${navigations} times)` : ''}`);
-      });
-    if (result.error !== undefined) throw fail(result.error);
+    const drawn = await drawView(page, { baseUrl: context.baseUrl, query, fresh: !reused }).catch((error) => {
+      throw fail(`${error.message}${navigations > 1 ? ` (the page navigated ${navigations} times)` : ''}`);
+    });
+    if (drawn.error !== undefined) throw fail(drawn.error);
+    const result = /** @type {Extract<import('../../src/engine/view.js').DrawnView, {pixels: object}>} */ (drawn);
     if (result.datasetError) throw fail(`the page reports an error: ${result.datasetError}`);
     if (!(result.frame >= 1)) throw fail(`no rendered frame: canvas data-frame is ${result.frame}`);
     const { pixels, info } = result;

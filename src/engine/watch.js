@@ -1,18 +1,16 @@
-// Every wait on a page ends, and says why: openPage (page.js) hands out pages whose waits
-// (evaluate, waitForFunction, goto, ...) each have a timeout shorter than the test's, and fail at
-// once when the page or the browser crashes, with what the page was doing (its frame count, the
+// Every wait on a page ends, and says why: the pages the test harness (tests/harness/page.js) and
+// the command line (src/cli/) open have waits (evaluate, waitForFunction, goto, ...) that each
+// have a timeout shorter than the test's or the command's, and fail at once when the page or the browser crashes, with what the page was doing (its frame count, the
 // error it reports, the message it shows, what window.raytracer.info() says) in the message.
 // Without this a hung `raytracer.ready` ran into vitest's 120 s test timeout with no word about
 // the page, and a wait on a crashed page never ended (puppeteer settles it only when the page is
 // closed).
 
-import { PAGE_TIMEOUT_MS } from './config.js';
-
 /**
  * One wait on a page in a test (a load, `ready`, a frame, a read-back): SwiftShader compiles on
  * the CPU, and a test has 120 s (tests/vitest.config.js), so a hang fails the wait first.
  */
-export const WAIT_TIMEOUT_MS = PAGE_TIMEOUT_MS;
+export const WAIT_TIMEOUT_MS = 90_000;
 /**
  * One wait in a script (bench, accuracy, picture): puppeteer's own protocol timeout, 180 s, which
  * bounded them before; the benchmark compiles all its shaders in one call.
@@ -87,7 +85,7 @@ export function watchPage(page, browser, { waitTimeoutMs = WAIT_TIMEOUT_MS } = {
           /** @type {object | null} */
           let info;
           // the hook may not be there yet, or not whole: this page is being asked why it is stuck
-          const hook = /** @type {Partial<import('../globals.js').RaytracerHook> | undefined} */ (window.raytracer);
+          const hook = /** @type {Partial<import('../../tests/globals.js').RaytracerHook> | undefined} */ (window.raytracer);
           try {
             const { fileName, origin, time, playing, width, height } = hook?.info?.() ?? {};
             info = hook?.info ? { fileName, origin, time, playing, width, height } : null;

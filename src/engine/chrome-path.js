@@ -1,7 +1,7 @@
 // Which Chrome or Chromium the tests drive: $CHROME_PATH, else the first usual system path that
-// exists. The one list of those paths, for the harness (tests/harness/setup.js) and for CI:
+// exists. The one list of those paths, for the harness, the command line and CI:
 //
-//   node tests/harness/chrome-path.js     prints the path and exits 0, or prints how to install
+//   node src/engine/chrome-path.js     prints the path and exits 0, or prints how to install
 //                                         one and exits 1
 //
 // .ci/run calls it before `npm ci`, so this file imports nothing but Node's own modules.

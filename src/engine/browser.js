@@ -1,0 +1,166 @@
+// The headless Chromium that draws every picture this project makes: the test harness's
+// (tests/harness/setup.js), the scripts' (bench, accuracy, picture) and the command line's
+// (src/cli/). One list of flags, one launch, one check of who WebGL2 really is: SwiftShader by
+// default (the CPU implementation, identical on every machine that runs the same Chromium
+// build, so its pictures can be goldens), or with `gpu` the machine's own GPU, never a software
+// renderer in its place.
+
+import fs from 'node:fs';
+import os from 'node:os';
+import path from 'node:path';
+import puppeteer from 'puppeteer-core';
+import { findChrome } from './chrome-path.js';
+import { closeBrowser } from './watch.js';
+
+export const CHROME_ARGS = [
+  '--no-sandbox',
+  '--use-angle=swiftshader',
+  '--enable-unsafe-swiftshader',
+  '--disable-background-networking',
+  '--disable-component-update',
+  '--disable-sync',
+  '--no-first-run',
+  '--disable-default-apps',
+  '--disable-extensions',
+  '--mute-audio',
+  '--lang=en-US',
+];
+
+/**
+ * For startHarness({ gpu: true }): CHROME_ARGS without SwiftShader, plus what headless Chromium
+ * needs to use the machine's own GPU, one set per ANGLE back end to try, in order. On Linux that
+ * is Vulkan first (Chrome's recipe for GPUs in headless mode:
+ * https://developer.chrome.com/blog/supercharge-web-ai-testing), then Chromium's default back
+ * end; elsewhere the default (Metal on macOS, Direct3D 11 on Windows).
+ */
+export const GPU_CHROME_ARGS = (
+  process.platform === 'linux'
+    ? [['--use-angle=vulkan', '--enable-features=Vulkan', '--disable-vulkan-surface'], ['--use-angle=default']]
+    : [['--use-angle=default']]
+).map((backend) => [...CHROME_ARGS.filter((arg) => !/swiftshader/i.test(arg)), '--enable-gpu', '--ignore-gpu-blocklist', ...backend]);
+
+const SOFTWARE_RENDERERS = /swiftshader|llvmpipe|lavapipe|softpipe|software|basic render|mesa offscreen/i;
+
+/**
+ * What draws a WebGL renderer string: 'software' (SwiftShader, Mesa llvmpipe/lavapipe/softpipe,
+ * Microsoft Basic Render Driver, any "Software" renderer), 'unknown' (no string, or the masked
+ * "WebKit WebGL" that names no device), else 'hardware'.
+ */
+export function rendererKind(renderer) {
+  if (!renderer || !String(renderer).trim() || /^webkit webgl$/i.test(String(renderer).trim())) return 'unknown';
+  return SOFTWARE_RENDERERS.test(renderer) ? 'software' : 'hardware';
+}
+
+/** A renderer string for reports, without its device id ("... (0x0000C0DE)"). */
+export function rendererLabel(renderer) {
+  return renderer.replace(/\s*\(0x[0-9A-F]+\)/i, '');
+}
+
+/** Opens a blank page and asks WebGL2 who it is. */
+export async function probeWebGL(browser) {
+  const page = await browser.newPage();
+  try {
+    return await page.evaluate(() => {
+      const gl = document.createElement('canvas').getContext('webgl2');
+      if (!gl) return null;
+      const debug = gl.getExtension('WEBGL_debug_renderer_info');
+      return {
+        renderer: debug ? gl.getParameter(debug.UNMASKED_RENDERER_WEBGL) : gl.getParameter(gl.RENDERER),
+        vendor: debug ? gl.getParameter(debug.UNMASKED_VENDOR_WEBGL) : gl.getParameter(gl.VENDOR),
+        version: gl.getParameter(gl.VERSION),
+      };
+    });
+  } finally {
+    await page.close();
+  }
+}
+
+/**
+ * Launches Chromium with each of GPU_CHROME_ARGS in turn and keeps the first whose WebGL2 is a
+ * hardware renderer (rendererKind). Never settles for a software one: if none is hardware, it
+ * throws an error with code 'NO_HARDWARE_GPU' that lists what each attempt got.
+ */
+async function launchOnGpu(launch, executablePath, userDataDir) {
+  const tried = [];
+  for (const [i, args] of GPU_CHROME_ARGS.entries()) {
+    const browser = await launch(args, path.join(userDataDir, `gpu-${i}`));
+    const webgl = await probeWebGL(browser).catch(() => null);
+    const kind = rendererKind(webgl?.renderer);
+    if (webgl && kind === 'hardware') return browser;
+    await browser.close();
+    const flags = args.filter((arg) => !CHROME_ARGS.includes(arg)).join(' ');
+    tried.push(`${flags}: ${webgl ? `WebGL2 renderer "${webgl.renderer}" (${kind})` : 'no WebGL2'}`);
+  }
+  /** @type {Error & {code?: string}} */
+  const error = new Error(
+    `No hardware GPU found: headless Chromium (${executablePath}) has no WebGL2 on a hardware GPU. Tried:\n  ` +
+      `${tried.join('\n  ')}\nA software renderer (SwiftShader, llvmpipe, ...) is never used in its place.`,
+  );
+  error.code = 'NO_HARDWARE_GPU';
+  throw error;
+}
+
+/**
+ * Launches headless Chromium with the harness's flags (CHROME_ARGS unless `args`), in UTC. Used
+ * by startHarness, and by page.js when the run's browser is gone (crashed) and a test file needs
+ * another. Without `userDataDir`, puppeteer makes a temporary profile and removes it on close.
+ * @param {{args?: string[], userDataDir?: string, executablePath?: string}} [options]
+ */
+export function launchBrowser({ args = CHROME_ARGS, userDataDir, executablePath = findChrome() } = {}) {
+  return puppeteer.launch({
+    executablePath,
+    headless: true,
+    userDataDir,
+    args: [...args], // a copy: puppeteer moves --enable-features out of the array it is given
+    // iDate uses local time; UTC makes the frozen date the same everywhere.
+    env: { ...process.env, TZ: 'UTC' },
+    defaultViewport: null,
+  });
+}
+
+/**
+ * Launches Chromium, checked to be SwiftShader WebGL2 (or with `gpu`, a hardware GPU: for the
+ * benchmark's --gpu and the command line's, never for goldens), in a profile of its own that
+ * close() removes. `environment` says what draws: the Chromium version and the WebGL2
+ * renderer, as every output of the command line and the goldens' ENVIRONMENT.json name it.
+ * @param {{gpu?: boolean, executablePath?: string}} [options]
+ * @returns {Promise<{browser: import('puppeteer-core').Browser, environment: {chromium: string, renderer: string, webglVersion: string, gpu: boolean}, close: () => Promise<void>}>}
+ */
+export async function startBrowser({ gpu = false, executablePath = findChrome() } = {}) {
+  const userDataDir = fs.mkdtempSync(path.join(os.tmpdir(), 'raytracer-chromium-'));
+  const removeProfile = () => fs.rmSync(userDataDir, { recursive: true, force: true });
+  let browser;
+  try {
+    const launch = (args, dataDir) => launchBrowser({ args, userDataDir: dataDir, executablePath });
+    browser = gpu ? await launchOnGpu(launch, executablePath, userDataDir) : await launch(CHROME_ARGS, userDataDir);
+    const chromium = await browser.version();
+    const webgl = await probeWebGL(browser);
+    if (!webgl) {
+      throw new Error(
+        `${chromium} (${executablePath}) has no WebGL2 with flags ${CHROME_ARGS.join(' ')}. ` +
+          'Every picture here needs SwiftShader WebGL2; without it a render would be blank.',
+      );
+    }
+    if (gpu && rendererKind(webgl.renderer) !== 'hardware') throw new Error(`WebGL2 renderer is "${webgl.renderer}", not a hardware GPU.`);
+    if (!gpu && !/swiftshader/i.test(webgl.renderer)) {
+      throw new Error(
+        `WebGL2 renderer is "${webgl.renderer}", not SwiftShader. The goldens are SwiftShader renders; ` +
+          'a GPU renders different pixels. Check that --use-angle=swiftshader is honoured by this Chromium.',
+      );
+    }
+    const environment = { chromium, renderer: webgl.renderer, webglVersion: webgl.version, gpu };
+    const opened = browser;
+    const close = async () => {
+      try {
+        await closeBrowser(opened); // closed, or killed if it does not answer
+      } finally {
+        removeProfile();
+      }
+    };
+    return { browser, environment, close };
+  } catch (error) {
+    if (browser) await closeBrowser(browser).catch(() => {});
+    removeProfile();
+    throw error;
+  }
+}

@@ -1,0 +1,203 @@
+// The page as the command line serves it: the built page (dist/, made by `vite build`; in a
+// packed tarball it is made by `prepack`) from a plain Node HTTP server on a loopback port, with
+// a user's files from anywhere on disk mounted beside it, so that the page's own loading code
+// (?shader=, ?iChannel0=) reads them from its own origin as it reads examples/*.glsl.
+//
+//   /__files/<id>/<name>   a mounted file (mount(): its own id, its own name, so that the page
+//                          names the shader as the file is named), read from disk at each
+//                          request: a saved file is served as it is now
+//   /__events              Server-Sent Events: `{"url": "/__files/…"}` when a watched file
+//                          changes (watch()); the page reloads that shader in place (main.js)
+//   anything else          the built page's files; an unknown path answers 404
+//
+// index.html gets one <meta name="raytracer-file-events"> so the page knows to listen. Nothing
+// here writes to disk.
+
+import fs from 'node:fs';
+import http from 'node:http';
+import path from 'node:path';
+import { fileURLToPath } from 'node:url';
+
+export const PACKAGE_ROOT = fileURLToPath(new URL('../..', import.meta.url));
+export const BUILT_PAGE_DIR = path.join(PACKAGE_ROOT, 'dist');
+export const FILES_ROUTE = '/__files/';
+export const EVENTS_ROUTE = '/__events';
+
+const TYPES = {
+  '.html': 'text/html; charset=utf-8',
+  '.js': 'text/javascript; charset=utf-8',
+  '.css': 'text/css; charset=utf-8',
+  '.json': 'application/json; charset=utf-8',
+  '.glsl': 'text/plain; charset=utf-8',
+  '.frag': 'text/plain; charset=utf-8',
+  '.txt': 'text/plain; charset=utf-8',
+  '.png': 'image/png',
+  '.jpg': 'image/jpeg',
+  '.jpeg': 'image/jpeg',
+  '.webp': 'image/webp',
+  '.gif': 'image/gif',
+  '.svg': 'image/svg+xml',
+  '.ico': 'image/x-icon',
+  '.wasm': 'application/wasm',
+};
+
+const typeOf = (file) => TYPES[path.extname(file).toLowerCase()] ?? 'application/octet-stream';
+
+/** The folders the built page is made from, in a clone: a build older than any of them is stale. */
+const PAGE_SOURCES = ['src/page', 'src/shadertoy', 'src/shared', 'shaders', 'public', 'vite.config.js'];
+
+/** The newest modification time under `file` (a file or a folder), in ms. */
+function newestMtime(file) {
+  let stat;
+  try {
+    stat = fs.statSync(file);
+  } catch {
+    return 0;
+  }
+  if (!stat.isDirectory()) return stat.mtimeMs;
+  let newest = stat.mtimeMs;
+  for (const entry of fs.readdirSync(file)) newest = Math.max(newest, newestMtime(path.join(file, entry)));
+  return newest;
+}
+
+/**
+ * The folder of the built page, built now when this is a clone whose dist/ is missing or older
+ * than the page's sources (with Vite, a dev dependency a clone has). `say` tells the person why
+ * the first run takes longer.
+ * @param {{say?: (line: string) => void}} [options]
+ * @returns {Promise<string>}
+ */
+export async function builtPage({ say = () => {} } = {}) {
+  const index = path.join(BUILT_PAGE_DIR, 'index.html');
+  const built = fs.existsSync(index) ? fs.statSync(index).mtimeMs : 0;
+  const inClone = fs.existsSync(path.join(PACKAGE_ROOT, 'vite.config.js'));
+  const sources = inClone ? Math.max(...PAGE_SOURCES.map((s) => newestMtime(path.join(PACKAGE_ROOT, s)))) : 0;
+  if (built && built >= sources) return BUILT_PAGE_DIR;
+  let vite;
+  try {
+    vite = await import('vite');
+  } catch {
+    throw new Error(
+      built
+        ? `The built page in ${BUILT_PAGE_DIR} is older than the page's sources, and Vite is not installed to build it again: run npm install, then npm run build.`
+        : `This package has no built page (${index} is missing): in a clone, run npm install, then npm run build.`,
+    );
+  }
+  say(built ? 'the page changed since it was built: building it again (vite build)…' : 'building the page (vite build), once…');
+  await vite.build({ configFile: path.join(PACKAGE_ROOT, 'vite.config.js'), logLevel: 'warn' });
+  return BUILT_PAGE_DIR;
+}
+
+/**
+ * Starts the server on a free loopback port (or `port`).
+ * @param {{root: string, port?: number}} options root: the built page's folder
+ */
+export async function startPageServer({ root, port = 0 }) {
+  /** @type {Map<string, string>} url path → file */
+  const mounts = new Map();
+  /** @type {Set<import('node:http').ServerResponse>} */
+  const listeners = new Set();
+  /** @type {fs.FSWatcher[]} */
+  const watchers = [];
+  let nextId = 0;
+
+  const index = fs
+    .readFileSync(path.join(root, 'index.html'), 'utf8')
+    .replace('<head>', `<head>\n    <meta name="raytracer-file-events" content="${EVENTS_ROUTE}" />`);
+
+  const server = http.createServer((req, res) => {
+    const url = new URL(req.url ?? '/', 'http://page');
+    if (req.method !== 'GET' && req.method !== 'HEAD') {
+      res.writeHead(405).end();
+      return;
+    }
+    if (url.pathname === EVENTS_ROUTE) {
+      res.writeHead(200, { 'content-type': 'text/event-stream', 'cache-control': 'no-store', connection: 'keep-alive' });
+      res.write(': listening\n\n');
+      listeners.add(res);
+      req.on('close', () => listeners.delete(res));
+      return;
+    }
+    let pathname;
+    try {
+      pathname = decodeURIComponent(url.pathname);
+    } catch {
+      res.writeHead(400).end();
+      return;
+    }
+    const mounted = mounts.get(pathname);
+    if (mounted) {
+      fs.readFile(mounted, (error, data) => {
+        if (error) {
+          res.writeHead(404, { 'content-type': 'text/plain' }).end(`${mounted}: ${error.message}`);
+          return;
+        }
+        res.writeHead(200, { 'content-type': typeOf(mounted), 'cache-control': 'no-store' });
+        res.end(req.method === 'HEAD' ? undefined : data);
+      });
+      return;
+    }
+    if (pathname === '/' || pathname === '/index.html') {
+      res.writeHead(200, { 'content-type': TYPES['.html'], 'cache-control': 'no-cache' });
+      res.end(req.method === 'HEAD' ? undefined : index);
+      return;
+    }
+    const file = path.join(root, pathname);
+    if (!file.startsWith(root + path.sep) || !fs.existsSync(file) || !fs.statSync(file).isFile()) {
+      res.writeHead(404, { 'content-type': 'text/plain' }).end(`${pathname}: not found`);
+      return;
+    }
+    // the build's assets have content hashes in their names; the rest is small
+    const immutable = pathname.startsWith('/assets/');
+    res.writeHead(200, { 'content-type': typeOf(file), 'cache-control': immutable ? 'max-age=31536000, immutable' : 'no-cache' });
+    if (req.method === 'HEAD') res.end();
+    else fs.createReadStream(file).pipe(res);
+  });
+  await new Promise((resolve, reject) => {
+    server.once('error', reject);
+    server.listen(port, '127.0.0.1', () => resolve(undefined));
+  });
+  const { port: chosen } = /** @type {import('node:net').AddressInfo} */ (server.address());
+  const baseUrl = `http://127.0.0.1:${chosen}`;
+
+  return {
+    baseUrl,
+    /**
+     * Serves `file` (any path on disk) at a URL path of its own, named as the file is.
+     * @param {string} file
+     * @returns {string} the URL path
+     */
+    mount(file) {
+      const urlPath = `${FILES_ROUTE}${nextId++}/${path.basename(file)}`;
+      mounts.set(urlPath, path.resolve(file));
+      return urlPath;
+    },
+    /**
+     * Tells every page listening that `urlPath`'s file changed whenever it is saved. Editors
+     * save by writing in place or by renaming a new file over the old one: the folder is
+     * watched, and events for the file's name within 50 ms are one change.
+     * @param {string} urlPath a path mount() returned
+     */
+    watch(urlPath) {
+      const file = mounts.get(urlPath);
+      if (!file) throw new Error(`watch: ${urlPath} is not mounted`);
+      let pending = null;
+      const watcher = fs.watch(path.dirname(file), (_, name) => {
+        if (name !== null && name !== path.basename(file)) return;
+        clearTimeout(pending);
+        pending = setTimeout(() => {
+          for (const res of listeners) res.write(`data: ${JSON.stringify({ url: urlPath })}\n\n`);
+        }, 50);
+      });
+      watchers.push(watcher);
+    },
+    /** How many pages listen for changes now. */
+    listening: () => listeners.size,
+    async close() {
+      for (const watcher of watchers) watcher.close();
+      for (const res of listeners) res.end();
+      server.closeAllConnections();
+      await new Promise((resolve) => server.close(() => resolve(undefined)));
+    },
+  };
+}

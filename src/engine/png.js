@@ -1,0 +1,25 @@
+// PNG files in plain Node (pngjs): the one reader and writer of the harness's goldens and the
+// command line's outputs. An image is { width, height, data } with RGBA8 rows top to bottom.
+
+import fs from 'node:fs';
+import path from 'node:path';
+import { PNG } from 'pngjs';
+
+/** @param {string} file @returns {{width: number, height: number, data: Buffer}} */
+export function readPng(file) {
+  const png = PNG.sync.read(fs.readFileSync(file));
+  return { width: png.width, height: png.height, data: png.data };
+}
+
+/** The PNG file's bytes of an image. @param {{width: number, height: number, data: Uint8Array}} image */
+export function pngBytes({ width, height, data }) {
+  const png = new PNG({ width, height });
+  Buffer.from(data.buffer, data.byteOffset, data.byteLength).copy(png.data);
+  return PNG.sync.write(png, { colorType: 6 });
+}
+
+/** Writes an image as a PNG file, making its folder. @param {string} file @param {{width: number, height: number, data: Uint8Array}} image */
+export function writePng(file, image) {
+  fs.mkdirSync(path.dirname(file), { recursive: true });
+  fs.writeFileSync(file, pngBytes(image));
+}
