@@ -103,10 +103,12 @@ export interface RaytracerHook {
   /** The editor's text (what it holds, compiled or not). */
   editorSource(): string;
   /** Records the shader frame by frame (src/page/io/recorder.js); `data` is the file as base64. */
+  /** The last frame's Image pass in RGBA32F: `data` is base64 of the floats' bytes, rows top to bottom. */
+  captureFloat(): Promise<Base64Frame>;
   record(request?: import('../src/page/io/recorder.js').RecordRequest): Promise<RecordingResult>;
   /** Stops the recording under way: its record() rejects, nothing is made. */
   cancelRecording(): void;
-  recording(): { busy: boolean };
+  recording(): { busy: boolean; done: number; total: number };
   /** Inspect on, pixel (x, y) pinned (y from the bottom) and read, path and reference included (src/page/inspect/inspector.js). */
   inspect(x: number, y: number): Promise<Readout>;
   /** The inspector as it is now. */

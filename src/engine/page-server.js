@@ -5,7 +5,8 @@
 //
 //   /__files/<id>/<name>   a mounted file (mount(): its own id, its own name, so that the page
 //                          names the shader as the file is named), read from disk at each
-//                          request: a saved file is served as it is now
+//                          request: a saved file is served as it is now; or a text the command
+//                          made (mountText())
 //   /__events              Server-Sent Events: `{"url": "/__files/…"}` when a watched file
 //                          changes (watch()); the page reloads that shader in place (main.js)
 //   anything else          the built page's files; an unknown path answers 404
@@ -95,6 +96,8 @@ export async function builtPage({ say = () => {} } = {}) {
 export async function startPageServer({ root, port = 0 }) {
   /** @type {Map<string, string>} url path → file */
   const mounts = new Map();
+  /** @type {Map<string, string>} url path → text */
+  const texts = new Map();
   /** @type {Set<import('node:http').ServerResponse>} */
   const listeners = new Set();
   /** @type {fs.FSWatcher[]} */
@@ -103,7 +106,7 @@ export async function startPageServer({ root, port = 0 }) {
 
   const index = fs
     .readFileSync(path.join(root, 'index.html'), 'utf8')
-    .replace('<head>', `<head>\n    <meta name="raytracer-file-events" content="${EVENTS_ROUTE}" />`);
+    .replace(/<meta charset[^>]*>|<head>/i, (tag) => `${tag}\n    <meta name="raytracer-file-events" content="${EVENTS_ROUTE}" />`);
 
   const server = http.createServer((req, res) => {
     const url = new URL(req.url ?? '/', 'http://page');
@@ -123,6 +126,12 @@ export async function startPageServer({ root, port = 0 }) {
       pathname = decodeURIComponent(url.pathname);
     } catch {
       res.writeHead(400).end();
+      return;
+    }
+    const text = texts.get(pathname);
+    if (text !== undefined) {
+      res.writeHead(200, { 'content-type': typeOf(pathname), 'cache-control': 'no-store' });
+      res.end(req.method === 'HEAD' ? undefined : text);
       return;
     }
     const mounted = mounts.get(pathname);
@@ -170,6 +179,17 @@ export async function startPageServer({ root, port = 0 }) {
     mount(file) {
       const urlPath = `${FILES_ROUTE}${nextId++}/${path.basename(file)}`;
       mounts.set(urlPath, path.resolve(file));
+      return urlPath;
+    },
+    /**
+     * Serves `text` at a URL path of its own, ending in `name`.
+     * @param {string} text
+     * @param {string} name
+     * @returns {string} the URL path
+     */
+    mountText(text, name) {
+      const urlPath = `${FILES_ROUTE}${nextId++}/${name}`;
+      texts.set(urlPath, text);
       return urlPath;
     },
     /**

@@ -31,6 +31,10 @@
 //   capture({width, height}?)  Promise<{width, height, data}>: the last frame drawn again off
 //                         screen at that size (default: the canvas's), as the Screenshot button
 //                         saves it.
+//   captureFloat()        Promise<{width, height, data}>: the last frame's Image pass drawn again
+//                         in RGBA32F, its colours as the shader wrote them (unclamped, NaN and
+//                         infinity kept), rows top to bottom; `data` is base64 of the floats'
+//                         bytes (little-endian), as the inspector reads a pixel.
 //   setChannel(i, url|null)    Promise: an image into iChannel i (null: black again).
 //   loadShader(url)       Promise<{ok, error?}>: fetches and runs a shader as ?shader= does
 //                         (GLSL, or Shadertoy's JSON export).
@@ -42,7 +46,8 @@
 //                         of PNGs); `data` is the file as base64. Rejects with RecordingCancelled
 //                         after cancelRecording().
 //   cancelRecording()     stops the recording under way (this one or the Record button's).
-//   recording()           {busy}: whether a recording is under way.
+//   recording()           {busy, done, total}: whether a recording is under way, and how many
+//                         frames of the last record() are done, of how many.
 //   inspect(x, y)         Promise<Readout>: Inspect on, pixel (x, y) pinned (y from the bottom:
 //                         fragCoord - 0.5) and read: its float colour, the canvas's byte, each
 //                         buffer, and for the raytracer its ray path and the float64 reference's
@@ -98,6 +103,8 @@ export function installAutomation(app, ready, ui, { open }) {
 
   /** One open() at a time; the one before is waited for. @type {Promise<unknown>} */
   let opening = Promise.resolve();
+  /** The last record()'s progress: frames done of total. */
+  let recorded = { done: 0, total: 0 };
 
   hooked.raytracer = {
     ready,
@@ -190,6 +197,15 @@ export function installAutomation(app, ready, ui, { open }) {
       return { width, height, data: toBase64(data) };
     },
 
+    async captureFloat() {
+      await settled();
+      const inputs = app.frames.last;
+      if (!inputs) throw new Error(app.gpu.contextLost ? 'the GPU context is lost' : 'no shader is running');
+      const { width, height } = inputs;
+      const floats = await app.gpu.ask('captureFloat', { inputs, width, height });
+      return { width, height, data: toBase64(new Uint8Array(floats.buffer, floats.byteOffset, floats.byteLength)) };
+    },
+
     async setChannel(index, url) {
       await app.setChannel(index, url);
     },
@@ -235,11 +251,12 @@ export function installAutomation(app, ready, ui, { open }) {
 
     async record(request = {}) {
       await settled();
-      const { bytes, ...result } = await ui.recording.recorder.record(request);
+      recorded = { done: 0, total: 0 };
+      const { bytes, ...result } = await ui.recording.recorder.record(request, (done, total) => (recorded = { done, total }));
       return { ...result, data: toBase64(bytes) };
     },
     cancelRecording: () => ui.recording.recorder.cancel(),
-    recording: () => ({ busy: ui.recording.recorder.busy }),
+    recording: () => ({ busy: ui.recording.recorder.busy, ...recorded }),
 
     info() {
       return {
@@ -286,6 +303,7 @@ export function installFailedAutomation(error) {
     loseContext() {},
     restoreContext() {},
     capture: fail,
+    captureFloat: fail,
     setChannel: fail,
     loadShader: fail,
     shareUrl: () => location.href,
@@ -297,7 +315,7 @@ export function installFailedAutomation(error) {
     comparison: () => null,
     record: fail,
     cancelRecording() {},
-    recording: () => ({ busy: false }),
+    recording: () => ({ busy: false, done: 0, total: 0 }),
     play() {},
     pause() {},
     togglePlay() {},

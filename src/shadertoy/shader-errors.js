@@ -32,7 +32,7 @@ const LOG_LINE = /^\s*(ERROR|WARNING)\s*:\s*\d+\s*:\s*(\d+)\s*:\s*(.*)$/i;
 export function parseShaderLog(log, offset, userLineCount) {
   const messages = [];
   for (const raw of log.split('\n')) {
-    const text = raw.trim();
+    const text = raw.replace(/\0/g, '').trim(); // a log may end in a NUL
     if (!text || /^ERROR:\s*\d+\s+compilation errors?/i.test(text)) continue;
     const m = text.match(LOG_LINE);
     if (!m) {

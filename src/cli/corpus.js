@@ -1,0 +1,190 @@
+// `shaderproof test DIR`: golden-image regression over a folder of any Shadertoy shaders. Each
+// .glsl or .json file under DIR is a case (manifest.js reads DIR/shaderproof.json for a case's
+// view, tolerance and checks); its reference is DIR/__references__/<case>.png, written by
+// --update and by nothing else. A case that fails leaves its actual, reference and diff PNGs in
+// the output folder; the run prints a table, writes junit.xml there, and exits 1 if any case
+// failed. A shader that does not compile, or never finishes (the watchdog), fails its own case
+// and the run goes on (session.js starts another browser after a hang).
+
+import fs from 'node:fs';
+import path from 'node:path';
+import pixelmatch from 'pixelmatch';
+import { readPng, writePng } from '../engine/png.js';
+import { io, watchdog } from './io.js';
+import { findCases, readManifest, REFERENCE_DIR } from './manifest.js';
+import { junitXml } from './junit.js';
+import { renderShader } from './render.js';
+import { CliError, startSession } from './session.js';
+import { UsageError } from './view-options.js';
+
+/** "i/n" → {index (0-based), count}. @param {string | undefined} text */
+export function readShard(text) {
+  if (text === undefined) return { index: 0, count: 1 };
+  const match = /^(\d+)\/(\d+)$/.exec(text);
+  const [i, n] = match ? [Number(match[1]), Number(match[2])] : [0, 0];
+  if (!(n >= 1 && i >= 1 && i <= n)) throw new UsageError(`--shard ${text}: expected i/n with 1 <= i <= n, such as --shard 2/4`);
+  return { index: i - 1, count: n };
+}
+
+/** pixelmatch's count of differing pixels, and the diff image. */
+function compare(actual, expected, threshold) {
+  const { width, height } = actual;
+  const diff = Buffer.alloc(width * height * 4);
+  const diffPixels = pixelmatch(actual.data, expected.data, diff, width, height, { threshold, includeAA: true });
+  return { diffPixels, diff: { width, height, data: diff } };
+}
+
+/** The image at half the size, each pixel the mean of a 2×2 block (sizes rounded down). */
+function halve({ width, height, data }) {
+  const w = Math.floor(width / 2);
+  const h = Math.floor(height / 2);
+  const out = Buffer.alloc(w * h * 4);
+  for (let y = 0; y < h; y++)
+    for (let x = 0; x < w; x++)
+      for (let c = 0; c < 4; c++) {
+        const at = (dx, dy) => data[((2 * y + dy) * width + 2 * x + dx) * 4 + c];
+        out[(y * w + x) * 4 + c] = Math.round((at(0, 0) + at(1, 0) + at(0, 1) + at(1, 1)) / 4);
+      }
+  return { width: w, height: h, data: out };
+}
+
+/**
+ * Runs one case: renders it, compares with its reference (or writes it, with --update), runs its
+ * checks. Returns its outcome; throws only for a session that cannot go on.
+ * @param {import('./session.js').Session} session
+ * @param {import('./manifest.js').TestCase} testCase
+ * @param {{update: boolean, out: string}} run
+ */
+async function runCase(session, testCase, { update, out }) {
+  const started = Date.now();
+  const failures = [];
+  const notes = [];
+  const outFile = (suffix) => path.join(out, `${testCase.name}-${suffix}.png`);
+  for (const suffix of ['actual', 'reference', 'diff', 'half']) fs.rmSync(outFile(suffix), { force: true });
+  let image;
+  try {
+    image = await renderShader(session, testCase.file, testCase.view);
+  } catch (error) {
+    if (!(error instanceof CliError || error instanceof UsageError)) throw error;
+    return { name: testCase.name, ok: false, failures: [error.message], notes, ms: Date.now() - started, diffPixels: null };
+  }
+  let diffPixels = null;
+  if (update) {
+    writePng(testCase.reference, image);
+    notes.push('reference written');
+  } else if (!fs.existsSync(testCase.reference)) {
+    failures.push(`no reference at ${testCase.reference}: run with --update to write it`);
+    writePng(outFile('actual'), image);
+  } else {
+    const reference = readPng(testCase.reference);
+    if (reference.width !== image.width || reference.height !== image.height) {
+      failures.push(`the render is ${image.width}x${image.height}, the reference ${reference.width}x${reference.height}`);
+      writePng(outFile('actual'), image);
+    } else {
+      const result = compare(image, reference, testCase.tolerance.threshold);
+      diffPixels = result.diffPixels;
+      if (diffPixels > testCase.tolerance.maxDiffPixels) {
+        failures.push(`${diffPixels} pixels differ from the reference (at most ${testCase.tolerance.maxDiffPixels} may)`);
+        writePng(outFile('actual'), image);
+        writePng(outFile('reference'), reference);
+        writePng(outFile('diff'), result.diff);
+      }
+    }
+  }
+  const { checks } = testCase;
+  try {
+    if (checks.deterministic) {
+      const again = await renderShader(session, testCase.file, testCase.view);
+      if (Buffer.compare(Buffer.from(again.data), Buffer.from(image.data)) !== 0)
+        failures.push('deterministic: a second render differs from the first');
+    }
+    if (checks.halfSize) {
+      const { width, height } = testCase.view.size;
+      const half = await renderShader(session, testCase.file, {
+        ...testCase.view,
+        size: { width: Math.floor(width / 2), height: Math.floor(height / 2) },
+      });
+      const { diffPixels: off } = compare(half, halve(image), checks.halfSize.threshold);
+      const allowed = Math.floor(half.width * half.height * checks.halfSize.maxDiffFraction);
+      if (off > allowed) {
+        failures.push(`halfSize: ${off} pixels of the half-size render differ from the full render halved (at most ${allowed} may)`);
+        writePng(outFile('half'), half);
+      }
+    }
+    if (checks.noNaN) {
+      await renderShader(session, testCase.file, testCase.view);
+      const { data } = await session.drawFloat();
+      let bad = 0;
+      for (let i = 0; i < data.length; i += 4)
+        if (!(Number.isFinite(data[i]) && Number.isFinite(data[i + 1]) && Number.isFinite(data[i + 2]))) bad++;
+      if (bad) failures.push(`noNaN: ${bad} pixels have a NaN or infinite colour`);
+    }
+    if (checks.maxFrameMs !== undefined) {
+      const page = /** @type {import('puppeteer-core').Page} */ (session.page());
+      await renderShader(session, testCase.file, testCase.view);
+      const { median } = await page.evaluate(() => window.raytracer.renderFrames(5));
+      notes.push(`frame ${median.toFixed(1)} ms`);
+      if (median > checks.maxFrameMs)
+        failures.push(`maxFrameMs: a frame takes ${median.toFixed(1)} ms (median of 5), more than ${checks.maxFrameMs}`);
+    }
+  } catch (error) {
+    if (!(error instanceof CliError || error instanceof UsageError)) throw error;
+    failures.push(error.message);
+  }
+  return { name: testCase.name, ok: failures.length === 0, failures, notes, ms: Date.now() - started, diffPixels };
+}
+
+/** @param {{values: Record<string, any>, positionals: string[]}} args */
+export async function runTest({ values, positionals }) {
+  if (positionals.length !== 1) throw new UsageError(`test: expected one DIR, got ${positionals.length ? positionals.join(' ') : 'none'}`);
+  const dir = path.resolve(positionals[0]);
+  if (!fs.existsSync(dir) || !fs.statSync(dir).isDirectory()) throw new CliError(`${positionals[0]}: not a folder`);
+  const shard = readShard(values.shard);
+  const out = path.resolve(values.out ?? 'shaderproof-output');
+  const update = Boolean(values.update);
+  const manifest = readManifest(dir);
+  const all = findCases(dir, manifest);
+  if (!all.length) throw new CliError(`${positionals[0]}: no .glsl or .json shaders in it`);
+  const cases = all.filter((_, i) => i % shard.count === shard.index);
+  fs.mkdirSync(out, { recursive: true });
+  const started = Date.now();
+  const session = await startSession({ gpu: values.gpu, ...watchdog(values.watchdog), say: io.err });
+  const results = [];
+  let environment;
+  try {
+    environment = await session.environment();
+    io.err(
+      `${cases.length} of ${all.length} cases${shard.count > 1 ? ` (shard ${shard.index + 1}/${shard.count})` : ''}, drawn by ${environment.renderer}`,
+    );
+    for (const testCase of cases) {
+      if (testCase.skip !== null) {
+        results.push({
+          name: testCase.name,
+          ok: true,
+          skipped: true,
+          failures: [],
+          notes: [`skipped: ${testCase.skip}`],
+          ms: 0,
+          diffPixels: null,
+        });
+        io.out(`skip  ${testCase.name.padEnd(28)} ${'-'.padStart(6)}     ${testCase.skip}`);
+        continue;
+      }
+      const result = await runCase(session, testCase, { update, out });
+      results.push(result);
+      const said = [...result.failures, ...result.notes].join('; ');
+      io.out(`${result.ok ? 'pass' : 'FAIL'}  ${testCase.name.padEnd(28)} ${String(result.ms).padStart(6)} ms  ${said}`);
+    }
+  } finally {
+    await session.close();
+  }
+  const failed = results.filter((r) => !r.ok);
+  const seconds = (Date.now() - started) / 1000;
+  fs.writeFileSync(path.join(out, 'junit.xml'), junitXml(results, { seconds, renderer: environment?.renderer ?? 'unknown' }));
+  io.out(
+    `${results.length - failed.length} passed, ${failed.length} failed, in ${seconds.toFixed(1)} s` +
+      (failed.length ? `; images and junit.xml in ${path.relative(process.cwd(), out) || '.'}` : ''),
+  );
+  if (update) io.out(`references in ${path.relative(process.cwd(), path.join(dir, REFERENCE_DIR)) || '.'}`);
+  return failed.length ? 1 : 0;
+}

@@ -1,0 +1,196 @@
+// shaderproof: the page's engine from the command line (bin/shaderproof.js). Each verb parses its
+// flags (node:util parseArgs, strict: an unknown flag is a usage error), starts a session
+// (session.js: the built page, a loopback server, headless Chromium on SwiftShader) and says in
+// one line what it made and which renderer drew it. Exit codes: 0 done, 1 a case or a shader
+// failed, 2 a bad flag or value (with the verb's usage).
+
+import fs from 'node:fs';
+import path from 'node:path';
+import { parseArgs } from 'node:util';
+import { runOpen } from './open.js';
+import { runRecord } from './record.js';
+import { outputFormat, renderShader, writeFloatImage, writeImage } from './render.js';
+import { CliError, startSession } from './session.js';
+import { runTest } from './corpus.js';
+import { UsageError, VIEW_FLAGS, readViewOptions } from './view-options.js';
+import { io, oneShader, watchdog } from './io.js';
+
+export const NAME = 'shaderproof';
+
+const COMMON_FLAGS = /** @type {const} */ ({
+  help: { type: 'boolean', short: 'h' },
+  gpu: { type: 'boolean' },
+  watchdog: { type: 'string' },
+});
+
+const VIEW_HELP = `  --size WxH            canvas size in pixels (default 640x360)
+  --time T              iTime in seconds, paused (default 0)
+  --frame N             draw frames 0..N (iTime = i/60, iFrame = i) and keep frame N
+  --mouse x,y[,z,w]     iMouse in pixels, Shadertoy's signs
+  --set NAME=VALUE      a control of the shader (repeatable), as the page's panel has it
+  --channel0..3 IMAGE   an image file for iChannel0..3`;
+
+const COMMON_HELP = `  --gpu                 draw on this machine's GPU instead of SwiftShader
+  --watchdog S          a frame unfinished after S seconds fails (default: 5 s a band of
+                        a frame, 30 s for the first frame, which SwiftShader compiles)
+  -h, --help            this help`;
+
+export const VERBS = {
+  render: {
+    summary: 'draw one still of a shader into a PNG',
+    usage: `${NAME} render SHADER -o OUT.png [options]
+
+Draws SHADER (a .glsl Image tab, or a Shadertoy JSON export) as the page does, and writes it.
+
+${VIEW_HELP}
+  -o, --output FILE     OUT.png, or OUT.pfm: the colours in float as the shader wrote them
+                        (Portable FloatMap, unclamped) (required)
+${COMMON_HELP}`,
+    flags: { ...COMMON_FLAGS, ...VIEW_FLAGS, output: { type: 'string', short: 'o' } },
+    run: runRender,
+  },
+  record: {
+    summary: 'record frames of a shader into a WebM video or a zip of PNGs',
+    usage: `${NAME} record SHADER -o OUT.webm|OUT.zip [options]
+
+Records SHADER frame by frame as the page's Record button does: frame i has iTime = i/fps and
+iFrame = i, whatever a frame costs to draw.
+
+  --frames N            how many frames (default 60)
+  --fps F               frames a second (default 30)
+  --size WxH            the frames' size in pixels (default 640x360)
+  --mouse x,y[,z,w]     iMouse in pixels
+  --set NAME=VALUE      a control of the shader (repeatable)
+  --channel0..3 IMAGE   an image file for iChannel0..3
+  -o, --output FILE     OUT.webm (VP9 or VP8) or OUT.zip (frame-0000.png, ...) (required)
+${COMMON_HELP}`,
+    flags: {
+      ...COMMON_FLAGS,
+      ...VIEW_FLAGS,
+      frames: { type: 'string' },
+      fps: { type: 'string' },
+      output: { type: 'string', short: 'o' },
+    },
+    run: runRecord,
+  },
+  open: {
+    summary: 'serve the page on a shader file, reloading it when the file is saved',
+    usage: `${NAME} open SHADER [--port P]
+
+Serves the page on SHADER (from anywhere on disk) and prints its URL; opens no browser. Saving
+the file recompiles it on every page that has it open. Ctrl-C stops.
+
+  --port P              the port to listen on (default: a free one)
+  -h, --help            this help`,
+    flags: { help: { type: 'boolean', short: 'h' }, port: { type: 'string' } },
+    run: runOpen,
+  },
+  test: {
+    summary: 'render every shader of a folder and compare with its reference',
+    usage: `${NAME} test DIR [--update] [--shard i/n] [options]
+
+Every .glsl and .json file under DIR is a case. DIR/shaderproof.json (optional) sets a case's
+view, tolerance and checks:
+
+  { "defaults": { "size": "320x180" },
+    "cases": { "waves.glsl": { "time": 2, "set": { "SPEED": 2 },
+                               "tolerance": { "threshold": 0.1, "maxDiffPixels": 0 },
+                               "checks": { "deterministic": true, "halfSize": true,
+                                           "maxFrameMs": 500 } } } }
+
+References are DIR/__references__/<case>.png, written only by --update. A failing case leaves
+actual, reference and diff PNGs in the output folder; the run writes a JUnit XML report there
+and exits 1 when a case fails.
+
+  --update              write the references (and pass)
+  --shard i/n           run the i-th of n shares of the cases (1-based)
+  --out DIR             output folder (default ./shaderproof-output)
+${COMMON_HELP}`,
+    flags: {
+      ...COMMON_FLAGS,
+      update: { type: 'boolean' },
+      shard: { type: 'string' },
+      out: { type: 'string' },
+    },
+    run: runTest,
+  },
+};
+
+const MAIN_USAGE = `${NAME}: run, render, record and test Shadertoy shaders in headless Chromium
+(SwiftShader: no GPU needed)
+
+Usage: ${NAME} VERB [options]   (${NAME} VERB --help for each)
+
+${Object.entries(VERBS)
+  .map(([verb, { summary }]) => `  ${verb.padEnd(8)} ${summary}`)
+  .join('\n')}
+
+Chromium is found at $CHROME_PATH, else the usual system paths.`;
+
+/** @param {{values: Record<string, any>, positionals: string[]}} args */
+async function runRender({ values, positionals }) {
+  const file = oneShader(positionals, 'render');
+  if (!values.output) throw new UsageError('render: -o OUT.png is required');
+  const format = outputFormat(values.output);
+  const view = readViewOptions(values, { width: 640, height: 360 });
+  if (format === 'pfm' && view.frame !== null) throw new UsageError('-o .pfm: the float colours are of a still at --time, not of --frame');
+  const started = Date.now();
+  const session = await startSession({ gpu: values.gpu, ...watchdog(values.watchdog), say: io.err });
+  try {
+    const image = await renderShader(session, file, view);
+    if (format === 'pfm') writeFloatImage(values.output, await session.drawFloat());
+    else writeImage(values.output, image);
+    const { renderer } = await session.environment();
+    io.out(`${values.output}: ${image.width}x${image.height}, ${renderer}, ${((Date.now() - started) / 1000).toFixed(1)} s`);
+  } finally {
+    await session.close();
+  }
+  return 0;
+}
+
+/**
+ * Runs the command line with `argv` (without node and the script), and returns the exit code.
+ * @param {string[]} argv
+ */
+export async function main(argv) {
+  const [verb, ...rest] = argv;
+  if (!verb || verb === '--help' || verb === '-h' || verb === 'help') {
+    io.out(MAIN_USAGE);
+    return verb ? 0 : 2;
+  }
+  if (verb === '--version') {
+    const pkg = JSON.parse(fs.readFileSync(path.join(import.meta.dirname, '../../package.json'), 'utf8'));
+    io.out(pkg.version);
+    return 0;
+  }
+  const spec = VERBS[/** @type {keyof typeof VERBS} */ (verb)];
+  if (!spec) {
+    io.err(`${NAME}: no verb "${verb}"\n\n${MAIN_USAGE}`);
+    return 2;
+  }
+  /** @type {{values: Record<string, any>, positionals: string[]}} */
+  let args;
+  try {
+    args = parseArgs({ args: rest, options: /** @type {any} */ (spec.flags), allowPositionals: true, strict: true });
+  } catch (error) {
+    io.err(`${NAME} ${verb}: ${error.message}\n\n${spec.usage}`);
+    return 2;
+  }
+  if (args.values.help) {
+    io.out(spec.usage);
+    return 0;
+  }
+  try {
+    return await spec.run(/** @type {any} */ (args));
+  } catch (error) {
+    if (error instanceof UsageError) {
+      io.err(`${NAME} ${verb}: ${error.message}\n\n${spec.usage}`);
+      return 2;
+    }
+    if (error instanceof CliError) {
+      io.err(`${NAME} ${verb}: ${error.message}`);
+      return error.exitCode;
+    }
+    throw error;
+  }
+}

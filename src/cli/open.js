@@ -1,0 +1,39 @@
+// `shaderproof open SHADER`: the page served on a file from anywhere on disk. It prints the URL
+// and opens nothing; saving the file tells every page that has it open (page-server.js's
+// /__events), and the page recompiles it in place (src/page/main.js), as `npm run dev` does for
+// the shaders in this repository. Runs until Ctrl-C (or SIGTERM).
+
+import path from 'node:path';
+import { builtPage, startPageServer } from '../engine/page-server.js';
+import { io, oneShader } from './io.js';
+import { CliError, shaderKind } from './session.js';
+import { readNumber } from './view-options.js';
+
+/**
+ * @param {{values: Record<string, any>, positionals: string[]}} args
+ * @param {{stopped?: Promise<unknown>}} [options] when to stop (default: SIGINT or SIGTERM)
+ */
+export async function runOpen({ values, positionals }, { stopped } = {}) {
+  const file = path.resolve(oneShader(positionals, 'open'));
+  shaderKind(file);
+  const port = values.port === undefined ? 0 : readNumber(values.port, '--port', { min: 0, whole: true });
+  const root = await builtPage({ say: io.err }).catch((error) => {
+    throw new CliError(error.message);
+  });
+  const server = await startPageServer({ root, port }).catch((error) => {
+    throw new CliError(
+      error.code === 'EADDRINUSE' ? `--port ${port}: the port is in use; give another, or none for a free one` : error.message,
+    );
+  });
+  const shaderUrl = server.mount(file);
+  server.watch(shaderUrl);
+  io.out(`${server.baseUrl}/?shader=${shaderUrl.split('/').map(encodeURIComponent).join('/')}`);
+  io.err(`serving ${file}; saving it reloads it on the page. Ctrl-C stops.`);
+  await (stopped ??
+    new Promise((resolve) => {
+      process.once('SIGINT', resolve);
+      process.once('SIGTERM', resolve);
+    }));
+  await server.close();
+  return 0;
+}

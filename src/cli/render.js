@@ -1,0 +1,101 @@
+// `shaderproof render SHADER -o OUT.png`: one still of a shader, as the page draws it. The view
+// goes into the page's URL (view-options.js) and is drawn by drawView, as the render tests' views
+// are; --frame N draws frames 0 … N in turn (as the recorder does: iTime = i / 60, iFrame = i)
+// and keeps the last.
+
+import fs from 'node:fs';
+import path from 'node:path';
+import { unzipSync } from 'fflate';
+import { PNG } from 'pngjs';
+import { writePng } from '../engine/png.js';
+import { CliError, shaderKind } from './session.js';
+import { UsageError, viewQuery } from './view-options.js';
+
+/** Shadertoy's nominal frame rate: frame N is drawn at iTime N / 60. */
+export const FRAME_RATE = 60;
+
+/**
+ * Draws the shader `file` at `view` and returns the image and what the page said.
+ * @param {import('./session.js').Session} session
+ * @param {string} file
+ * @param {import('./view-options.js').ViewOptions} view
+ * @returns {Promise<{width: number, height: number, data: Uint8Array, info: any}>}
+ */
+export async function renderShader(session, file, view) {
+  shaderKind(file);
+  const mount = (f) => {
+    if (!fs.existsSync(f)) throw new CliError(`${f}: no such file`);
+    return session.server.mount(f);
+  };
+  const shaderUrl = session.server.mount(path.resolve(file));
+  const query = viewQuery(shaderUrl, view, mount);
+  let image;
+  try {
+    image = await session.draw(query);
+  } catch (error) {
+    if (error instanceof CliError) error.message = error.hung ? `${file}: ${error.message}` : userMessage(error.message, file);
+    throw error;
+  }
+  const missing = view.controls.filter(([name]) => !(name in (image.info.controls ?? {}))).map(([name]) => name);
+  if (missing.length) {
+    const known = Object.keys(image.info.controls ?? {});
+    throw new UsageError(
+      `--set ${missing.join(', ')}: ${path.basename(file)} has no such control (${known.length ? `its controls: ${known.join(', ')}` : 'it has none'})`,
+    );
+  }
+  if (view.frame === null) return image;
+  const page = /** @type {import('puppeteer-core').Page} */ (session.page());
+  const recorded = await page.evaluate(
+    (request) => window.raytracer.record(request).then((r) => r.data),
+    /** @type {any} */ ({ format: 'png', frames: view.frame + 1, fps: FRAME_RATE, width: view.size.width, height: view.size.height }),
+  );
+  const files = unzipSync(Buffer.from(recorded, 'base64'));
+  const last = Object.keys(files).sort().at(-1);
+  const png = PNG.sync.read(Buffer.from(files[/** @type {string} */ (last)]));
+  return { width: png.width, height: png.height, data: png.data, info: image.info };
+}
+
+/**
+ * The page's message with the shader named as the person gave it: a compile report says
+ * "NAME:LINE: error: …" with the file's own name (the page serves it under that name).
+ * @param {string} message
+ * @param {string} file
+ */
+export function userMessage(message, file) {
+  const name = path.basename(file);
+  const escaped = name.replace(/[.*+?^${}()|[\]\\]/g, '\\$&');
+  return message.replace(new RegExp(`(^|\\n)${escaped}:(\\d+):`, 'g'), `$1${file}:$2:`);
+}
+
+/**
+ * A float image as a Portable FloatMap (.pfm: "PF", the size, -1 for little-endian, then RGB
+ * float32 rows from the bottom up), which ImageMagick, GIMP, OpenCV and imageio read. No npm
+ * library writes OpenEXR from plain Node without native code; PFM keeps every float as is.
+ * @param {{width: number, height: number, data: Float32Array}} image RGBA rows top to bottom
+ */
+export function pfmBytes({ width, height, data }) {
+  const header = Buffer.from(`PF\n${width} ${height}\n-1.0\n`, 'ascii');
+  const body = Buffer.alloc(width * height * 12);
+  for (let y = 0; y < height; y++)
+    for (let x = 0; x < width; x++)
+      for (let c = 0; c < 3; c++) body.writeFloatLE(data[((height - 1 - y) * width + x) * 4 + c], ((y * width + x) * 3 + c) * 4);
+  return Buffer.concat([header, body]);
+}
+
+/** The output's format from its name: 'png', or 'pfm' (the colours in float). @param {string} file */
+export function outputFormat(file) {
+  if (/\.png$/i.test(file)) return 'png';
+  if (/\.pfm$/i.test(file)) return 'pfm';
+  throw new UsageError(`-o ${file}: a render is a .png file, or a .pfm (Portable FloatMap) for the colours in float`);
+}
+
+/** @param {string} file @param {{width: number, height: number, data: Uint8Array}} image */
+export function writeImage(file, image) {
+  writePng(file, image);
+}
+
+/** @param {string} file @param {{width: number, height: number, data: Float32Array}} image */
+export function writeFloatImage(file, image) {
+  fs.mkdirSync(path.dirname(path.resolve(file)), { recursive: true });
+  fs.writeFileSync(file, pfmBytes(image));
+}

@@ -1,0 +1,186 @@
+// What every verb of the command line starts with: the built page served on a loopback port
+// (src/engine/page-server.js), one headless Chromium (src/engine/browser.js: SwiftShader, or with
+// --gpu the machine's GPU), and a page on it brought to each view through the same drawView as
+// the render tests (src/engine/view.js). A shader that never finishes holds SwiftShader's GPU
+// process for good (tests/page-heavy.test.js): the session then starts another browser for
+// whatever comes next.
+
+import fs from 'node:fs';
+import { startBrowser } from '../engine/browser.js';
+import { findChrome } from '../engine/chrome-path.js';
+import { builtPage, startPageServer } from '../engine/page-server.js';
+import { drawView } from '../engine/view.js';
+import { CLOSE_TIMEOUT_MS, watchPage, withTimeout } from '../engine/watch.js';
+import { fromBase64 } from '../shared/pixels.js';
+
+/** An error the person can act on: said in one line, without a stack. */
+export class CliError extends Error {
+  /** @param {string} message @param {number} [exitCode] */
+  constructor(message, exitCode = 1) {
+    super(message);
+    this.exitCode = exitCode;
+    /** the shader did not finish a frame (the watchdog) */
+    this.hung = false;
+    /** the shader did not compile */
+    this.compile = false;
+  }
+}
+
+/** How long one wait on the page may take (a load, a compile, a frame): SwiftShader is slow. */
+const WAIT_MS = 120_000;
+
+/**
+ * The shader a new page starts on, before the first view: a page whose first load is a shader
+ * that never finishes stops answering (its first draw holds the page's own thread on
+ * SwiftShader), whereas one that has drawn once hears the watchdog and says so. So every view is
+ * brought in by open(), on a page that has drawn this.
+ */
+const STARTER = 'void mainImage(out vec4 c, in vec2 f) { c = vec4(0.0, 0.0, 0.0, 1.0); }\n';
+
+/**
+ * @param {{gpu?: boolean, hangMs?: number, compileHangMs?: number, say?: (line: string) => void}} [options]
+ *   hangMs: a band of a frame unfinished this long fails (the page's watchdog: timeouts.js);
+ *   compileHangMs: the same for a program's first draw, in which SwiftShader compiles it
+ */
+export async function startSession({ gpu = false, hangMs = 5_000, compileHangMs = 30_000, say = () => {} } = {}) {
+  let executablePath;
+  try {
+    executablePath = findChrome();
+  } catch (error) {
+    throw new CliError(error.message);
+  }
+  const root = await builtPage({ say }).catch((error) => {
+    throw new CliError(error.message);
+  });
+  const server = await startPageServer({ root });
+  const starter = server.mountText(STARTER, 'start.glsl');
+  /** @type {Awaited<ReturnType<typeof startBrowser>> | null} */
+  let chromium = null;
+  /** @type {import('puppeteer-core').Page | null} */
+  let page = null;
+  const logged = [];
+
+  async function browser() {
+    if (chromium) return chromium;
+    chromium = await startBrowser({ gpu, executablePath }).catch((error) => {
+      throw new CliError(error.message);
+    });
+    return chromium;
+  }
+
+  async function freshPage() {
+    const { browser: b } = await browser();
+    const opened = await withTimeout('opening a page', b.newPage(), WAIT_MS);
+    watchPage(opened, b, { waitTimeoutMs: WAIT_MS });
+    opened.on('console', (message) => {
+      if (message.type() === 'error') logged.push(message.text());
+    });
+    opened.on('pageerror', (error) => logged.push(String(/** @type {Error} */ (error)?.message ?? error)));
+    await opened.evaluateOnNewDocument((chosen) => {
+      /** @type {any} */ (window).__raytracerTimeouts = chosen;
+    }, /** @type {any} */ ({ hangMs, compileHangMs }));
+    await opened.setViewport({ width: 800, height: 600, deviceScaleFactor: 1 });
+    const started = await drawView(opened, { baseUrl: server.baseUrl, query: `/?shader=${starter}&size=2x2&time=0`, fresh: true });
+    if (started.error !== undefined) throw new CliError(`the page did not start: ${started.error}`);
+    return opened;
+  }
+
+  /** Drops the browser (after a hang: its GPU process is stuck); the next view starts another. */
+  async function dropBrowser() {
+    const old = chromium;
+    chromium = null;
+    page = null;
+    if (!old) return;
+    old.browser.process()?.kill('SIGKILL');
+    await old.close().catch(() => {});
+  }
+
+  return {
+    server,
+    /** What draws: Chromium's version and the WebGL2 renderer. */
+    async environment() {
+      return (await browser()).environment;
+    },
+    /**
+     * Draws the view `query` and reads its frame: { width, height, data (RGBA8 rows top to
+     * bottom), info }. Throws CliError with the page's words: a compile error, a shader that
+     * did not finish (the watchdog), a page error.
+     * @param {string} query
+     */
+    async draw(query) {
+      if (!page || page.isClosed()) page = await freshPage();
+      const current = /** @type {import('puppeteer-core').Page} */ (page);
+      let result;
+      try {
+        result = await drawView(current, { baseUrl: server.baseUrl, query, fresh: false });
+      } catch (error) {
+        await current.close().catch(() => {});
+        page = null;
+        throw new CliError(error.message.split('\n')[0]);
+      }
+      if (result.error !== undefined) {
+        if (result.hung) await dropBrowser();
+        else {
+          await current.close().catch(() => {});
+          page = null;
+        }
+        const seconds = (ms) => `${ms / 1000} s`;
+        const error = new CliError(
+          result.hung
+            ? `did not finish drawing a frame within the watchdog's ${seconds(hangMs)} (${seconds(compileHangMs)} for a first frame): it may never finish (an endless loop, or far too much work per pixel)`
+            : result.error,
+        );
+        Object.assign(error, { hung: Boolean(result.hung), compile: Boolean(result.compile) });
+        throw error;
+      }
+      const { pixels, info } = result;
+      return { width: pixels.width, height: pixels.height, data: fromBase64(pixels.data), info };
+    },
+    /**
+     * The last view's frame again in RGBA32F, as the shader wrote its colours (unclamped, NaN
+     * and infinity kept): { width, height, data: Float32Array, rows top to bottom }.
+     */
+    async drawFloat() {
+      if (!page) throw new Error('drawFloat: no view has been drawn');
+      const { width, height, data } = await page.evaluate(() => window.raytracer.captureFloat());
+      const bytes = fromBase64(data);
+      return { width, height, data: new Float32Array(bytes.buffer, bytes.byteOffset, bytes.byteLength / 4) };
+    },
+    /** The page the last view was drawn on (for what only it can do: record, frame steps). */
+    page: () => page,
+    /** Console errors the pages logged since the last call. */
+    takeLogged: () => logged.splice(0),
+    async close() {
+      if (page && !page.isClosed()) await withTimeout('closing the page', page.close(), CLOSE_TIMEOUT_MS).catch(() => {});
+      if (chromium) await chromium.close().catch(() => {});
+      await server.close();
+    },
+  };
+}
+
+/** @typedef {Awaited<ReturnType<typeof startSession>>} Session */
+
+/**
+ * What a file holds, for the error a person sees when it is not a shader: 'glsl' (has a
+ * mainImage), 'json' (Shadertoy's export, checked by the page), or throws CliError.
+ * @param {string} file
+ */
+export function shaderKind(file) {
+  let text;
+  try {
+    text = fs.readFileSync(file, 'utf8');
+  } catch (error) {
+    throw new CliError(`${file}: ${error.code === 'ENOENT' ? 'no such file' : error.message}`);
+  }
+  if (/\.json$/i.test(file) || /^\s*[[{]/.test(text)) {
+    try {
+      JSON.parse(text);
+    } catch (error) {
+      throw new CliError(`${file}: not a shader: not valid JSON (${error.message}), and a Shadertoy export is JSON`);
+    }
+    return 'json';
+  }
+  if (text.includes('\u0000')) throw new CliError(`${file}: not a shader: a binary file`);
+  if (!/\bmainImage\s*\(/.test(text)) throw new CliError(`${file}: not a shader: no mainImage() in it (a Shadertoy Image tab defines one)`);
+  return 'glsl';
+}
