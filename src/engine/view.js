@@ -44,7 +44,10 @@ export async function drawView(page, { baseUrl, query, fresh }) {
         const opened = opening === null ? window.raytracer.ready : window.raytracer.open(opening);
         if ((await Promise.race([opened.then(() => 'ok'), hung])) === 'hung') {
           const alert = document.querySelector('[role="alert"]')?.textContent?.trim().replace(/\s+/g, ' ');
-          return { error: `the shader did not finish drawing a frame: the watchdog gave up on it${alert ? ` ("${alert}")` : ''}`, hung: true };
+          return {
+            error: `the shader did not finish drawing a frame: the watchdog gave up on it${alert ? ` ("${alert}")` : ''}`,
+            hung: true,
+          };
         }
       } catch (error) {
         const report = error?.report ?? error?.message ?? String(error);
