@@ -12,6 +12,8 @@ import { promisify } from 'node:util';
 import { unzipSync } from 'fflate';
 import { PNG } from 'pngjs';
 import { afterAll, beforeAll, describe, expect, test } from 'vitest';
+import { formatImageError, imageError } from '../src/reference/error.js';
+import { renderReference } from '../src/reference/render.js';
 import { composeImageShader } from '../src/shadertoy/header.js';
 import { GOLDEN_DIR, REPO_ROOT, SHADER_FILE } from './harness/config.js';
 import { readPng, sameImage } from './harness/images.js';
@@ -128,6 +130,22 @@ describe('shaderproof, installed from its tarball', () => {
     const out = await shaderproof(['render', SHADER_FILE, '-o', 'default.png', '--size', '320x180', '--time', '0']);
     expect(out.code, out.stderr).toBe(0);
     expect(sameImage(readPng(path.join(folder, 'default.png')), readPng(path.join(GOLDEN_DIR, 'default.png')))).toBe(true);
+  });
+
+  test('render --converge N is the raytracer converged over N samples, as the float64 reference with N samples', async () => {
+    const samples = 8;
+    const out = await shaderproof(['render', SHADER_FILE, '--converge', String(samples), '-o', 'converged.png', '--size', '64x36']);
+    expect(out.code, out.stderr).toBe(0);
+    const image = readPng(path.join(folder, 'converged.png'));
+    const reference = renderReference(
+      fs.readFileSync(SHADER_FILE, 'utf8'),
+      { width: 64, height: 36, time: 0, mouse: [0, 0, 0, 0] },
+      { mode: 'progressive', samples },
+    );
+    const error = imageError(image, reference);
+    // tests/page-converge.test.js's bounds, for its reason: the image is 8-bit
+    expect(error.rmse, formatImageError(error)).toBeLessThan(2e-3);
+    expect(error.maxAbs).toBeLessThanOrEqual(8 / 255);
   });
 
   test("errors: not a shader, a compile error at the file's own line, no Chromium", async () => {

@@ -12,7 +12,7 @@ import { runRecord } from './record.js';
 import { outputFormat, renderShader, writeFloatImage, writeImage } from './render.js';
 import { CliError, startSession } from './session.js';
 import { runTest } from './corpus.js';
-import { UsageError, VIEW_FLAGS, readViewOptions } from './view-options.js';
+import { UsageError, VIEW_FLAGS, readNumber, readViewOptions } from './view-options.js';
 import { io, oneShader, watchdog } from './io.js';
 
 export const NAME = 'shaderproof';
@@ -43,10 +43,12 @@ export const VERBS = {
 Draws SHADER (a .glsl Image tab, or a Shadertoy JSON export) as the page does, and writes it.
 
 ${VIEW_HELP}
+  --converge N          the raytracer only: N progressive samples a pixel (its "Converge
+                        when still"), a print-quality still
   -o, --output FILE     OUT.png, or OUT.pfm: the colours in float as the shader wrote them
                         (Portable FloatMap, unclamped) (required)
 ${COMMON_HELP}`,
-    flags: { ...COMMON_FLAGS, ...VIEW_FLAGS, output: { type: 'string', short: 'o' } },
+    flags: { ...COMMON_FLAGS, ...VIEW_FLAGS, output: { type: 'string', short: 'o' }, converge: { type: 'string' } },
     run: runRender,
   },
   record: {
@@ -134,10 +136,13 @@ async function runRender({ values, positionals }) {
   const format = outputFormat(values.output);
   const view = readViewOptions(values, { width: 640, height: 360 });
   if (format === 'pfm' && view.frame !== null) throw new UsageError('-o .pfm: the float colours are of a still at --time, not of --frame');
+  const converge = values.converge === undefined ? null : readNumber(values.converge, '--converge', { min: 1, whole: true });
+  if (converge !== null && (view.frame !== null || format === 'pfm'))
+    throw new UsageError('--converge: a converged still is a .png at --time');
   const started = Date.now();
   const session = await startSession({ gpu: values.gpu, ...watchdog(values.watchdog), say: io.err });
   try {
-    const image = await renderShader(session, file, view);
+    const image = await renderShader(session, file, view, { converge });
     if (format === 'pfm') writeFloatImage(values.output, await session.drawFloat());
     else writeImage(values.output, image);
     const { renderer } = await session.environment();

@@ -8,6 +8,7 @@ import path from 'node:path';
 import { unzipSync } from 'fflate';
 import { PNG } from 'pngjs';
 import { writePng } from '../engine/png.js';
+import { fromBase64 } from '../shared/pixels.js';
 import { CliError, shaderKind } from './session.js';
 import { UsageError, viewQuery } from './view-options.js';
 
@@ -19,9 +20,10 @@ export const FRAME_RATE = 60;
  * @param {import('./session.js').Session} session
  * @param {string} file
  * @param {import('./view-options.js').ViewOptions} view
+ * @param {{converge?: number | null}} [options] converge: N progressive samples of the raytracer
  * @returns {Promise<{width: number, height: number, data: Uint8Array, info: any}>}
  */
-export async function renderShader(session, file, view) {
+export async function renderShader(session, file, view, { converge = null } = {}) {
   shaderKind(file);
   const mount = (f) => {
     if (!fs.existsSync(f)) throw new CliError(`${f}: no such file`);
@@ -43,8 +45,9 @@ export async function renderShader(session, file, view) {
       `--set ${missing.join(', ')}: ${path.basename(file)} has no such control (${known.length ? `its controls: ${known.join(', ')}` : 'it has none'})`,
     );
   }
-  if (view.frame === null) return image;
   const page = /** @type {import('puppeteer-core').Page} */ (session.page());
+  if (converge) return { ...(await converged(page, converge, file)), info: image.info };
+  if (view.frame === null) return image;
   const recorded = await page.evaluate(
     (request) => window.raytracer.record(request).then((r) => r.data),
     /** @type {any} */ ({ format: 'png', frames: view.frame + 1, fps: FRAME_RATE, width: view.size.width, height: view.size.height }),
@@ -53,6 +56,33 @@ export async function renderShader(session, file, view) {
   const last = Object.keys(files).sort().at(-1);
   const png = PNG.sync.read(Buffer.from(files[/** @type {string} */ (last)]));
   return { width: png.width, height: png.height, data: png.data, info: image.info };
+}
+
+/**
+ * The raytracer's still converged over `samples` progressive frames ("Converge when still",
+ * src/page/app/converge.js: one jittered sample per pixel a frame, the mean shown), without the
+ * sample count drawn over it, as the page's Screenshot saves it.
+ * @param {import('puppeteer-core').Page} page
+ * @param {number} samples
+ * @param {string} file
+ */
+async function converged(page, samples, file) {
+  const outcome = await page.evaluate(async (frames) => {
+    try {
+      await window.raytracer.setConverging(true, { frames });
+    } catch (error) {
+      return { error: error.message };
+    }
+    await window.raytracer.setControls({ SHOW_SAMPLE_COUNT: 0 });
+    return null;
+  }, samples);
+  if (outcome) throw new CliError(`--converge: ${file}: ${outcome.error}`);
+  // the live controls settle into constants (a compile), then a restart clears the sum
+  await page.waitForFunction(() => window.raytracer.info().liveControls === 'constants', { polling: 50, timeout: 60_000 });
+  await page.evaluate(() => window.raytracer.restart());
+  await page.waitForFunction((n) => window.raytracer.info().stillFrames >= n, { polling: 50, timeout: 0 }, samples);
+  const shot = await page.evaluate(() => window.raytracer.capture());
+  return { width: shot.width, height: shot.height, data: fromBase64(shot.data) };
 }
 
 /**
