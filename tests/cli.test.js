@@ -35,6 +35,12 @@ const WAVES = `void mainImage(out vec4 fragColor, in vec2 fragCoord) {
     fragColor = vec4(uv, 0.5 + 0.5 * sin(12.0 * ring - 3.0 * iTime), 1.0);
 }
 `;
+/** Screen-space derivatives of a pattern that changes from pixel to pixel. */
+const DERIVATIVES = `void mainImage(out vec4 fragColor, in vec2 fragCoord) {
+    float v = sin(fragCoord.x * fragCoord.y * 0.013 + iTime);
+    fragColor = vec4(abs(dFdx(v)) * 4.0, abs(dFdy(v)) * 4.0, fwidth(v), 1.0);
+}
+`;
 /** iFrame and iTime in colour, for the recordings. */
 const CLOCK = `void mainImage(out vec4 fragColor, in vec2 fragCoord) {
     fragColor = vec4(float(iFrame) / 255.0, fract(iTime), fragCoord.x / iResolution.x, 1.0);
@@ -130,6 +136,20 @@ describe('shaderproof, installed from its tarball', () => {
     const out = await shaderproof(['render', SHADER_FILE, '-o', 'default.png', '--size', '320x180', '--time', '0']);
     expect(out.code, out.stderr).toBe(0);
     expect(sameImage(readPng(path.join(folder, 'default.png')), readPng(path.join(GOLDEN_DIR, 'default.png')))).toBe(true);
+  });
+
+  test('render --tile 256 is the untiled render, pixel for pixel, derivatives included', async () => {
+    // screen-space derivatives are taken across 2×2 quads: a tile that split one would show it
+    write('derivatives.glsl', DERIVATIVES);
+    const args = ['render', 'derivatives.glsl', '--size', '600x300', '--time', '1'];
+    const whole = await shaderproof([...args, '-o', 'whole.png']);
+    expect(whole.code, whole.stderr).toBe(0);
+    const tiled = await shaderproof([...args, '--tile', '256', '-o', 'tiled.png']);
+    expect(tiled.code, tiled.stderr).toBe(0);
+    expect(sameImage(readPng(path.join(folder, 'tiled.png')), readPng(path.join(folder, 'whole.png')))).toBe(true);
+    const odd = await shaderproof([...args, '--tile', '255', '-o', 'odd.png']);
+    expect(odd.code).toBe(2);
+    expect(odd.stderr).toMatch(/--tile 255: the tile size must be even/);
   });
 
   test('render --converge N is the raytracer converged over N samples, as the float64 reference with N samples', async () => {

@@ -105,6 +105,8 @@ export interface RaytracerHook {
   /** Records the shader frame by frame (src/page/io/recorder.js); `data` is the file as base64. */
   /** The last frame's Image pass in RGBA32F: `data` is base64 of the floats' bytes, rows top to bottom. */
   captureFloat(): Promise<Base64Frame>;
+  /** A tile, from the bottom left, of the last frame drawn at fullWidth × fullHeight. */
+  captureTile(tile: { x: number; y: number; width: number; height: number; fullWidth: number; fullHeight: number }): Promise<Base64Frame>;
   record(request?: import('../src/page/io/recorder.js').RecordRequest): Promise<RecordingResult>;
   /** Stops the recording under way: its record() rejects, nothing is made. */
   cancelRecording(): void;

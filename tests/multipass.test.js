@@ -4,7 +4,7 @@
 // page (tests/multipass-runner.js). The JSON format: multipass-json.test.js; the keyboard
 // texture: keyboard.test.js.
 import { afterAll, describe, expect, test } from 'vitest';
-import { composeImageShader, composePassShader, countNewlines, locatePassLine } from '../src/shadertoy/header.js';
+import { TILE_OFFSET_UNIFORM, composeImageShader, composePassShader, countNewlines, locatePassLine } from '../src/shadertoy/header.js';
 import { buffersNeedingMipmaps, frameSchedule, renderOrder, singlePass } from '../src/shadertoy/multipass.js';
 import { formatPassMessages, parsePassShaderLog } from '../src/shadertoy/pass-errors.js';
 import { userLineOffset } from '../src/shadertoy/shader-errors.js';
@@ -92,6 +92,16 @@ describe('one pass composed in Shadertoy’s header', () => {
     // A buffer keeps its alpha; the Image forces it to 1.
     expect(composed.code).toContain('shadertoy_out_color = color;');
     expect(composePassShader(MAIN, { common }).code).toContain('shadertoy_out_color = vec4(color.xyz, 1.0);');
+  });
+  test("a tile (the command line's --tile) differs from Shadertoy's only by the host's offset uniform and its use in main", () => {
+    const plain = composePassShader(MAIN, { hostBlock: '#define X 1\n' });
+    const tiled = composePassShader(MAIN, { hostBlock: '#define X 1\n', tiled: true });
+    const expected = plain.code
+      .replace('#define X 1\n', `uniform vec2 ${TILE_OFFSET_UNIFORM};\n#define X 1\n`)
+      .replace('mainImage(color, gl_FragCoord.xy);', `mainImage(color, gl_FragCoord.xy + ${TILE_OFFSET_UNIFORM});`);
+    expect(tiled.code).toBe(expected);
+    expect(tiled.firstSourceLine).toBe(plain.firstSourceLine + 1);
+    expect(() => composePassShader(MAIN, { kind: 'buffer', tiled: true })).toThrow(/only the Image pass/);
   });
   test('channel types: samplerCube and sampler3D where the channels need them, same line count', () => {
     const composed = composePassShader(MAIN, { channelTypes: ['2D', 'Cube', '3D', '2D'] });

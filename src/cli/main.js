@@ -9,7 +9,7 @@ import path from 'node:path';
 import { parseArgs } from 'node:util';
 import { runOpen } from './open.js';
 import { runRecord } from './record.js';
-import { outputFormat, renderShader, writeFloatImage, writeImage } from './render.js';
+import { outputFormat, renderShader, renderTiled, writeFloatImage, writeImage } from './render.js';
 import { CliError, startSession } from './session.js';
 import { runTest } from './corpus.js';
 import { UsageError, VIEW_FLAGS, readNumber, readViewOptions } from './view-options.js';
@@ -43,12 +43,20 @@ export const VERBS = {
 Draws SHADER (a .glsl Image tab, or a Shadertoy JSON export) as the page does, and writes it.
 
 ${VIEW_HELP}
+  --tile PX             draw in tiles of PX pixels (even): a still larger than the browser
+                        draws at once, the same pixels as one draw where both fit
   --converge N          the raytracer only: N progressive samples a pixel (its "Converge
                         when still"), a print-quality still
   -o, --output FILE     OUT.png, or OUT.pfm: the colours in float as the shader wrote them
                         (Portable FloatMap, unclamped) (required)
 ${COMMON_HELP}`,
-    flags: { ...COMMON_FLAGS, ...VIEW_FLAGS, output: { type: 'string', short: 'o' }, converge: { type: 'string' } },
+    flags: {
+      ...COMMON_FLAGS,
+      ...VIEW_FLAGS,
+      output: { type: 'string', short: 'o' },
+      converge: { type: 'string' },
+      tile: { type: 'string' },
+    },
     run: runRender,
   },
   record: {
@@ -139,10 +147,15 @@ async function runRender({ values, positionals }) {
   const converge = values.converge === undefined ? null : readNumber(values.converge, '--converge', { min: 1, whole: true });
   if (converge !== null && (view.frame !== null || format === 'pfm'))
     throw new UsageError('--converge: a converged still is a .png at --time');
+  const tile = values.tile === undefined ? null : readNumber(values.tile, '--tile', { min: 2, whole: true });
+  if (tile !== null && tile % 2)
+    throw new UsageError(`--tile ${tile}: the tile size must be even (the GPU shades 2x2 quads; an odd size would split them)`);
+  if (tile !== null && (view.frame !== null || converge !== null || format === 'pfm'))
+    throw new UsageError('--tile: a tiled still is a .png at --time');
   const started = Date.now();
   const session = await startSession({ gpu: values.gpu, ...watchdog(values.watchdog), say: io.err });
   try {
-    const image = await renderShader(session, file, view, { converge });
+    const image = tile !== null ? await renderTiled(session, file, view, tile) : await renderShader(session, file, view, { converge });
     if (format === 'pfm') writeFloatImage(values.output, await session.drawFloat());
     else writeImage(values.output, image);
     const { renderer } = await session.environment();

@@ -58,6 +58,48 @@ export async function renderShader(session, file, view, { converge = null } = {}
   return { width: png.width, height: png.height, data: png.data, info: image.info };
 }
 
+/** The largest side the CLI opens the page at for a tiled still; the tiles make the rest. */
+const TILED_PAGE_SIDE = 2048;
+
+/**
+ * The view drawn in tiles of `tile` pixels: the page opens at the whole size where it can (else
+ * at the same aspect, smaller: the tiles' iResolution is the whole picture's either way), and
+ * each tile is drawn with fragCoord moved by its place (header.js TILE_OFFSET_UNIFORM). Tiles
+ * start at multiples of `tile` from the bottom left, as gl_FragCoord counts, so that with an
+ * even `tile` every 2×2 quad is the whole picture's: its derivatives too.
+ * @param {import('./session.js').Session} session
+ * @param {string} file
+ * @param {import('./view-options.js').ViewOptions} view
+ * @param {number} tile
+ */
+export async function renderTiled(session, file, view, tile) {
+  const { width, height } = view.size;
+  const fits = width <= TILED_PAGE_SIDE && height <= TILED_PAGE_SIDE;
+  const scale = fits ? 1 : TILED_PAGE_SIDE / Math.max(width, height);
+  const pageSize = { width: Math.max(1, Math.round(width * scale)), height: Math.max(1, Math.round(height * scale)) };
+  const mouse = view.mouse && view.mouse.map((v, i) => v * (i % 2 === 0 ? pageSize.width / width : pageSize.height / height));
+  const first = await renderShader(session, file, { ...view, size: pageSize, mouse });
+  const page = /** @type {import('puppeteer-core').Page} */ (session.page());
+  const data = new Uint8Array(width * height * 4);
+  for (let y = 0; y < height; y += tile)
+    for (let x = 0; x < width; x += tile) {
+      const w = Math.min(tile, width - x);
+      const h = Math.min(tile, height - y);
+      const shot = await page
+        .evaluate((t) => window.raytracer.captureTile(t), { x, y, width: w, height: h, fullWidth: width, fullHeight: height })
+        .catch((error) => {
+          throw new CliError(`--tile: ${path.basename(file)}: ${error.message.split('\n')[0]}`);
+        });
+      const pixels = fromBase64(shot.data);
+      // the tile's rows come top to bottom; its top row is the picture's row height - (y + h)
+      for (let row = 0; row < h; row++) {
+        const to = ((height - (y + h) + row) * width + x) * 4;
+        data.set(pixels.subarray(row * w * 4, (row + 1) * w * 4), to);
+      }
+    }
+  return { width, height, data, info: first.info };
+}
+
 /**
  * The raytracer's still converged over `samples` progressive frames ("Converge when still",
  * src/page/app/converge.js: one jittered sample per pixel a frame, the mean shown), without the

@@ -31,6 +31,11 @@
 //   capture({width, height}?)  Promise<{width, height, data}>: the last frame drawn again off
 //                         screen at that size (default: the canvas's), as the Screenshot button
 //                         saves it.
+//   captureTile({x, y, width, height, fullWidth, fullHeight})  Promise<{width, height, data}>:
+//                         the tile at (x, y) (from the bottom left) of the last frame drawn at
+//                         fullWidth × fullHeight, for a picture larger than one draw (the
+//                         command line's --tile); x and y even keep the quads of the whole
+//                         picture. A shader with buffers rejects.
 //   captureFloat()        Promise<{width, height, data}>: the last frame's Image pass drawn again
 //                         in RGBA32F, its colours as the shader wrote them (unclamped, NaN and
 //                         infinity kept), rows top to bottom; `data` is base64 of the floats'
@@ -197,6 +202,14 @@ export function installAutomation(app, ready, ui, { open }) {
       return { width, height, data: toBase64(data) };
     },
 
+    async captureTile({ x, y, width, height, fullWidth, fullHeight }) {
+      await settled();
+      const inputs = app.frames.last;
+      if (!inputs) throw new Error(app.gpu.contextLost ? 'the GPU context is lost' : 'no shader is running');
+      const data = await app.gpu.ask('captureTile', { inputs, x, y, width, height, fullWidth, fullHeight });
+      return { width, height, data: toBase64(data) };
+    },
+
     async captureFloat() {
       await settled();
       const inputs = app.frames.last;
@@ -304,6 +317,7 @@ export function installFailedAutomation(error) {
     restoreContext() {},
     capture: fail,
     captureFloat: fail,
+    captureTile: fail,
     setChannel: fail,
     loadShader: fail,
     shareUrl: () => location.href,

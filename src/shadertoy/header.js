@@ -180,6 +180,18 @@ void main(void) {
 const SAMPLER_DECLARATIONS = Object.freeze({ '2D': 'sampler2D', Cube: 'samplerCube', '3D': 'sampler3D' });
 
 /**
+ * A tiled still (the command line's --tile: a picture larger than one draw may be) draws each
+ * tile with iResolution the whole picture's and fragCoord moved by the tile's place in it: the
+ * host's own uniform, in the host's own `main`, never in what pastes into Shadertoy. An offset
+ * of even whole pixels keeps every 2×2 quad, and so every screen-space derivative, the whole
+ * picture's (the command line's tiles start at multiples of an even tile size).
+ */
+export const TILE_OFFSET_UNIFORM = 'shadertoy_tileOffset';
+
+/** The Image pass's `main` for a tile: Shadertoy's, with fragCoord moved by the tile's offset. */
+const TILED_IMAGE_FOOTER = SHADERTOY_FOOTER.replace('gl_FragCoord.xy', `gl_FragCoord.xy + ${TILE_OFFSET_UNIFORM}`);
+
+/**
  * One part of a composed pass, in lines counted from the first line of user text (1 = the
  * composed shader's line `firstSourceLine`).
  * @typedef {{name: string, firstLine: number, lineCount: number}} PassSection
@@ -192,22 +204,24 @@ const SAMPLER_DECLARATIONS = Object.freeze({ '2D': 'sampler2D', Cube: 'samplerCu
  * composeImageShader(code, {hostBlock}).
  * @param {string} code the pass's tab text
  * @param {{common?: string | null, hostBlock?: string, kind?: 'image' | 'buffer', name?: string,
- *   channelTypes?: Array<'2D' | 'Cube' | '3D'>}} [options] name: the pass's name in error
- *   messages (default "Image", or "Buffer" for a buffer)
+ *   channelTypes?: Array<'2D' | 'Cube' | '3D'>, tiled?: boolean}} [options] name: the pass's name
+ *   in error messages (default "Image", or "Buffer" for a buffer); tiled: an Image pass drawn as
+ *   a tile of a larger picture (TILE_OFFSET_UNIFORM)
  * @returns {{code: string, firstSourceLine: number, sections: PassSection[]}} the code; the
  *   1-based line of `code` where the user's text (Common, or the tab when there is none) starts;
  *   and where Common and the tab lie, for mapping compiler messages (pass-errors.js)
  */
-export function composePassShader(code, { common = null, hostBlock = '', kind = 'image', name, channelTypes } = {}) {
+export function composePassShader(code, { common = null, hostBlock = '', kind = 'image', name, channelTypes, tiled = false } = {}) {
+  if (tiled && kind !== 'image') throw new Error('composePassShader: only the Image pass is drawn in tiles');
   let header = SHADERTOY_HEADER;
   (channelTypes ?? []).forEach((type, i) => {
     const declaration = SAMPLER_DECLARATIONS[type];
     if (!declaration) throw new Error(`composePassShader: unknown sampler type ${JSON.stringify(type)} for iChannel${i}`);
     header = header.replace(`uniform sampler2D iChannel${i};`, `uniform ${declaration} iChannel${i};`);
   });
-  const before = header + hostBlock;
+  const before = header + (tiled ? `uniform vec2 ${TILE_OFFSET_UNIFORM};\n` : '') + hostBlock;
   const commonText = common === null ? '' : common + '\n';
-  const footer = kind === 'buffer' ? SHADERTOY_BUFFER_FOOTER : SHADERTOY_FOOTER;
+  const footer = kind === 'buffer' ? SHADERTOY_BUFFER_FOOTER : tiled ? TILED_IMAGE_FOOTER : SHADERTOY_FOOTER;
   const passName = name ?? (kind === 'buffer' ? 'Buffer' : 'Image');
   /** @type {PassSection[]} */
   const sections = [];

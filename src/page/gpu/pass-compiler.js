@@ -70,10 +70,13 @@ export class PassCompiler {
    * @param {string} hostBlock
    * @param {string} fileName
    * @param {() => Record<string, {value: any}>} passUniforms
+   * @param {{tiled?: boolean}} [options] tiled: the Image pass as a tile of a larger picture
+   *   (header.js: TILE_OFFSET_UNIFORM), for a shader without buffers
    * @returns {Promise<Step[]>}
    */
-  async compileSteps(project, hostBlock, fileName, passUniforms) {
+  async compileSteps(project, hostBlock, fileName, passUniforms, { tiled = false } = {}) {
     const schedule = frameSchedule(project);
+    if (tiled && schedule.length > 1) throw new Error("a shader with buffers is not drawn in tiles: its buffers are the picture's size");
     const multipass = project.common !== null || schedule.length > 1;
     const sources = Object.fromEntries([['Common', project.common ?? ''], ...project.passes.map((pass) => [pass.name, pass.code])]);
     const messages = [];
@@ -87,6 +90,7 @@ export class PassCompiler {
         kind: pass.kind,
         name: pass.name,
         channelTypes: channelTypes(pass),
+        tiled,
       });
       const check = {
         userText: (project.common === null ? '' : project.common + '\n') + pass.code,

@@ -58,6 +58,10 @@ import { ShaderCompileError, WebGL2UnavailableError } from './errors.js';
  *   the same frame at another size, off screen (allPasses: every pass, buffers included, at their
  *   size: a recorded frame); RGBA8, rows top to bottom, alpha 1; program 'aa-pixels': the path
  *   probe's mainImage (the shader's pixels with extra samples) instead of the Image pass
+ * @property {[{inputs: FrameInputs, x: number, y: number, width: number, height: number, fullWidth: number, fullHeight: number}, Uint8Array]} captureTile
+ *   the width × height tile at (x, y), from the bottom left, of the same frame drawn at fullWidth ×
+ *   fullHeight (iResolution that size, fragCoord moved by (x, y): header.js TILE_OFFSET_UNIFORM),
+ *   for a shader without buffers; RGBA8, rows top to bottom, alpha 1
  * @property {[{inputs: FrameInputs, width: number, height: number}, Float32Array]} captureFloat the
  *   same frame's Image pass in RGBA32F, its colours as the shader wrote them (unclamped), rows top
  *   to bottom

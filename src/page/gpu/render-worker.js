@@ -12,6 +12,7 @@ import { writeUniforms } from './uniforms.js';
 import { BandPlanner } from './band-planner.js';
 import { flipRows } from '../../shared/pixels.js';
 import { serve } from './protocol.js';
+import { TILE_OFFSET_UNIFORM } from '../../shadertoy/header.js';
 
 /** @typedef {import('./protocol.js').FrameInputs} FrameInputs */
 /** @typedef {import('./protocol.js').DrawnFrame} DrawnFrame */
@@ -42,6 +43,8 @@ const PRESENT_EVERY_MS = 250;
  * @property {boolean} [allPasses] a capture that draws every pass (a recorded frame)
  * @property {boolean} [float] a capture read as RGBA32F
  * @property {'aa-pixels'} [program] a capture of the path probe's mainImage instead of the Image pass
+ * @property {{x: number, y: number, fullWidth: number, fullHeight: number}} [tile] a capture of
+ *   the tile at (x, y) (from the bottom left) of a fullWidth × fullHeight picture (renderer.tiled())
  * @property {(result: any) => void} resolve
  * @property {(error: Error) => void} reject
  */
@@ -131,8 +134,18 @@ function pump() {
     renderer().gpuTimer.begin();
     if (job.inputs.keyboard) renderer().setKeyboard(job.inputs.keyboard);
   }
-  writeUniforms(renderer().uniforms, job.inputs, { width: job.width, height: job.height });
-  const drawn = job.program === 'aa-pixels' ? renderer().probe.mainImageAt(0, 0) : step;
+  const { tile } = job;
+  writeUniforms(
+    renderer().uniforms,
+    job.inputs,
+    tile ? { width: tile.fullWidth, height: tile.fullHeight } : { width: job.width, height: job.height },
+  );
+  const drawn = tile
+    ? /** @type {import('./pass-compiler.js').Step} */ (renderer().tiledStep)
+    : job.program === 'aa-pixels'
+      ? renderer().probe.mainImageAt(0, 0)
+      : step;
+  if (tile) drawn.material.uniforms[TILE_OFFSET_UNIFORM].value = [tile.x, tile.y];
   const target = renderer().beginStep(drawn, job.width, job.height) ?? job.target;
   // SwiftShader turns a program into machine code on its first draw, not when it links (the
   // raytracer's torus scene: 22 ms to link, 3.5 s for its first 2×2 quad, 2 ms for the next).
@@ -326,6 +339,13 @@ const tell = serve(
       if (program && !renderer().probe.step) throw new Error('the path probe has not compiled');
       const target = renderer().makeTarget(width, height);
       return enqueue({ kind: 'capture', inputs, width, height, readBack: true, target, allPasses, program });
+    },
+
+    async captureTile({ inputs, x, y, width, height, fullWidth, fullHeight }) {
+      const step = await renderer().tiled();
+      if (renderer().tiledStep !== step) throw new Error('another shader was loaded meanwhile');
+      const target = renderer().makeTarget(width, height);
+      return enqueue({ kind: 'capture', inputs, width, height, readBack: true, target, tile: { x, y, fullWidth, fullHeight } });
     },
 
     captureFloat({ inputs, width, height }) {

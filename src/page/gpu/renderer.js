@@ -20,6 +20,7 @@ import { WebGL2UnavailableError } from './errors.js';
 import { PassCompiler, VERTEX_SHADER } from './pass-compiler.js';
 import { ChannelSamplers, bindChannels, imageTexture, ownChannelUniforms } from './channel-bindings.js';
 import { PixelProbe } from './probe.js';
+import { TILE_OFFSET_UNIFORM } from '../../shadertoy/header.js';
 
 /** @typedef {import('./pass-compiler.js').Step} Step */
 
@@ -79,7 +80,8 @@ export class ShaderRenderer {
       this.three,
       geometry,
       this.camera,
-      (material) => this.steps.some((step) => step.material === material) || this.probe.uses(material),
+      (material) =>
+        this.steps.some((step) => step.material === material) || this.probe.uses(material) || this.tiledStep?.material === material,
     );
 
     /** Where frames are drawn and kept (RGBA8, as the page's canvas): the page shows copies of it. */
@@ -117,6 +119,10 @@ export class ShaderRenderer {
 
     /** Which compile is on screen: the page's number for it (compile()'s `serial`), 0 before any. */
     this.installed = 0;
+    /** What the shader on screen was compiled from (for its tiled form). @type {{project: any, hostBlock: string, fileName: string} | null} */
+    this._onScreen = null;
+    /** Its Image pass as a tile (tiled()), once asked for. @type {Step | null} */
+    this.tiledStep = null;
     /** The pixel inspector's reads, and the path probe (probe.js). */
     this.probe = new PixelProbe(this);
   }
@@ -161,6 +167,8 @@ export class ShaderRenderer {
     if (serial < this.installed) return; // a newer compile got in first
     this.installed = serial;
     this.steps = steps;
+    this._onScreen = { project, hostBlock, fileName };
+    this.tiledStep = null;
     this.mesh.material = steps[steps.length - 1].material;
     /** @type {Map<string, import('../../shadertoy/multipass.js').Sampler>} */
     const wanted = new Map();
@@ -170,6 +178,22 @@ export class ShaderRenderer {
         if (binding.source === 'buffer' && binding.sampler?.filter === 'mipmap')
           wanted.set(binding.buffer, { filter: 'mipmap', wrap: 'clamp', vflip: false });
     this.buffers.use(wanted);
+  }
+
+  /**
+   * The Image pass of the shader on screen as a tile of a larger picture (header.js:
+   * TILE_OFFSET_UNIFORM), compiled the first time a tile is asked for; rejects for a shader with
+   * buffers.
+   * @returns {Promise<Step>}
+   */
+  async tiled() {
+    if (this.tiledStep) return this.tiledStep;
+    if (!this._onScreen) throw new Error('no shader has compiled');
+    const { project, hostBlock, fileName } = this._onScreen;
+    const uniforms = () => ({ ...this.passUniforms(), [TILE_OFFSET_UNIFORM]: { value: [0, 0] } });
+    const [step] = await this.compiler.compileSteps(project, hostBlock, fileName, uniforms, { tiled: true });
+    if (this._onScreen?.project === project && this._onScreen.hostBlock === hostBlock) this.tiledStep = step;
+    return step;
   }
 
   /**
