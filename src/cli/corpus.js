@@ -154,7 +154,7 @@ export async function runTest({ values, positionals }) {
   try {
     environment = await session.environment();
     io.err(
-      `${cases.length} of ${all.length} cases${shard.count > 1 ? ` (shard ${shard.index + 1}/${shard.count})` : ''}, drawn by ${environment.renderer}`,
+      `${cases.length} of ${all.length} cases${shard.count > 1 ? ` (shard ${shard.index + 1}/${shard.count})` : ''}, drawn by ${environment.label}`,
     );
     for (const testCase of cases) {
       if (testCase.skip !== null) {

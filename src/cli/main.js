@@ -158,7 +158,7 @@ async function runRender({ values, positionals }) {
     const image = tile !== null ? await renderTiled(session, file, view, tile) : await renderShader(session, file, view, { converge });
     if (format === 'pfm') writeFloatImage(values.output, await session.drawFloat());
     else writeImage(values.output, image);
-    const { renderer } = await session.environment();
+    const { label: renderer } = await session.environment();
     io.out(`${values.output}: ${image.width}x${image.height}, ${renderer}, ${((Date.now() - started) / 1000).toFixed(1)} s`);
   } finally {
     await session.close();

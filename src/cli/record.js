@@ -51,7 +51,7 @@ export async function runRecord({ values, positionals }) {
     }
     fs.mkdirSync(path.dirname(path.resolve(output)), { recursive: true });
     fs.writeFileSync(output, Buffer.from(result.data, 'base64'));
-    const { renderer } = await session.environment();
+    const { label: renderer } = await session.environment();
     const what = format === 'webm' ? `${result.codec} video` : 'PNGs in a zip';
     io.out(
       `${output}: ${result.frames} frames at ${result.fps} fps, ${result.width}x${result.height}, ${what}, ${renderer}, ${((Date.now() - started) / 1000).toFixed(1)} s`,

@@ -6,7 +6,7 @@
 // whatever comes next.
 
 import fs from 'node:fs';
-import { startBrowser } from '../engine/browser.js';
+import { rendererLabel, startBrowser } from '../engine/browser.js';
 import { findChrome } from '../engine/chrome-path.js';
 import { builtPage, startPageServer } from '../engine/page-server.js';
 import { drawView } from '../engine/view.js';
@@ -43,6 +43,7 @@ const STARTER = 'void mainImage(out vec4 c, in vec2 f) { c = vec4(0.0, 0.0, 0.0,
  *   compileHangMs: the same for a program's first draw, in which SwiftShader compiles it
  */
 export async function startSession({ gpu = false, hangMs = 5_000, compileHangMs = 30_000, say = () => {} } = {}) {
+  mark('node started, modules loaded');
   let executablePath;
   try {
     executablePath = findChrome();
@@ -52,7 +53,9 @@ export async function startSession({ gpu = false, hangMs = 5_000, compileHangMs 
   const root = await builtPage({ say }).catch((error) => {
     throw new CliError(error.message);
   });
+  mark('built page found');
   const server = await startPageServer({ root });
+  mark('server');
   const starter = server.mountText(STARTER, 'start.glsl');
   /** @type {Awaited<ReturnType<typeof startBrowser>> | null} */
   let chromium = null;
@@ -65,6 +68,7 @@ export async function startSession({ gpu = false, hangMs = 5_000, compileHangMs 
     chromium = await startBrowser({ gpu, executablePath }).catch((error) => {
       throw new CliError(error.message);
     });
+    mark('chromium launched, WebGL2 checked');
     return chromium;
   }
 
@@ -82,6 +86,7 @@ export async function startSession({ gpu = false, hangMs = 5_000, compileHangMs 
     await opened.setViewport({ width: 800, height: 600, deviceScaleFactor: 1 });
     const started = await drawView(opened, { baseUrl: server.baseUrl, query: `/?shader=${starter}&size=2x2&time=0`, fresh: true });
     if (started.error !== undefined) throw new CliError(`the page did not start: ${started.error}`);
+    mark('page loaded, first frame');
     return opened;
   }
 
@@ -97,9 +102,10 @@ export async function startSession({ gpu = false, hangMs = 5_000, compileHangMs 
 
   return {
     server,
-    /** What draws: Chromium's version and the WebGL2 renderer. */
+    /** What draws: Chromium's version and the WebGL2 renderer (`label`: without its device id). */
     async environment() {
-      return (await browser()).environment;
+      const { environment } = await browser();
+      return { ...environment, label: rendererLabel(environment.renderer) };
     },
     /**
      * Draws the view `query` and reads its frame: { width, height, data (RGBA8 rows top to
@@ -134,6 +140,7 @@ export async function startSession({ gpu = false, hangMs = 5_000, compileHangMs 
         throw error;
       }
       const { pixels, info } = result;
+      mark('view drawn');
       return { width: pixels.width, height: pixels.height, data: fromBase64(pixels.data), info };
     },
     /**
@@ -151,11 +158,21 @@ export async function startSession({ gpu = false, hangMs = 5_000, compileHangMs 
     /** Console errors the pages logged since the last call. */
     takeLogged: () => logged.splice(0),
     async close() {
+      mark('output written');
       if (page && !page.isClosed()) await withTimeout('closing the page', page.close(), CLOSE_TIMEOUT_MS).catch(() => {});
       if (chromium) await chromium.close().catch(() => {});
       await server.close();
+      mark('closed');
+      if (process.env.SHADERPROOF_TIMINGS) say(`timings: ${JSON.stringify(marks)}`);
     },
   };
+}
+
+/** Where the time of a command goes (SHADERPROOF_TIMINGS=1 prints it; the benchmark reads it). */
+const marks = /** @type {Record<string, number>} */ ({});
+/** Milliseconds since the process started, at `what` (the first time it happens). @param {string} what */
+function mark(what) {
+  if (!(what in marks)) marks[what] = Math.round(process.uptime() * 1000);
 }
 
 /** @typedef {Awaited<ReturnType<typeof startSession>>} Session */
