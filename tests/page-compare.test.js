@@ -13,8 +13,11 @@ import { SHADER_FILE } from './harness/config.js';
 import { disconnect } from './harness/page.js';
 import { measureSameRay } from './harness/same-ray.js';
 import { viewQuery } from './views.js';
-import { button, canvasBox, withPage } from './page-helpers.js';
+import { button, canvasBox, withPage, sharePageAcrossTests } from './page-helpers.js';
 import { exportOf } from './page-multipass-helpers.js';
+
+// not a test of loading the page: the tests share one, brought to each view by open()
+sharePageAcrossTests();
 
 afterAll(disconnect);
 

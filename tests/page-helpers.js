@@ -4,7 +4,7 @@
 
 import fs from 'node:fs';
 import path from 'node:path';
-import { expect } from 'vitest';
+import { afterAll, expect } from 'vitest';
 import { REPO_ROOT } from './harness/config.js';
 import { decodeRgba, openPage } from './harness/page.js';
 
@@ -41,8 +41,43 @@ export async function withServedDir(prefix, body) {
  */
 
 /**
- * Runs `body({page, errors, warnings, context, goto})` on a fresh page and closes it. The test
- * fails if the page logged a console error or threw, even when `body` passed.
+ * Whether this test file's withPage calls share one page (sharePageAcrossTests): the second and
+ * later `goto`s bring it to their view with window.raytracer.open(), which gives what a fresh
+ * load of that URL gives (tests/page-open.test.js), instead of loading the page again.
+ */
+let sharing = false;
+/** The page this file's tests share, once one has loaded it. @type {{page: import('puppeteer-core').Page, errors: string[], warnings: string[], context: any, loaded: boolean} | null} */
+let shared = null;
+
+/**
+ * For a test file whose tests are not about loading the page: its withPage calls share one page,
+ * and each `goto` after the first is window.raytracer.open() (a page load is most of a short
+ * test). Call it at the top of the file. The shared page has the production timeouts and the
+ * deterministic clocks; a withPage given other ones, or a beforeLoad, gets a page of its own.
+ */
+export function sharePageAcrossTests() {
+  sharing = true;
+  afterAll(async () => {
+    const kept = shared;
+    shared = null;
+    await kept?.page.close().catch(() => {});
+  });
+}
+
+/** A page of openPage's with its warnings collected. */
+async function newPage({ deterministic, timeouts }) {
+  const { page, errors, context } = await openPage({ deterministic, timeouts });
+  const warnings = [];
+  page.on('console', (message) => {
+    if (message.type() === 'warn') warnings.push(message.text());
+  });
+  return { page, errors, warnings, context, loaded: false };
+}
+
+/**
+ * Runs `body({page, errors, warnings, context, goto})` on a fresh page and closes it (or, in a
+ * file that called sharePageAcrossTests, on the file's page, brought to each `goto`'s view by
+ * open()). The test fails if the page logged a console error or threw, even when `body` passed.
  * @param {(p: PageSession) => Promise<void>} body
  * `deterministic: false` leaves the page's clocks real (the watchdog's tests need time to pass
  * while no animation frame is asked for); `timeouts` shortens the page's (harness/config.js's
@@ -50,17 +85,33 @@ export async function withServedDir(prefix, body) {
  * @param {{viewport?: import('puppeteer-core').Viewport, beforeLoad?: (page: import('puppeteer-core').Page) => Promise<unknown>, deterministic?: boolean, timeouts?: Partial<import('../src/page/timeouts.js').Timeouts>}} [options]
  */
 export async function withPage(body, { viewport, beforeLoad, deterministic = true, timeouts } = {}) {
-  const { page, errors, context } = await openPage({ deterministic, timeouts });
-  const warnings = [];
-  page.on('console', (message) => {
-    if (message.type() === 'warn') warnings.push(message.text());
-  });
-  if (viewport) await page.setViewport(viewport);
+  // a page set up otherwise before it loads is a page of its own, as without sharing
+  const shares = sharing && !beforeLoad && deterministic && !timeouts;
+  const session = shares && shared && !shared.page.isClosed() ? shared : await newPage({ deterministic, timeouts });
+  if (shares) shared = session;
+  const { page, context, errors, warnings } = session;
+  // what this test's page logs: from now on (a shared page's earlier tests have had theirs)
+  errors.length = 0;
+  warnings.length = 0;
+  await page.setViewport(viewport ?? { width: 800, height: 600, deviceScaleFactor: 1 });
   if (beforeLoad) await beforeLoad(page);
   /** Loads the page at `query` ("?shader=...") and waits for its first frame (or its failure). */
   const goto = async (query, { expectReady = true, base = context.baseUrl } = {}) => {
+    if (shares && session.loaded && base === context.baseUrl && expectReady) {
+      const outcome = await page.evaluate(
+        (q) =>
+          window.raytracer.open(q).then(
+            () => 'ok',
+            (e) => `open rejected: ${e?.message ?? e}`,
+          ),
+        query,
+      );
+      expect(outcome, `${query}: the page did not draw its first frame`).toBe('ok');
+      return;
+    }
     await page.goto(`${base}/${query}`, { waitUntil: 'load' });
     await page.waitForFunction(() => window.raytracer || document.documentElement.dataset.error, { polling: 50 });
+    session.loaded = base === context.baseUrl;
     if (expectReady) {
       const outcome = await page.evaluate(() =>
         window.raytracer.ready.then(
@@ -71,14 +122,19 @@ export async function withPage(body, { viewport, beforeLoad, deterministic = tru
       expect(outcome, `${query}: the page did not draw its first frame`).toBe('ok');
     }
   };
+  let passed = false;
   try {
     await body({ page, errors, warnings, context, goto });
+    passed = true;
   } finally {
     // edits the page kept in localStorage (kept-source.js) must not reach the next test's page
     await page.evaluate(() => localStorage.clear()).catch(() => {});
-    await page.close().catch(() => {});
+    if (!shares || !passed) {
+      await page.close().catch(() => {});
+      if (shared === session) shared = null;
+    }
   }
-  expect(errors, 'the page logged errors').toEqual([]);
+  expect([...errors], 'the page logged errors').toEqual([]);
 }
 
 /** Lets the page read and write the clipboard (and focuses it: the Clipboard API wants focus). */

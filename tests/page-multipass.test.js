@@ -8,7 +8,10 @@
 import { unzipSync } from 'fflate';
 import { PNG } from 'pngjs';
 import { describe, expect, test } from 'vitest';
-import { info, nextFrame, pixel, readPixels, withPage } from './page-helpers.js';
+import { info, nextFrame, pixel, readPixels, withPage, sharePageAcrossTests } from './page-helpers.js';
+
+// not a test of loading the page: the tests share one, brought to each view by open()
+sharePageAcrossTests();
 
 const SIZE = 'size=32x18&time=0'; // paused: each readPixels() draws exactly one frame
 

@@ -4,7 +4,10 @@
 // and VIEW are read by their names and Copy link writes the names.
 
 import { expect, test } from 'vitest';
-import { info, withPage } from './page-helpers.js';
+import { info, withPage, sharePageAcrossTests } from './page-helpers.js';
+
+// not a test of loading the page: the tests share one, brought to each view by open()
+sharePageAcrossTests();
 
 const SIZE = 'size=64x36&time=0&SAMPLES=1&BOUNCES=1';
 
