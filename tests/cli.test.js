@@ -41,6 +41,11 @@ const DERIVATIVES = `void mainImage(out vec4 fragColor, in vec2 fragCoord) {
     fragColor = vec4(abs(dFdx(v)) * 4.0, abs(dFdy(v)) * 4.0, fwidth(v), 1.0);
 }
 `;
+/** iFrame, iTime x 60 and iChannel0's blue, for --frame and --channel0. */
+const FRAMED = `void mainImage(out vec4 fragColor, in vec2 fragCoord) {
+    fragColor = vec4(float(iFrame) / 255.0, iTime * 60.0 / 255.0, texture(iChannel0, vec2(0.5)).b, 1.0);
+}
+`;
 /** iFrame and iTime in colour, for the recordings. */
 const CLOCK = `void mainImage(out vec4 fragColor, in vec2 fragCoord) {
     fragColor = vec4(float(iFrame) / 255.0, fract(iTime), fragCoord.x / iResolution.x, 1.0);
@@ -130,6 +135,29 @@ describe('shaderproof, installed from its tarball', () => {
     const raw = await renderRawShader(composeImageShader(WAVES).code, { width: 96, height: 54, uniforms: { iTime: 1.5, iMouse: mouse } });
     expect(raw.stage, raw.log).toBeUndefined();
     expect(sameImage(image, /** @type {any} */ (raw)), 'the render equals the Shadertoy-header render').toBe(true);
+  });
+
+  test('render --frame N draws frames 0..N (iFrame N, iTime N/60) with --channel0 an image file', async () => {
+    const solid = new PNG({ width: 4, height: 4 });
+    for (let i = 0; i < 16; i++) solid.data.set([40, 120, 200, 255], i * 4);
+    fs.writeFileSync(path.join(folder, 'solid.png'), PNG.sync.write(solid));
+    write('framed.glsl', FRAMED);
+    const out = await shaderproof([
+      'render',
+      'framed.glsl',
+      '--frame',
+      '3',
+      '--channel0',
+      'solid.png',
+      '--size',
+      '8x8',
+      '-o',
+      'framed.png',
+    ]);
+    expect(out.code, out.stderr).toBe(0);
+    const image = readPng(path.join(folder, 'framed.png'));
+    // red: iFrame; green: iTime x 60; blue: the channel's own blue
+    expect([...image.data.subarray(0, 4)]).toEqual([3, 3, 200, 255]);
   });
 
   test("render of the raytracer is the page's golden of the same view", async () => {

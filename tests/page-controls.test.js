@@ -5,10 +5,7 @@
 import { afterAll, describe, expect, test } from 'vitest';
 import { assertNotBlank, differingPixels, sameImage } from './harness/images.js';
 import { disconnect } from './harness/page.js';
-import { button, editorText, info, overlayText, readPixels, typeInEditor, withPage, sharePageAcrossTests } from './page-helpers.js';
-
-// not a test of loading the page: the tests share one, brought to each view by open()
-sharePageAcrossTests();
+import { button, editorText, info, overlayText, readPixels, typeInEditor, withPage } from './page-helpers.js';
 
 afterAll(disconnect);
 
