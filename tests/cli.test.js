@@ -15,6 +15,7 @@ import { afterAll, beforeAll, describe, expect, test } from 'vitest';
 import { formatImageError, imageError } from '../src/reference/error.js';
 import { renderReference } from '../src/reference/render.js';
 import { composeImageShader } from '../src/shadertoy/header.js';
+import { builtPage } from '../src/engine/page-server.js';
 import { GOLDEN_DIR, REPO_ROOT, SHADER_FILE } from './harness/config.js';
 import { readPng, sameImage } from './harness/images.js';
 import { disconnect, openPage } from './harness/page.js';
@@ -88,7 +89,9 @@ const write = (name, text) => {
 beforeAll(async () => {
   packed = fs.mkdtempSync(path.join(os.tmpdir(), 'shaderproof-pack-'));
   folder = fs.mkdtempSync(path.join(os.tmpdir(), 'shaderproof-user-'));
-  const { stdout } = await run('npm', ['pack', '--silent', '--pack-destination', packed], { cwd: REPO_ROOT });
+  // the harness built dist/ for this run (page-server.js): packed as it is, not built again
+  await builtPage();
+  const { stdout } = await run('npm', ['pack', '--silent', '--ignore-scripts', '--pack-destination', packed], { cwd: REPO_ROOT });
   const tarball = path.join(packed, stdout.trim().split('\n').at(-1) ?? '');
   fs.writeFileSync(path.join(folder, 'package.json'), JSON.stringify({ name: 'my-shaders', private: true }));
   // from npm's cache where it has the packages (npm ci filled it), else the registry

@@ -10,7 +10,7 @@ import { parseArgs } from 'node:util';
 import { runOpen } from './open.js';
 import { runRecord } from './record.js';
 import { outputFormat, renderShader, renderTiled, writeFloatImage, writeImage } from './render.js';
-import { CliError, startSession } from './session.js';
+import { CliError, shaderKind, startSession } from './session.js';
 import { runTest } from './corpus.js';
 import { UsageError, VIEW_FLAGS, readNumber, readViewOptions } from './view-options.js';
 import { io, oneShader, watchdog } from './io.js';
@@ -152,6 +152,7 @@ async function runRender({ values, positionals }) {
     throw new UsageError(`--tile ${tile}: the tile size must be even (the GPU shades 2x2 quads; an odd size would split them)`);
   if (tile !== null && (view.frame !== null || converge !== null || format === 'pfm'))
     throw new UsageError('--tile: a tiled still is a .png at --time');
+  shaderKind(file); // a file that is not a shader is said before any browser starts
   const started = Date.now();
   const session = await startSession({ gpu: values.gpu, ...watchdog(values.watchdog), say: io.err });
   try {

@@ -6,7 +6,7 @@ import fs from 'node:fs';
 import path from 'node:path';
 import { io, oneShader, watchdog } from './io.js';
 import { renderShader } from './render.js';
-import { startSession } from './session.js';
+import { shaderKind, startSession } from './session.js';
 import { UsageError, readNumber, readViewOptions } from './view-options.js';
 
 /** @param {number} done @param {number} total */
@@ -28,6 +28,7 @@ export async function runRecord({ values, positionals }) {
   const frames = values.frames === undefined ? 60 : readNumber(values.frames, '--frames', { min: 1, whole: true });
   const fps = values.fps === undefined ? 30 : readNumber(values.fps, '--fps', { min: 1 });
   const view = readViewOptions(values, { width: 640, height: 360 });
+  shaderKind(file); // a file that is not a shader is said before any browser starts
   const started = Date.now();
   const session = await startSession({ gpu: values.gpu, ...watchdog(values.watchdog), say: io.err });
   try {

@@ -65,10 +65,10 @@ export async function startSession({ gpu = false, hangMs = 5_000, compileHangMs 
 
   async function browser() {
     if (chromium) return chromium;
-    chromium = await startBrowser({ gpu, executablePath }).catch((error) => {
+    chromium = await startBrowser({ gpu, executablePath, probe: false }).catch((error) => {
       throw new CliError(error.message);
     });
-    mark('chromium launched, WebGL2 checked');
+    mark('chromium launched');
     return chromium;
   }
 
@@ -86,7 +86,13 @@ export async function startSession({ gpu = false, hangMs = 5_000, compileHangMs 
     await opened.setViewport({ width: 800, height: 600, deviceScaleFactor: 1 });
     const started = await drawView(opened, { baseUrl: server.baseUrl, query: `/?shader=${starter}&size=2x2&time=0`, fresh: true });
     if (started.error !== undefined) throw new CliError(`the page did not start: ${started.error}`);
-    mark('page loaded, first frame');
+    try {
+      const { renderer, version } = started.info;
+      (await browser()).verify(renderer ? { renderer, version } : null);
+    } catch (error) {
+      throw new CliError(error.message);
+    }
+    mark('page loaded, first frame, WebGL2 checked');
     return opened;
   }
 
@@ -104,6 +110,7 @@ export async function startSession({ gpu = false, hangMs = 5_000, compileHangMs 
     server,
     /** What draws: Chromium's version and the WebGL2 renderer (`label`: without its device id). */
     async environment() {
+      if (!page) page = await freshPage(); // the renderer is known once a page has drawn
       const { environment } = await browser();
       return { ...environment, label: rendererLabel(environment.renderer) };
     },

@@ -119,14 +119,38 @@ export function launchBrowser({ args = CHROME_ARGS, userDataDir, executablePath 
 }
 
 /**
+ * Throws unless `webgl` (what WebGL2 says it is, or null for no WebGL2) is what draws here:
+ * SwiftShader, or with `gpu` a hardware renderer.
+ * @param {{renderer: string, version: string} | null} webgl
+ * @param {{gpu: boolean, chromium: string, executablePath: string}} where
+ */
+export function checkWebGL(webgl, { gpu, chromium, executablePath }) {
+  if (!webgl) {
+    throw new Error(
+      `${chromium} (${executablePath}) has no WebGL2 with flags ${CHROME_ARGS.join(' ')}. ` +
+        'Every picture here needs SwiftShader WebGL2; without it a render would be blank.',
+    );
+  }
+  if (gpu && rendererKind(webgl.renderer) !== 'hardware') throw new Error(`WebGL2 renderer is "${webgl.renderer}", not a hardware GPU.`);
+  if (!gpu && !/swiftshader/i.test(webgl.renderer)) {
+    throw new Error(
+      `WebGL2 renderer is "${webgl.renderer}", not SwiftShader. The goldens are SwiftShader renders; ` +
+        'a GPU renders different pixels. Check that --use-angle=swiftshader is honoured by this Chromium.',
+    );
+  }
+}
+
+/**
  * Launches Chromium, checked to be SwiftShader WebGL2 (or with `gpu`, a hardware GPU: for the
  * benchmark's --gpu and the command line's, never for goldens), in a profile of its own that
  * close() removes. `environment` says what draws: the Chromium version and the WebGL2
  * renderer, as every output of the command line and the goldens' ENVIRONMENT.json name it.
- * @param {{gpu?: boolean, executablePath?: string}} [options]
- * @returns {Promise<{browser: import('puppeteer-core').Browser, environment: {chromium: string, renderer: string, webglVersion: string, gpu: boolean}, close: () => Promise<void>}>}
+ * With `probe: false` (and no `gpu`) WebGL2 is not asked on a page of its own (0.45 s here):
+ * the caller asks its own first page and hands the answer to verify(), which checks it and
+ * fills in `environment`.
+ * @param {{gpu?: boolean, executablePath?: string, probe?: boolean}} [options]
  */
-export async function startBrowser({ gpu = false, executablePath = findChrome() } = {}) {
+export async function startBrowser({ gpu = false, executablePath = findChrome(), probe = true } = {}) {
   const userDataDir = fs.mkdtempSync(path.join(os.tmpdir(), 'raytracer-chromium-'));
   const removeProfile = () => fs.rmSync(userDataDir, { recursive: true, force: true });
   let browser;
@@ -134,21 +158,13 @@ export async function startBrowser({ gpu = false, executablePath = findChrome() 
     const launch = (args, dataDir) => launchBrowser({ args, userDataDir: dataDir, executablePath });
     browser = gpu ? await launchOnGpu(launch, executablePath, userDataDir) : await launch(CHROME_ARGS, userDataDir);
     const chromium = await browser.version();
-    const webgl = await probeWebGL(browser);
-    if (!webgl) {
-      throw new Error(
-        `${chromium} (${executablePath}) has no WebGL2 with flags ${CHROME_ARGS.join(' ')}. ` +
-          'Every picture here needs SwiftShader WebGL2; without it a render would be blank.',
-      );
-    }
-    if (gpu && rendererKind(webgl.renderer) !== 'hardware') throw new Error(`WebGL2 renderer is "${webgl.renderer}", not a hardware GPU.`);
-    if (!gpu && !/swiftshader/i.test(webgl.renderer)) {
-      throw new Error(
-        `WebGL2 renderer is "${webgl.renderer}", not SwiftShader. The goldens are SwiftShader renders; ` +
-          'a GPU renders different pixels. Check that --use-angle=swiftshader is honoured by this Chromium.',
-      );
-    }
-    const environment = { chromium, renderer: webgl.renderer, webglVersion: webgl.version, gpu };
+    const environment = { chromium, renderer: '', webglVersion: '', gpu };
+    /** @param {{renderer: string, version: string} | null} webgl */
+    const verify = (webgl) => {
+      checkWebGL(webgl, { gpu, chromium, executablePath });
+      Object.assign(environment, { renderer: webgl?.renderer, webglVersion: webgl?.version });
+    };
+    if (probe || gpu) verify(await probeWebGL(browser));
     const opened = browser;
     const close = async () => {
       try {
@@ -157,7 +173,7 @@ export async function startBrowser({ gpu = false, executablePath = findChrome() 
         removeProfile();
       }
     };
-    return { browser, environment, close };
+    return { browser, environment, close, verify };
   } catch (error) {
     if (browser) await closeBrowser(browser).catch(() => {});
     removeProfile();

@@ -1,7 +1,7 @@
 // The page's server for a test run (setup.js starts it once; scripts through withHarness).
 //
-// By default the page the tests load is the production build (`vite build` into a temporary
-// folder at the start of the run, ~2 s), served by `vite preview`: one bundle, a worker chunk and
+// By default the page the tests load is the production build (`vite build` into dist/ at the
+// start of the run, ~2 s), served by `vite preview`: one bundle, a worker chunk and
 // the styles instead of the dev server's ~100 modules transformed one by one. A page load then
 // takes ~0.5 s to its first frame where the dev server took ~1.3 s (measured: 5 loads of
 // examples/pattern.glsl at 32x18 each way), and ~220 loads a run add up. It is also the page a
@@ -14,7 +14,6 @@
 
 import fs from 'node:fs';
 import net from 'node:net';
-import os from 'node:os';
 import path from 'node:path';
 import { REPO_ROOT } from './config.js';
 import { harnessRoutes } from './routes.js';
@@ -64,42 +63,26 @@ async function startDevServer({ watch = false } = {}) {
 }
 
 /**
- * The production build, made now into a temporary folder and served by `vite preview` on a free
- * loopback port; close() stops the server and removes the folder.
+ * The production build, made now into dist/ (as `npm run build` makes it: the command line and
+ * its packed tarball serve the same folder, so tests/cli.test.js packs it without building it
+ * again) and served by `vite preview` on a free loopback port; close() stops the server.
  * @returns {Promise<{baseUrl: string, close: () => Promise<void>}>}
  */
 async function startBuiltServer() {
   const { build, preview } = await import('vite');
-  const outDir = fs.mkdtempSync(path.join(os.tmpdir(), 'raytracer-page-'));
-  const removeBuild = () => fs.rmSync(outDir, { recursive: true, force: true });
   try {
-    await build({ configFile: configFile(), logLevel: 'warn', build: { outDir, emptyOutDir: true } });
+    await build({ configFile: configFile(), logLevel: 'warn' });
   } catch (error) {
-    removeBuild();
     throw new Error(`The page did not build (vite build, as npm run build does): ${error.message}`, { cause: error });
   }
   const port = await freePort();
-  let server;
-  try {
-    server = await preview({
-      configFile: configFile(),
-      logLevel: 'warn',
-      build: { outDir },
-      preview: { host: '127.0.0.1', port, strictPort: true, open: false },
-      plugins: [harnessRoutes()],
-    });
-  } catch (error) {
-    removeBuild();
-    throw error;
-  }
-  const close = async () => {
-    try {
-      await server.close();
-    } finally {
-      removeBuild();
-    }
-  };
-  return { baseUrl: `http://127.0.0.1:${port}`, close };
+  const server = await preview({
+    configFile: configFile(),
+    logLevel: 'warn',
+    preview: { host: '127.0.0.1', port, strictPort: true, open: false },
+    plugins: [harnessRoutes()],
+  });
+  return { baseUrl: `http://127.0.0.1:${port}`, close: () => server.close() };
 }
 
 /** The page server of a test run: the build (or the dev server with RAYTRACER_TEST_SERVER=dev). */
