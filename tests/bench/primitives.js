@@ -151,6 +151,6 @@ await withHarness(async (context) => {
     return;
   }
   fs.writeFileSync(path.join(REPO_ROOT, 'tests', 'bench', 'primitives.md'), markdown + '\n');
-  replaceMarkedSection(path.join(REPO_ROOT, 'README.md'), 'primitives', markdown);
-  console.log('wrote tests/bench/primitives.md and the table in README.md');
+  replaceMarkedSection(path.join(REPO_ROOT, 'docs', 'numerics.md'), 'primitives', markdown);
+  console.log('wrote tests/bench/primitives.md and the table in docs/numerics.md');
 });

@@ -71,7 +71,7 @@ const OUTPUT = gpu
       markdown: 'results.md',
       chart: 'chart.svg',
       readme: true,
-      written: 'tests/bench/results.json, results.md, chart.svg and the table in README.md',
+      written: 'tests/bench/results.json, results.md, chart.svg and the table in docs/benchmark.md',
     };
 /** withHarness, on the GPU with --gpu (its renderer printed); with no hardware GPU, a clear stop. */
 async function withBenchHarness(body) {
@@ -330,7 +330,7 @@ async function main() {
     ...sceneTargets.map((t) => `- ${t.met ? 'met' : '**missed**'}: ${t.text}`),
   ].join('\n');
   fs.writeFileSync(path.join(BENCH_DIR, OUTPUT.markdown), markdown + '\n');
-  if (OUTPUT.readme) replaceMarkedSection(path.join(REPO_ROOT, 'README.md'), 'bench', markdown);
+  if (OUTPUT.readme) replaceMarkedSection(path.join(REPO_ROOT, 'docs', 'benchmark.md'), 'bench', markdown);
   console.log(`\n${markdown}\n\nwrote ${OUTPUT.written}`);
 }
 

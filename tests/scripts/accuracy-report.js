@@ -90,8 +90,8 @@ async function main() {
       row('', `adaptive (${pct(r.adaptive.extraSampleFraction)})`, r.adaptive.sameRays, r.adaptive.converged),
     ]),
   ].join('\n');
-  replaceMarkedSection(path.join(REPO_ROOT, 'README.md'), 'accuracy', table);
-  console.log(`\n${table}\n\nwrote tests/accuracy/results.json and the accuracy table in README.md`);
+  replaceMarkedSection(path.join(REPO_ROOT, 'docs', 'numerics.md'), 'accuracy', table);
+  console.log(`\n${table}\n\nwrote tests/accuracy/results.json and the accuracy table in docs/numerics.md`);
 }
 
 await main();
