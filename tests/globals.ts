@@ -5,7 +5,7 @@
 // here is an error. JSDoc reaches its types as import('./globals.js').
 
 /** Base64 RGBA8 pixels, rows top to bottom, as the page hands them over page.evaluate(). */
-export interface Base64Frame {
+interface Base64Frame {
   width: number;
   height: number;
   data: string;
@@ -52,14 +52,14 @@ export interface RaytracerInfo {
 }
 
 /** What setSource() and loadShader() resolve with. */
-export interface CompileOutcome {
+interface CompileOutcome {
   ok: boolean;
   /** the compile error's report (or message) when !ok */
   error?: string;
 }
 
 /** What record() resolves with: the recording's settings and the file as base64. */
-export type RecordingResult = Omit<import('../src/page/io/recorder.js').Recording, 'bytes'> & { data: string };
+type RecordingResult = Omit<import('../src/page/io/recorder.js').Recording, 'bytes'> & { data: string };
 
 /** window.raytracer: the page's automation hook, installed by src/page/automation.js (see its header). */
 export interface RaytracerHook {
@@ -132,13 +132,13 @@ export interface RaytracerHook {
 export type Readout = import('../src/page/inspect/inspector.js').Readout;
 
 /** What compareWithFloat64() resolves with: a ComparisonResult without its images. */
-export type ComparisonSummary = Pick<
+type ComparisonSummary = Pick<
   import('../src/page/inspect/compare.js').ComparisonResult,
   'figures' | 'width' | 'height' | 'extraSampleShare' | 'frame' | 'ms' | 'caveat'
 >;
 
 /** window.__benchmark: the benchmark's programs, set up in its raw WebGL2 page (tests/bench/timer.js). */
-export interface BenchmarkPage {
+interface BenchmarkPage {
   /** Draws shader `i` once, with a 1-pixel readPixels: the time it took, in ms. */
   frame(i: number): number;
   /** Draws shader `i` once: its pixels as base64 RGBA8, rows top to bottom. */

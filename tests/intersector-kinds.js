@@ -27,7 +27,7 @@ export const U = 2 ** -24;
 export const K = 32;
 // Near tangency a root is ill-conditioned: an error e in the discriminant (~u S^2) moves t by
 // about sqrt(e) = S sqrt(u). 'agree' cases, which include tangent rays, are held to that.
-export const tangentTolerance = (S) => K * U * S + Math.sqrt(K * U) * S;
+const tangentTolerance = (S) => K * U * S + Math.sqrt(K * U) * S;
 // A normal is a difference of positions divided by a length: its angle error is about the
 // position error (K u S) over the radius of curvature there (or exactly 0 for flat faces).
 
@@ -60,7 +60,7 @@ export function caseScale(c) {
 }
 
 /** The radius of curvature that turns a position error into a normal-angle error. */
-export function curvatureRadius(c) {
+function curvatureRadius(c) {
   if (c.kind === 'sphere') return c.params[3];
   if (c.kind === 'cone') return Math.max(c.params[6], c.params[7]);
   if (c.kind === 'cylinder') return c.params[6];
@@ -73,7 +73,7 @@ export function curvatureRadius(c) {
  * Whether the float64 decision (hit or miss) changes when the ray origin moves by the shader's
  * own rounding (K u S) in any axis direction: then float32 cannot be expected to resolve it.
  */
-export function inAmbiguityBand(c, S) {
+function inAmbiguityBand(c, S) {
   const hit = reference(c)[0] > 0;
   const step = K * U * S;
   for (let axis = 0; axis < 3; axis++) {
@@ -98,7 +98,7 @@ vec4 intersectKind(int kind, vec3 ro, vec3 rd, vec4 p, vec4 q, float tMax) {
 }
 `;
 
-export const TEST_MAIN = `${GLSL_CALLS}
+const TEST_MAIN = `${GLSL_CALLS}
 uniform highp sampler2D rayTable;  // 4 texels a case: (ro, kind), (rd, tMax), params 0-3, params 4-7
 void main() {
     int i = int(gl_FragCoord.x);

@@ -183,7 +183,7 @@ export function pixel(image, x, y) {
 
 // ---- public/examples/inputs.glsl --------------------------------------------------------------
 
-export const DATA = Object.freeze({
+const DATA = Object.freeze({
   iFrame: 0,
   mouseX: 1,
   mouseY: 2,
@@ -201,7 +201,7 @@ export const DATA = Object.freeze({
   fragX2: 14,
   fragY2: 15,
 });
-export const CHECKS = [
+const CHECKS = [
   'iResolution.z == 1',
   'fragCoord at pixel centres',
   'fragCoord inside the canvas',
@@ -224,7 +224,7 @@ export function dataAt(image, glX, glY) {
 }
 
 /** Data cell `k`, read at its centre. */
-export function dataCell(image, k) {
+function dataCell(image, k) {
   return dataAt(image, k * CELL + CELL / 2, CELL / 2);
 }
 
@@ -328,7 +328,7 @@ export async function errorMarkerLines(page) {
 }
 
 /** The line the editor's cursor is on (its highlighted line number). */
-export async function cursorLine(page) {
+async function cursorLine(page) {
   return page.$eval('.cm-lineNumbers .cm-activeLineGutter', (e) => Number(e.textContent));
 }
 

@@ -18,7 +18,7 @@ import { CliError, startSession } from './session.js';
 import { UsageError } from './view-options.js';
 
 /** "i/n" → {index (0-based), count}. @param {string | undefined} text */
-export function readShard(text) {
+function readShard(text) {
   if (text === undefined) return { index: 0, count: 1 };
   const match = /^(\d+)\/(\d+)$/.exec(text);
   const [i, n] = match ? [Number(match[1]), Number(match[2])] : [0, 0];

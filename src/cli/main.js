@@ -15,7 +15,7 @@ import { runTest } from './corpus.js';
 import { UsageError, VIEW_FLAGS, readNumber, readViewOptions } from './view-options.js';
 import { io, oneShader, watchdog } from './io.js';
 
-export const NAME = 'shaderproof';
+const NAME = 'shaderproof';
 
 const COMMON_FLAGS = /** @type {const} */ ({
   help: { type: 'boolean', short: 'h' },
@@ -35,7 +35,7 @@ const COMMON_HELP = `  --gpu                 draw on this machine's GPU instead 
                         a frame, 30 s for the first frame, which SwiftShader compiles)
   -h, --help            this help`;
 
-export const VERBS = {
+const VERBS = {
   render: {
     summary: 'draw one still of a shader into a PNG',
     usage: `${NAME} render SHADER -o OUT.png [options]

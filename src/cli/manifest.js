@@ -19,15 +19,15 @@ import path from 'node:path';
 import { CliError } from './session.js';
 import { readViewOptions } from './view-options.js';
 
-export const MANIFEST = 'shaderproof.json';
+const MANIFEST = 'shaderproof.json';
 export const REFERENCE_DIR = '__references__';
 /** Folders that are never cases: references, dot-folders, installed packages. */
 const SKIPPED_DIRS = /^(\.|__|node_modules$)/;
 
 /** The default tolerance: SwiftShader draws the same bytes on every machine with the same Chromium. */
-export const DEFAULT_TOLERANCE = Object.freeze({ threshold: 0, maxDiffPixels: 0 });
+const DEFAULT_TOLERANCE = Object.freeze({ threshold: 0, maxDiffPixels: 0 });
 /** A half-size render is a different sampling of the picture: close, not equal. */
-export const DEFAULT_HALF_SIZE = Object.freeze({ threshold: 0.1, maxDiffFraction: 0.05 });
+const DEFAULT_HALF_SIZE = Object.freeze({ threshold: 0.1, maxDiffFraction: 0.05 });
 const DEFAULT_SIZE = { width: 320, height: 180 };
 
 const CASE_KEYS = ['size', 'time', 'frame', 'mouse', 'set', 'channels', 'tolerance', 'checks', 'skip'];

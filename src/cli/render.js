@@ -13,7 +13,7 @@ import { CliError, shaderKind } from './session.js';
 import { UsageError, viewQuery } from './view-options.js';
 
 /** Shadertoy's nominal frame rate: frame N is drawn at iTime N / 60. */
-export const FRAME_RATE = 60;
+const FRAME_RATE = 60;
 
 /**
  * Draws the shader `file` at `view` and returns the image and what the page said.
@@ -133,7 +133,7 @@ async function converged(page, samples, file) {
  * @param {string} message
  * @param {string} file
  */
-export function userMessage(message, file) {
+function userMessage(message, file) {
   const name = path.basename(file);
   const escaped = name.replace(/[.*+?^${}()|[\]\\]/g, '\\$&');
   return message.replace(new RegExp(`(^|\\n)${escaped}:(\\d+):`, 'g'), `$1${file}:$2:`);
@@ -145,7 +145,7 @@ export function userMessage(message, file) {
  * library writes OpenEXR from plain Node without native code; PFM keeps every float as is.
  * @param {{width: number, height: number, data: Float32Array}} image RGBA rows top to bottom
  */
-export function pfmBytes({ width, height, data }) {
+function pfmBytes({ width, height, data }) {
   const header = Buffer.from(`PF\n${width} ${height}\n-1.0\n`, 'ascii');
   const body = Buffer.alloc(width * height * 12);
   for (let y = 0; y < height; y++)

@@ -21,7 +21,7 @@ export const VIEW_FLAGS = /** @type {const} */ ({
 });
 
 /** "WxH" → {width, height}, whole and positive. @param {string} text @param {string} flag */
-export function readSize(text, flag = '--size') {
+function readSize(text, flag = '--size') {
   const match = /^(\d+)x(\d+)$/i.exec(text.trim());
   const [width, height] = match ? [Number(match[1]), Number(match[2])] : [0, 0];
   if (!(width >= 1 && height >= 1)) throw new UsageError(`${flag} ${text}: expected WIDTHxHEIGHT in pixels, such as 640x360`);

@@ -57,7 +57,7 @@ export function rendererLabel(renderer) {
 }
 
 /** Opens a blank page and asks WebGL2 who it is. */
-export async function probeWebGL(browser) {
+async function probeWebGL(browser) {
   const page = await browser.newPage();
   try {
     return await page.evaluate(() => {
@@ -124,7 +124,7 @@ export function launchBrowser({ args = CHROME_ARGS, userDataDir, executablePath 
  * @param {{renderer: string, version: string} | null} webgl
  * @param {{gpu: boolean, chromium: string, executablePath: string}} where
  */
-export function checkWebGL(webgl, { gpu, chromium, executablePath }) {
+function checkWebGL(webgl, { gpu, chromium, executablePath }) {
   if (!webgl) {
     throw new Error(
       `${chromium} (${executablePath}) has no WebGL2 with flags ${CHROME_ARGS.join(' ')}. ` +

@@ -19,10 +19,10 @@ import http from 'node:http';
 import path from 'node:path';
 import { fileURLToPath } from 'node:url';
 
-export const PACKAGE_ROOT = fileURLToPath(new URL('../..', import.meta.url));
-export const BUILT_PAGE_DIR = path.join(PACKAGE_ROOT, 'dist');
-export const FILES_ROUTE = '/__files/';
-export const EVENTS_ROUTE = '/__events';
+const PACKAGE_ROOT = fileURLToPath(new URL('../..', import.meta.url));
+const BUILT_PAGE_DIR = path.join(PACKAGE_ROOT, 'dist');
+const FILES_ROUTE = '/__files/';
+const EVENTS_ROUTE = '/__events';
 
 const TYPES = {
   '.html': 'text/html; charset=utf-8',

@@ -12,7 +12,7 @@ export function readPng(file) {
 }
 
 /** The PNG file's bytes of an image. @param {{width: number, height: number, data: Uint8Array}} image */
-export function pngBytes({ width, height, data }) {
+function pngBytes({ width, height, data }) {
   const png = new PNG({ width, height });
   Buffer.from(data.buffer, data.byteOffset, data.byteLength).copy(png.data);
   return PNG.sync.write(png, { colorType: 6 });

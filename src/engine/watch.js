@@ -25,7 +25,7 @@ export const CLOSE_TIMEOUT_MS = 10_000;
  * Asking a page what it was doing, after a failed wait: a page that answers at all does so in
  * milliseconds; after 2 s its script is taken to be stuck.
  */
-export const DESCRIBE_TIMEOUT_MS = 2_000;
+const DESCRIBE_TIMEOUT_MS = 2_000;
 
 /** The page's methods that wait on it, each given the timeout and the crash watch. */
 const WAITS = ['evaluate', 'evaluateHandle', 'waitForFunction', 'waitForSelector', 'goto', 'reload', '$eval', '$$eval'];

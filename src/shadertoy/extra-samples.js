@@ -1,8 +1,8 @@
 // Reading the raytracer's "Extra samples" debug view (VIEW in shaders/raytrace.glsl): the pixels
 // that took extra samples are a pure colour that names the test that marked them (EDGE_COLOURS),
-// every other pixel is grey. Shared by the benchmark (what fraction took them, and by which
-// test), the same-ray float64 reference (which pixels to sample as the shader did) and the page's
-// inspector and comparison (which draw the view with the path probe's compile).
+// every other pixel is grey. Shared by the benchmark (what fraction took them), the same-ray
+// float64 reference (which pixels to sample as the shader did) and the page's inspector and
+// comparison (which draw the view with the path probe's compile).
 
 /** The shader's debug view of the pixels that took extra samples (VIEW = "Extra samples"; views.test.js checks the number). */
 export const EXTRA_SAMPLES_VIEW = Object.freeze({ VIEW: 5 });
@@ -22,7 +22,7 @@ export function extraSamplesValues(controls) {
 }
 
 /** The debug view's colours, by the test that marked the pixel (the shader's mainImage). */
-export const EDGE_COLOURS = Object.freeze({
+const EDGE_COLOURS = Object.freeze({
   silhouette: [255, 0, 255],
   shadow: [255, 255, 0],
   reflection: [0, 255, 255],
@@ -35,16 +35,6 @@ export function edgeKind(data, i) {
   for (const [kind, [r, g, b]] of Object.entries(EDGE_COLOURS))
     if (data[i * 4] === r && data[i * 4 + 1] === g && data[i * 4 + 2] === b) return kind;
   return null;
-}
-
-/** How many pixels each test marked. @returns {Record<string, number>} */
-export function edgeKindCounts({ width, height, data }) {
-  const counts = Object.fromEntries(Object.keys(EDGE_COLOURS).map((k) => [k, 0]));
-  for (let i = 0; i < width * height; i++) {
-    const kind = edgeKind(data, i);
-    if (kind) counts[kind]++;
-  }
-  return counts;
 }
 
 /**

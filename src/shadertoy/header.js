@@ -113,7 +113,7 @@ function formatDefineValue(value, type) {
  * @param {any} value a number, a boolean, or an array of numbers
  * @param {string} type
  */
-export function glslLiteral(value, type) {
+function glslLiteral(value, type) {
   if (type === 'bool') return value ? 'true' : 'false';
   if (type === 'int') return String(Math.round(value));
   if (type === 'float') return floatLiteral(value);
@@ -169,7 +169,7 @@ export function composeImageShader(source, { hostBlock = '' } = {}) {
 // (MakeHeader_Image/Buffer).
 
 /** Shadertoy's `main` for a buffer pass: the colour stored as mainImage left it, alpha included. */
-export const SHADERTOY_BUFFER_FOOTER = `
+const SHADERTOY_BUFFER_FOOTER = `
 void main(void) {
     vec4 color = vec4(1e20);
     mainImage(color, gl_FragCoord.xy);

@@ -13,8 +13,8 @@
 //   48, the arrows 37–40, space 32. The texture is created nearest/clamp (TEXFMT.C1I8).
 
 /** The texture's size: 256 keys by 3 rows. */
-export const KEYBOARD_WIDTH = 256;
-export const KEYBOARD_HEIGHT = 3;
+const KEYBOARD_WIDTH = 256;
+const KEYBOARD_HEIGHT = 3;
 export const ROW_HELD = 0;
 export const ROW_PRESSED = 1;
 export const ROW_TOGGLED = 2;

@@ -221,7 +221,7 @@ export function buffersNeedingMipmaps(model) {
  * @param {Channel | null} channel
  * @returns {'2D' | 'Cube' | '3D'}
  */
-export function samplerTypeOf(channel) {
+function samplerTypeOf(channel) {
   if (channel?.kind === 'cubemap') return 'Cube';
   if (channel?.kind === 'volume') return '3D';
   return '2D';

@@ -16,13 +16,13 @@ import { KINDS, f32, judge, reference, runCases, shaderSource } from '../interse
 export const PRIMITIVE_KINDS = Object.keys(KINDS);
 
 /** The iq-style peer of one primitive (kind as in KINDS). */
-export const iqPeer = (kind) => fs.readFileSync(new URL(`./peers/iq/${kind}.glsl`, import.meta.url), 'utf8');
+const iqPeer = (kind) => fs.readFileSync(new URL(`./peers/iq/${kind}.glsl`, import.meta.url), 'utf8');
 
 /** The project's shader with the iq peers of `kinds` appended (their #defines then rename the calls that follow). */
 export const withIqPeers = (kinds = PRIMITIVE_KINDS, source = shaderSource()) => [source, ...kinds.map(iqPeer)].join('\n');
 
 /** The hard cases of one primitive, every number rounded to float32 (as tests/intersectors.test.js does). */
-export const hardCases = (kind) =>
+const hardCases = (kind) =>
   INTERSECTOR_CASES.filter((c) => c.kind === kind).map((c) => ({ ...c, ro: f32(c.ro), rd: f32(c.rd), params: f32(c.params) }));
 
 /**
@@ -30,7 +30,7 @@ export const hardCases = (kind) =>
  * hits, and leaves the solid there (its outward normal points along the ray). The article's forms
  * say they "only work for a ray with origin outside of the primitive": the table counts these apart.
  */
-export function startsInside(c) {
+function startsInside(c) {
   const want = reference(c);
   return want[0] > 0 && c.rd[0] * want[1] + c.rd[1] * want[2] + c.rd[2] * want[3] > 0;
 }
@@ -41,7 +41,7 @@ export function startsInside(c) {
  * is null when right, else what was wrong first: 'hit/miss', 't', 'normal' or 'NaN'.
  * @returns {{reason: string | null, tTransversal: number}}
  */
-export function verdictOf(c, got) {
+function verdictOf(c, got) {
   const verdict = judge(c, got);
   const hit = got[0] > 0;
   const reason =

@@ -155,7 +155,7 @@ export function expectImagesMatch(
 }
 
 /** A sentence about the environment, if it is not the one the goldens were made in. */
-export function environmentNote(current) {
+function environmentNote(current) {
   if (!current || !fs.existsSync(ENVIRONMENT_FILE)) return '';
   let recorded;
   try {

@@ -6,7 +6,7 @@ import { loadImage } from '../io/shader-loader.js';
 
 /** @typedef {import('./render-client.js').RenderClient} RenderClient */
 
-export const CHANNEL_COUNT = 4;
+const CHANNEL_COUNT = 4;
 
 export class Channels {
   /** @param {RenderClient} gpu */

@@ -92,7 +92,7 @@ function adjusted(control, raw, value) {
  * @param {Record<string, unknown>} values
  * @returns {Record<string, unknown>}
  */
-export function changedValues(controls, values) {
+function changedValues(controls, values) {
   const defaults = controlDefaults(controls);
   return Object.fromEntries(Object.entries(values).filter(([name, v]) => JSON.stringify(v) !== JSON.stringify(defaults[name])));
 }

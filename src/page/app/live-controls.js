@@ -7,7 +7,7 @@
 // and goes back to the uniform form (kept compiled: renderer.js) as soon as one moves.
 
 /** How long the live controls must rest before the shader is recompiled with them as constants. */
-export const SPECIALIZE_AFTER_MS = 400;
+const SPECIALIZE_AFTER_MS = 400;
 
 export class LiveControlForm {
   /** @param {() => void} onRest called once the controls have rested: compile the constant form */

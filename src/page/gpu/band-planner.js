@@ -15,9 +15,9 @@
 // rows 2k and 2k+1. A band edge between the two rows of a quad would change those pixels.
 
 /** A band's draw should take about this long: the longest a change waits for the band in flight. */
-export const BAND_BUDGET_MS = 100;
+const BAND_BUDGET_MS = 100;
 /** The first band of a shader not timed yet: thin, so that a very heavy one shows its cost soon. */
-export const FIRST_BAND_ROWS = 8;
+const FIRST_BAND_ROWS = 8;
 
 export class BandPlanner {
   /** @param {number} [budgetMs] */

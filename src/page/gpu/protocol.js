@@ -113,7 +113,7 @@ import { ShaderCompileError, WebGL2UnavailableError } from './errors.js';
 /** An error as it crosses: enough to make it again on the other side. @typedef {{name: string, message: string, report?: string, messages?: any[]}} WireError */
 
 /** @param {any} error @returns {WireError} */
-export function toWire(error) {
+function toWire(error) {
   return { name: error?.name ?? 'Error', message: error?.message ?? String(error), report: error?.report, messages: error?.messages };
 }
 

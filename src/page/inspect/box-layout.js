@@ -27,12 +27,12 @@ export function overlapArea(a, b) {
 }
 
 /** Whether two rectangles come closer than `gap`. @param {Rect} a @param {Rect} b */
-export function overlaps(a, b, gap = 0) {
+function overlaps(a, b, gap = 0) {
   return a.left < b.right + gap && b.left < a.right + gap && a.top < b.bottom + gap && b.top < a.bottom + gap;
 }
 
 /** A box of `width` x `height` in a corner of `area`. @param {Rect} area @param {string} corner */
-export function cornerRect(area, corner, width, height) {
+function cornerRect(area, corner, width, height) {
   const left = corner.endsWith('left') ? area.left : area.right - width;
   const top = corner.startsWith('top') ? area.top : area.bottom - height;
   return { left, top, right: left + width, bottom: top + height };
@@ -44,7 +44,7 @@ export function cornerRect(area, corner, width, height) {
  * @param {{area: Rect, boxes: Array<{width: number, height: number, corners: string[], current: string | null}>, pin: Rect | null, avoid: Rect[]}} question
  * @returns {Array<{corner: string, rect: Rect}> | null}
  */
-export function chooseCorners({ area, boxes, pin, avoid }) {
+function chooseCorners({ area, boxes, pin, avoid }) {
   /** @type {{cost: number, placed: Array<{corner: string, rect: Rect}>} | null} */
   let best = null;
   const search = (/** @type {number} */ k, /** @type {Array<{corner: string, rect: Rect}>} */ placed, /** @type {number} */ cost) => {

@@ -27,7 +27,7 @@ export function scalePosition(steps) {
 }
 
 /** The colour at `t` in 0 .. 1. @param {number} t @returns {number[]} */
-export function colorAt(t) {
+function colorAt(t) {
   const x = Math.min(1, Math.max(0, t)) * (STOPS.length - 1);
   const i = Math.min(STOPS.length - 2, Math.floor(x));
   const f = x - i;

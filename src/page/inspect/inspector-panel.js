@@ -11,7 +11,7 @@ import { element } from '../ui/dom.js';
 /** @typedef {import('./inspector.js').Readout} Readout */
 
 /** A float as float32 holds it: 7 significant digits; very large or small ones in exponent form. @param {number} v */
-export function formatFloat(v) {
+function formatFloat(v) {
   if (!Number.isFinite(v)) return String(v);
   if (v === 0) return '0';
   const a = Math.abs(v);

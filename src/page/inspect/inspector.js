@@ -31,7 +31,7 @@ const SCENE_OBJECTS = ['cone', 'cylinder', 'torus'];
  * @param {number} id
  * @param {Record<string, any>} values the controls (SCENE picks the new object)
  */
-export function objectName(id, values) {
+function objectName(id, values) {
   if (id === 3) return SCENE_OBJECTS[values.SCENE ?? 0] ?? `object ${id}`;
   return OBJECTS[id] ?? `object ${id}`;
 }

@@ -20,7 +20,7 @@ import { pathProbeHostBlock, pathProbeProject } from '../../shadertoy/path-probe
  * its frames adds a jittered sample to a buffer, and the picture is their mean, which no one ray
  * path (and no one float64 colour) describes.
  */
-export const CONVERGING =
+const CONVERGING =
   'the path and the float64 colour are of one frame of the raytracer, not of the mean that "Converge when still" sums: turn that off (Controls → View) to see them';
 
 export class ProbeProgram {

@@ -5,7 +5,7 @@
 const EDITED = ' (edited)';
 
 /** A name without its folders. @param {string} name */
-export function baseName(name) {
+function baseName(name) {
   return name.slice(name.lastIndexOf('/') + 1);
 }
 

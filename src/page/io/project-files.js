@@ -9,14 +9,11 @@ import { fromShadertoyJson, toShadertoyJson } from '../../shadertoy/multipass-js
 /** @typedef {{name: string, code: string}} Tab */
 /** @typedef {{model: MultipassShader, info: Record<string, any> | null, notes: string[]}} LoadedShader */
 
-/** The tab names in the order the editor shows them (the site's order). */
-export const TAB_ORDER = Object.freeze(['Common', ...BUFFER_NAMES.map(bufferPassName), 'Image']);
-
 /**
  * Whether a model is a plain single-pass shader: no Common tab, no buffer (its Image tab is all).
  * @param {MultipassShader} model
  */
-export function isSinglePass(model) {
+function isSinglePass(model) {
   return model.common === null && model.passes.every((p) => p.kind === 'image');
 }
 

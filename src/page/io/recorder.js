@@ -61,7 +61,7 @@ const nextTask = () => new Promise((resolve) => setTimeout(resolve, 0));
  * @param {{width: number, height: number}} canvas the default size
  * @param {number} maxSide the GPU's limit
  */
-export function recordSettings(request, canvas, maxSide) {
+function recordSettings(request, canvas, maxSide) {
   /** @type {'webm' | 'png'} */
   const format = request.format === 'png' ? 'png' : 'webm';
   const number = (value, fallback) => (Number.isFinite(Number(value)) && Number(value) > 0 ? Number(value) : fallback);

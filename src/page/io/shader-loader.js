@@ -102,7 +102,7 @@ export async function loadImage(source, { timeoutMs = TIMEOUTS.loadMs } = {}) {
 }
 
 /** @type {ImageBitmapOptions} */
-export const IMAGE_DECODING = { imageOrientation: 'flipY', colorSpaceConversion: 'none', premultiplyAlpha: 'none' };
+const IMAGE_DECODING = { imageOrientation: 'flipY', colorSpaceConversion: 'none', premultiplyAlpha: 'none' };
 
 const SHADER_EXTENSIONS = /\.(glsl|frag|fs|fsh|txt|shader)$/i;
 

@@ -68,7 +68,7 @@ export async function encodeSource(source) {
  * base64url, or data that does not inflate to UTF-8 (most often a link cut short).
  * @param {string} encoded
  */
-export async function decodeSource(encoded) {
+async function decodeSource(encoded) {
   let bytes;
   try {
     bytes = fromBase64Url(encoded);

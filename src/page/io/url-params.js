@@ -22,9 +22,9 @@
 import { MAX_PIXELS, MAX_SCALE, MAX_SIZE, MIN_SCALE, clampSize } from '../app/canvas-size.js';
 
 /** The smallest cap= that caps; cap=0 means no cap, as the panel's "No cap". */
-export const MIN_CAP = 16;
-export const MAX_SPEED = 16;
-export const MAX_TIME = 1e6;
+const MIN_CAP = 16;
+const MAX_SPEED = 16;
+const MAX_TIME = 1e6;
 const MAX_MOUSE = 1e6;
 export const CHANNEL_PARAMS = ['iChannel0', 'iChannel1', 'iChannel2', 'iChannel3'];
 
@@ -39,7 +39,7 @@ function finiteNumbers(text) {
  * @param {string} base
  * @returns {{url: string, why?: undefined} | {url: null, why: string}}
  */
-export function sameOriginUrl(value, base) {
+function sameOriginUrl(value, base) {
   let url;
   try {
     url = new URL(value, base);

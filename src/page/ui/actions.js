@@ -14,7 +14,7 @@ import { fileStem, jsonFileName, screenshotFileName, tabFileName } from '../io/f
  * @param {HTMLElement} element
  * @returns {Promise<boolean>} whether the page is fullscreen afterwards
  */
-export async function toggleFullscreen(element) {
+async function toggleFullscreen(element) {
   try {
     if (document.fullscreenElement) await document.exitFullscreen();
     else await element.requestFullscreen({ navigationUI: 'hide' });

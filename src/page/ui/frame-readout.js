@@ -30,7 +30,7 @@ const REFRESH_MS = 250;
  */
 
 /** Frames drawn per second of the page's clock, over the last RATE_WINDOW_MS. */
-export class FrameRate {
+class FrameRate {
   constructor() {
     /** @type {number[]} */
     this._times = [];

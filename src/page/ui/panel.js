@@ -10,7 +10,7 @@ import { controlApplies } from '../../shadertoy/controls.js';
 const COMPONENTS = ['x', 'y', 'z', 'w'];
 
 /** Longer side of the drawing buffer, in device pixels (0: no cap). */
-export const CAP_CHOICES = {
+const CAP_CHOICES = {
   'No cap': 0,
   '3840 px': 3840,
   '2560 px': 2560,
@@ -20,7 +20,7 @@ export const CAP_CHOICES = {
   '640 px': 640,
   '320 px': 320,
 };
-export const SCREENSHOT_CHOICES = {
+const SCREENSHOT_CHOICES = {
   'Canvas size': 'current',
   '2× canvas': 'double',
   '1280×720': '1280x720',
@@ -29,7 +29,7 @@ export const SCREENSHOT_CHOICES = {
 };
 
 /** The screenshot size a SCREENSHOT_CHOICES value means for a canvas of width × height, or null for the canvas size. */
-export function screenshotSize(choice, width, height) {
+function screenshotSize(choice, width, height) {
   if (choice === 'double') return { width: width * 2, height: height * 2 };
   const m = /^(\d+)x(\d+)$/.exec(choice);
   return m ? { width: Number(m[1]), height: Number(m[2]) } : null;
