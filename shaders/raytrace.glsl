@@ -3,16 +3,38 @@
 // reflections. A Shadertoy Image-tab shader: paste it as it is. Drag to orbit; all tunables are
 // in the control block below.
 //
+// Reading guide. The lecture's template is all here, in its order: the intersectors, the scene
+// and its one walk (traceScene: nearest hit, and a shadow ray's any hit), the materials, the
+// local shading, the bounce loop (radiance) and the camera (mainImage). What was added to it:
+// - controls: one block that Shadertoy compiles as it is and the page turns into a panel;
+// - the new object (cone, cylinder or torus): one section, "the new object", behind one
+//   interface, chosen by the one #if SCENE;
+// - near misses and edges: the adaptive anti-aliasing's tests of a pixel's own ray cones, from
+//   what radiance records of the first path ("what a path records", the one place where the
+//   edge tests, the Bounces view and the page's inspector hook into the loop);
+// - the debug views (VIEW 1 to 5), compiled only when chosen.
+//
 // Numerical choices, each explained where it is made:
 // - every position is relative to the eye, so a scene far from the origin keeps its digits;
 // - the sphere, cone and cylinder quadratics use cancellation-free discriminants and stable
 //   roots; the torus is solved by root isolation on its unexpanded distance, never as a quartic;
 // - no global epsilon: secondary rays skip the convex solid they leave, and a ray that starts
-//   inside a solid is pushed off its surface by a few ulps;
+//   inside a solid (or leaves the torus) is pushed off its surface by a few ulps;
 // - the ground texture is filtered over each sample's footprint: exactly for the eye ray (the
 //   parallelogram its ray differentials span), over a ray cone's width for reflected rays;
-// - pixels on an edge (a silhouette, crease, shadow boundary or reflected silhouette) take more
-//   samples when ADAPTIVE_AA is on, found from derivatives over each 2x2 pixel quad.
+// - a pixel whose first sample lies near an edge (a silhouette, crease, shadow boundary or
+//   reflected silhouette) takes the n x n grid when ADAPTIVE_AA is on: found by its own rays'
+//   near-miss tests and by derivatives over its 2x2 pixel quad.
+//
+// The cost model the code is written for. SwiftShader (the CPU WebGL2 of the tests and the
+// benchmark) runs a 2x2 pixel quad as four SIMD lanes: it executes both sides of every `if`,
+// and ends a loop only at its bottom, so a loop that no lane needs still runs its body once. A
+// frame costs the code on its path times the loop trips of each quad's slowest pixel. Hence:
+// selects instead of branches and early returns; all()/any() of a bvec instead of && and ||
+// (which short-circuit into branches); loops written `for (;;)` with the exit at the bottom;
+// every object asked for every ray (a bounding-sphere skip saves nothing there). A GPU rewards
+// the same things: less code on the path, one copy of the trace. The measurements, and the
+// commands that make them: docs/benchmark.md ("What SwiftShader rewards").
 
 // ---- controls --------------------------------------------------------------------------------
 // Shadertoy compiles this block as it stands; a host defines HOST_CONTROLS and declares the same
@@ -57,9 +79,10 @@ const float TORUS_REFLECTIVITY = 0.3;                  // ui: Torus reflectivity
 // ---- constants -------------------------------------------------------------------------------
 const float PI = 3.14159265358979;
 const float DEG = PI / 180.0;
-// Largest finite float32. t values at or past it (a ray parallel to a plane up to rounding)
-// are misses: p = ro + t * rd would be infinite or NaN.
-const float T_MAX = 3.0e38;
+// Infinity for a ray's parameter (the end of an eye ray's range), written as nearly the largest
+// finite float32: GLSL ES has no infinity literal. t values at or past it (a ray parallel to a
+// plane up to rounding) are misses: p = ro + t * rd would be infinite or NaN.
+const float T_INFINITY = 3.0e38;
 // float32 unit roundoff, 2^-24: the relative error of one correctly rounded operation.
 const float EPS32 = 5.960464477539063e-8;
 const vec4 MISS = vec4(-1.0, 0.0, 0.0, 0.0);
@@ -71,18 +94,20 @@ const vec4 MISS = vec4(-1.0, 0.0, 0.0, 0.0);
 // how a scene walk passes the nearest hit so far (and a shadow ray the light's distance); 0
 // rejects everything.
 //
-// Written without branches: every quantity is computed and the answer chosen by selects, so a
-// value that is not a number where the test fails (a division by a zero that the test rules
-// out) is never returned. SwiftShader runs both sides of every `if` anyway, and an early
-// `return` costs it masked stores besides. Conditions are joined with all()/any() of a bvec,
-// never with && or ||: those short-circuit, which the compiler turns into branches. Measured on
-// SwiftShader at 640x360, whole frame: early returns to selects 57 -> 49 ms; && and || to
-// all()/any() 54 -> 35 ms (tests/bench/branches.js shows the && effect on its own).
+// Written without branches (the cost model, at the top): every quantity is computed and the
+// answer chosen by selects, so a value that is not a number where the test fails (a division by
+// a zero that the test rules out) is never returned.
 
 // A hit at t with normal n when `hit`, else MISS. mix() with a bool picks one side exactly (no
 // arithmetic), so a NaN on the side not taken does not leak.
 vec4 hitOrMiss(bool hit, float t, vec3 n) {
     return mix(MISS, vec4(t, n), bvec4(hit));
+}
+
+// A direction perpendicular to the unit vector axis, for where a radial direction is 0/0 (a ray
+// along an axis of revolution): (-z, 0, x), or (0, z, -y) when the axis is nearly x.
+vec3 anyPerpendicular(vec3 axis) {
+    return mix(vec3(-axis.z, 0.0, axis.x), vec3(0.0, axis.z, -axis.y), bvec3(abs(axis.x) < 0.9));
 }
 
 // Plane dot(plane.xyz, p) + plane.w = 0, plane.xyz unit. Substituting p = ro + t rd:
@@ -91,7 +116,7 @@ vec4 hitOrMiss(bool hit, float t, vec3 n) {
 vec4 intersectPlane(vec3 ro, vec3 rd, vec4 plane, float tMax) {
     float approach = dot(plane.xyz, rd);
     float t = -(dot(plane.xyz, ro) + plane.w) / approach;
-    return hitOrMiss(all(bvec3(approach != 0.0, t > 0.0, t < min(tMax, T_MAX))), t, plane.xyz);
+    return hitOrMiss(all(bvec3(approach != 0.0, t > 0.0, t < min(tMax, T_INFINITY))), t, plane.xyz);
 }
 
 // Sphere |p - center| = radius. With f = ro - center and b = f.rd, the roots of
@@ -118,7 +143,7 @@ vec4 intersectSphere(vec3 ro, vec3 rd, vec3 center, float radius, float tMax) {
 // slab plane, so a zero direction component (+0 or -0) is handled by hand: the ray is inside
 // that slab for all t, or never. The normal is the single axis that sets the entry (or, from
 // inside, the exit) time, so it is exactly unit length even at an edge or corner. Written on
-// whole vectors: per-component loops with dynamic indexing cost SwiftShader ~10x more.
+// whole vectors: per-component loops with dynamic indexing cost SwiftShader far more.
 vec4 intersectBox(vec3 ro, vec3 rd, vec3 center, vec3 halfSize, float tMax) {
     vec3 o = ro - center;
     bvec3 parallel = equal(rd, vec3(0.0));
@@ -126,8 +151,8 @@ vec4 intersectBox(vec3 ro, vec3 rd, vec3 center, vec3 halfSize, float tMax) {
     vec3 inv = 1.0 / mix(rd, vec3(1.0), parallel);  // parallel axes get a harmless 1
     vec3 tA = (-halfSize - o) * inv;
     vec3 tB = (halfSize - o) * inv;
-    vec3 tIn = mix(min(tA, tB), vec3(-T_MAX), parallel);
-    vec3 tOut = mix(max(tA, tB), vec3(T_MAX), parallel);
+    vec3 tIn = mix(min(tA, tB), vec3(-T_INFINITY), parallel);
+    vec3 tOut = mix(max(tA, tB), vec3(T_INFINITY), parallel);
     float tEnter = max(max(tIn.x, tIn.y), tIn.z);
     float tExit = min(min(tOut.x, tOut.y), tOut.z);
     bool outside = tEnter > 0.0;
@@ -221,7 +246,7 @@ vec4 intersectCone(vec3 ro, vec3 rd, Cone cone, float tMax) {
     float b = dot(oPerp, dPerp) - cone.slope * yd * rOrigin;
     float c = dot(oPerp, oPerp) - rOrigin * rOrigin;
     float disc = b * b - a * c;
-    vec2 nearest = nearestCapped(a, b, c, disc, yo, yd, oPerp, dPerp, cone.height, cone.ra, cone.rb, min(tMax - tShift, T_MAX));
+    vec2 nearest = nearestCapped(a, b, c, disc, yo, yd, oPerp, dPerp, cone.height, cone.ra, cone.rb, min(tMax - tShift, T_INFINITY));
     float tBest = nearest.x;
     bool onBase = nearest.y == 2.0, onTop = nearest.y == 3.0;
 
@@ -234,8 +259,7 @@ vec4 intersectCone(vec3 ro, vec3 rd, Cone cone, float tMax) {
     vec3 wPerp = oPerp + tBest * dPerp;
     float radialNoise = 8.0 * EPS32 * (cone.height + max(cone.ra, cone.rb) + tBest);
     vec3 radial = mix(-dPerp, wPerp, bvec3(dot(wPerp, wPerp) > radialNoise * radialNoise));
-    vec3 anyPerpendicular = mix(vec3(-axis.z, 0.0, axis.x), vec3(0.0, axis.z, -axis.y), bvec3(abs(axis.x) < 0.9));
-    radial = mix(radial, anyPerpendicular, bvec3(dot(radial, radial) == 0.0));
+    radial = mix(radial, anyPerpendicular(axis), bvec3(dot(radial, radial) == 0.0));
     vec3 sideNormal = (normalize(radial) - cone.slope * axis) * inversesqrt(1.0 + cone.slope * cone.slope);
     // The last test that moved tBest names the part hit.
     vec3 n = mix(mix(sideNormal, -axis, bvec3(onBase)), axis, bvec3(onTop));
@@ -301,7 +325,7 @@ vec4 intersectCylinder(vec3 ro, vec3 rd, Cylinder cylinder, float tMax) {
     float c = dot(oPerp, oPerp) - r * r;
     float closest = length(oPerp - (a > 0.0 ? b / a : 0.0) * dPerp);
     float disc = a * (r + closest) * (r - closest);
-    vec2 nearest = nearestCapped(a, b, c, disc, yo, yd, oPerp, dPerp, cylinder.height, r, r, min(tMax - tShift, T_MAX));
+    vec2 nearest = nearestCapped(a, b, c, disc, yo, yd, oPerp, dPerp, cylinder.height, r, r, min(tMax - tShift, T_INFINITY));
     float tBest = nearest.x;
     bool onBase = nearest.y == 2.0, onTop = nearest.y == 3.0;
 
@@ -319,7 +343,7 @@ struct Torus {
     vec3 center;
     vec3 axis;          // unit (makeTorus normalizes it)
     float majorRadius;  // R
-    float tube;         // r / R: the solve runs in units of R
+    float tubeRatio;    // r / R: the solve runs in units of R
     float boundRadius;  // R + r: the bounding sphere about the centre
 };
 
@@ -393,7 +417,7 @@ vec4 intersectTorus(vec3 ro, vec3 rd, Torus torus, float tMax) {
     vec3 axis = torus.axis;
     vec3 o = ((ro - torus.center) + tShift * rd) / torus.majorRadius;
     TorusRay ray;
-    ray.k = torus.tube;
+    ray.k = torus.tubeRatio;
     ray.yo = dot(o, axis);
     ray.yd = dot(rd, axis);
     vec3 oPerp = o - ray.yo * axis, dPerp = rd - ray.yd * axis;
@@ -415,7 +439,7 @@ vec4 intersectTorus(vec3 ro, vec3 rd, Torus torus, float tMax) {
     float slabA = (-slab - ray.yo) / ray.yd, slabB = (slab - ray.yo) / ray.yd;
     bool level = ray.yd == 0.0;  // parallel to the slab: inside it for all t, or never
     float lo = max(max(-bo - h, 0.0), level ? 0.0 : min(slabA, slabB));
-    float hi = min(-bo + h, level ? T_MAX : max(slabA, slabB));
+    float hi = min(-bo + h, level ? T_INFINITY : max(slabA, slabB));
     bool inRange = all(bvec3(h2 >= 0.0, lo < hi, any(bvec2(!level, abs(ray.yo) <= slab))));
     // A ray with no range gets the empty one, [lo, lo]: both loops below end on their first trip
     // (and clamp() never sees its ends crossed, which GLSL leaves undefined). Without this, pixels
@@ -443,8 +467,7 @@ vec4 intersectTorus(vec3 ro, vec3 rd, Torus torus, float tMax) {
     // Trips (tests/intersectors.test.js counts them on the 1,600 of its torus rays that reach
     // this loop): 5 or fewer for 98%, at most 8 but for a triple zero of F' (a ray whose closest
     // approach to the axis is also an inflection, m2 = a^2), which Newton approaches linearly and
-    // the cap of 12 stops. SwiftShader runs the 4 pixels of a quad until the last is done, so the
-    // loop ends on its last needed trip.
+    // the cap of 12 stops. The loop ends on its last needed trip (the cost model, at the top).
     for (int trip = 1;; trip++) {
         vec3 dF, ddF;
         torusBend(ray, crit, dF, ddF);
@@ -479,9 +502,8 @@ vec4 intersectTorus(vec3 ro, vec3 rd, Torus torus, float tMax) {
     crosses = bvec4(vec4(crosses) * vec4(lessThanEqual(GAP, vec4(first))));
     // Start where the chord across the gap crosses 0: g is a distance, close to linear. Trips on
     // the test rays: 5 or fewer for 92%, at most 11 (near-tangent rays, where Newton's convergence
-    // is linear); the cap of 16 is never reached there. Cost on SwiftShader (npm run
-    // bench:primitives, 32 calls a pixel at 640x360): 95 ns a call, 5.2 times the cone's; a
-    // Ferrari closed form costs a third of that and gets half the hard cases wrong.
+    // is linear); the cap of 16 is never reached there. Its cost against the cone's and against a
+    // closed form: docs/numerics.md ("Per primitive: speed against error").
     vec4 root = mix(0.5 * (left + right), left + (right - left) * gLeft / (gLeft - gRight), crosses);
     for (int trip = 1;; trip++) {
         vec4 g = torusDistance(ray, root, slope);
@@ -507,8 +529,8 @@ vec4 intersectTorus(vec3 ro, vec3 rd, Torus torus, float tMax) {
     }
 
     // The first root past the origin (the gaps are in order along the ray).
-    vec4 found = mix(vec4(T_MAX), root, crosses);
-    found = mix(vec4(T_MAX), found, greaterThan(found, vec4(0.0)));
+    vec4 found = mix(vec4(T_INFINITY), root, crosses);
+    found = mix(vec4(T_INFINITY), found, greaterThan(found, vec4(0.0)));
     float t = min(min(found.x, found.y), min(found.z, found.w));
 
     // Normal: the gradient of g, (rho - 1) times the radial unit vector plus y times the axis.
@@ -519,32 +541,221 @@ vec4 intersectTorus(vec3 ro, vec3 rd, Torus torus, float tMax) {
     float u = t - ray.tc;
     float rho = sqrt(ray.m2 + ray.a * u * u);
     vec3 radial = mix(-dPerp, pPerp, bvec3(rho > tNoise));
-    vec3 anyPerpendicular = mix(vec3(-axis.z, 0.0, axis.x), vec3(0.0, axis.z, -axis.y), bvec3(abs(axis.x) < 0.9));
-    radial = mix(radial, anyPerpendicular, bvec3(dot(radial, radial) == 0.0));
+    radial = mix(radial, anyPerpendicular(axis), bvec3(dot(radial, radial) == 0.0));
     vec3 n = normalize((rho - 1.0) * normalize(radial) + y * axis);
     float tHit = tShift + t * torus.majorRadius;
-    return hitOrMiss(all(bvec4(inBound, inRange, t < T_MAX, tHit < tMax)), tHit, n);
+    return hitOrMiss(all(bvec4(inBound, inRange, t < T_INFINITY, tHit < tMax)), tHit, n);
 }
 
-// ---- the scene -------------------------------------------------------------------------------
-// The new object of each scene: its colour and reflectivity, and how curved it is as a mirror
-// (objectMirrorRadius, below).
-#if SCENE == 0
-#define OBJECT_COLOR CONE_COLOR
-#define OBJECT_REFLECTIVITY CONE_REFLECTIVITY
-#elif SCENE == 1
-#define OBJECT_COLOR CYLINDER_COLOR
-#define OBJECT_REFLECTIVITY CYLINDER_REFLECTIVITY
-#else
-#define OBJECT_COLOR TORUS_COLOR
-#define OBJECT_REFLECTIVITY TORUS_REFLECTIVITY
-#endif
+// ---- near misses: how close a ray cone passes to each primitive's outline ---------------------
+// The adaptive anti-aliasing's edge tests (below, EDGE_TESTS) ask these of a pixel's own rays:
+// closed forms per primitive, no extra trace.
 
+// A ray standing for a cone: its width at distance t is w0 + w1 t (w1 < 0: one that narrows to a
+// point at the end, as a shadow ray's towards a point light), tested for outlines up to tEnd.
+struct RayCone {
+    vec3 ro, rd;
+    float w0, w1, tEnd;
+};
+
+float widthAt(RayCone c, float t) {
+    return max(c.w0 + c.w1 * t, 0.0);
+}
+
+// The sphere's outline: the ray passes at |offAxis| from the centre; the outline is within the
+// cone when |offAxis| - r is within its width there, and in front of where the cone ends.
+bool nearSphere(RayCone c, vec3 center, float radius) {
+    vec3 f = center - c.ro;
+    float along = dot(f, c.rd);
+    float off = length(f - along * c.rd);
+    return all(bvec3(abs(off - radius) < widthAt(c, along), along + radius > 0.0, along - radius < c.tEnd));
+}
+
+// A box's outline: the ray hits the box grown by the cone's width (half-sizes + w: each slab's
+// interval wider by w / |rd_i|) and misses it shrunk by w. One slab computation, as intersectBox's.
+bool nearBox(RayCone c, vec3 center, vec3 halfSize) {
+    vec3 o = c.ro - center;
+    float w = widthAt(c, max(-dot(o, c.rd), 0.0));
+    bvec3 parallel = equal(c.rd, vec3(0.0));
+    vec3 inv = 1.0 / mix(c.rd, vec3(1.0), parallel);
+    vec3 tA = (-halfSize - o) * inv, tB = (halfSize - o) * inv;
+    vec3 grow = mix(w * abs(inv), vec3(0.0), parallel);
+    vec3 tIn = mix(min(tA, tB), vec3(-T_INFINITY), parallel), tOut = mix(max(tA, tB), vec3(T_INFINITY), parallel);
+    vec3 margin = halfSize - abs(o);  // a parallel axis: how far inside its slab the ray runs
+    vec3 inGrown = tIn - grow, outGrown = tOut + grow, inShrunk = tIn + grow, outShrunk = tOut - grow;
+    float enterGrown = max(max(inGrown.x, inGrown.y), inGrown.z), exitGrown = min(min(outGrown.x, outGrown.y), outGrown.z);
+    float enterShrunk = max(max(inShrunk.x, inShrunk.y), inShrunk.z), exitShrunk = min(min(outShrunk.x, outShrunk.y), outShrunk.z);
+    bool grown = all(bvec4(enterGrown <= exitGrown, exitGrown > 0.0, enterGrown < c.tEnd, !any(lessThan(mix(vec3(1.0), margin + w, parallel), vec3(0.0)))));
+    bool shrunk = all(bvec3(enterShrunk <= exitShrunk, exitShrunk > 0.0, !any(lessThan(mix(vec3(1.0), margin - w, parallel), vec3(0.0)))));
+    return all(bvec2(grown, !shrunk));
+}
+
+// The outline of a capped solid of revolution about the unit axis from base, radius ra + k y at
+// height y in [0, H] (the cone, and the cylinder with k = 0). Along the ray (axial coordinate
+// y(t), distance rho(t) from the axis, rho^2 = m2 + a (t - tc)^2 as for the torus), the distance
+// to the side's generator line is D(t) = (rho - ra - k y) / sqrt(1 + k^2); its extremum is where
+// rho' = k y', at t = tc + u, u = k yd sqrt(m2 / (a (a - k^2 yd^2))) (none for a ray steeper than
+// the side). There the side's outline is within the cone if |D| is. The rims: where the ray
+// crosses a cap's plane at rho, the rim is |rho - r| away in that plane, |rho - r| |yd| across the
+// ray. (The apex is the top rim of radius 0.)
+bool nearRevolution(RayCone c, vec3 base, vec3 axis, float height, float ra, float k, float bound) {
+    vec3 o = c.ro - base;
+    float yo = dot(o, axis), yd = dot(c.rd, axis);
+    vec3 oPerp = o - yo * axis, dPerp = c.rd - yd * axis;
+    float a = dot(dPerp, dPerp);
+    float tc = a > 0.0 ? -dot(oPerp, dPerp) / a : 0.0;
+    vec3 closest = oPerp + tc * dPerp;
+    float m2 = dot(closest, closest);
+    float steep = a * (a - k * k * yd * yd);
+    float u = steep > 0.0 ? k * yd * sqrt(m2 / steep) : 0.0;
+    float tSide = tc + u;
+    float ySide = yo + yd * tSide;
+    float side = abs(sqrt(m2 + a * u * u) - ra - k * ySide) * inversesqrt(1.0 + k * k);
+    float wSide = widthAt(c, tSide);
+    bool nearSide = all(bvec4(steep > 0.0, side < wSide, ySide > -wSide, ySide < height + wSide));
+    vec2 tCap = (vec2(0.0, height) - yo) / yd;
+    vec2 rhoCap = vec2(length(oPerp + tCap.x * dPerp), length(oPerp + tCap.y * dPerp));
+    vec2 rim = abs(rhoCap - vec2(ra, ra + k * height)) * abs(yd);
+    bvec2 nearRim = lessThan(rim, vec2(widthAt(c, tCap.x), widthAt(c, tCap.y)));
+    bool inFront = all(bvec2(tc + bound > 0.0, tc - bound < c.tEnd));
+    bool rims = all(bvec2(yd != 0.0, any(nearRim)));  // a ray parallel to the caps crosses no rim
+    return all(bvec2(inFront, any(bvec2(nearSide, rims))));
+}
+
+// The ground's outline is the horizon: a ray cone that meets it within its own spread of parallel.
+bool nearHorizon(RayCone c, vec4 plane) {
+    return abs(dot(plane.xyz, c.rd)) < c.w1;
+}
+
+// ---- the new object --------------------------------------------------------------------------
+// The assignment's new object, chosen by SCENE at compile time: the cone, the cylinder or the
+// torus. Each offers the scene the same interface, so that nothing else in the file depends on
+// which it is:
+//   Object                       its type (the intersector's own struct)
+//   OBJECT_COLOR, _REFLECTIVITY  its material (from the control block)
+//   placeObject(eyeLocal)        the object relative to the eye (see Scene)
+//   intersectObject(...)         its intersector, as the others: vec4(t, n)
+//   objectSurfacePoint(o, p, n)  a hit point put back on its surface, where that is cheap
+//   objectMirrorRadius(o, p)     its radius of curvature at p as a mirror (its most curved direction)
+//   reenters(id)                 whether a ray leaving the surface of `id` can meet it again: not
+//                                the ground and the convex solids (the scene walk then skips
+//                                them); the torus can (its hole, its inner wall), so such a ray
+//                                starts a few ulps off the surface, outside, and the torus stays
+//                                in the walk (tests/intersector-properties.test.js checks this)
+//   nearObject(cone, o)          whether a ray cone passes near its outline (the edge tests)
 const int ID_NONE = -1;
 const int ID_GROUND = 0;
 const int ID_SPHERE = 1;
 const int ID_CUBE = 2;
-const int ID_OBJECT = 3;  // the assignment's new object: the cone, the cylinder or the torus (SCENE)
+const int ID_OBJECT = 3;  // the new object
+
+#if SCENE == 0
+#define Object Cone
+#define OBJECT_COLOR CONE_COLOR
+#define OBJECT_REFLECTIVITY CONE_REFLECTIVITY
+
+Object placeObject(vec3 eyeLocal) {
+    return makeCone(CONE_BASE - eyeLocal, CONE_BASE + vec3(0.0, CONE_HEIGHT, 0.0) - eyeLocal, CONE_RADIUS, 0.0);
+}
+
+vec4 intersectObject(vec3 ro, vec3 rd, Object cone, float tMax) {
+    return intersectCone(ro, rd, cone, tMax);
+}
+
+vec3 objectSurfacePoint(Object cone, vec3 p, vec3 n) {
+    return p;
+}
+
+// The side curves with radius r(y) across its axis: 0 at the apex.
+float objectMirrorRadius(Object cone, vec3 p) {
+    return CONE_RADIUS * max(1.0 - (p.y - cone.base.y) / CONE_HEIGHT, 0.0);
+}
+
+bool reenters(int id) {
+    return false;
+}
+
+bool nearObject(RayCone c, Object cone) {
+    return nearRevolution(c, cone.base, cone.axis, cone.height, cone.ra, cone.slope, cone.boundRadius);
+}
+
+#elif SCENE == 1
+#define Object Cylinder
+#define OBJECT_COLOR CYLINDER_COLOR
+#define OBJECT_REFLECTIVITY CYLINDER_REFLECTIVITY
+
+Object placeObject(vec3 eyeLocal) {
+    return makeCylinder(CYLINDER_BASE - eyeLocal, CYLINDER_BASE + vec3(0.0, CYLINDER_HEIGHT, 0.0) - eyeLocal, CYLINDER_RADIUS);
+}
+
+vec4 intersectObject(vec3 ro, vec3 rd, Object cylinder, float tMax) {
+    return intersectCylinder(ro, rd, cylinder, tMax);
+}
+
+vec3 objectSurfacePoint(Object cylinder, vec3 p, vec3 n) {
+    return p;
+}
+
+float objectMirrorRadius(Object cylinder, vec3 p) {
+    return CYLINDER_RADIUS;
+}
+
+bool reenters(int id) {
+    return false;
+}
+
+bool nearObject(RayCone c, Object cylinder) {
+    return nearRevolution(c, cylinder.base, cylinder.axis, cylinder.height, cylinder.radius, 0.0, cylinder.boundRadius);
+}
+
+#else
+#define Object Torus
+#define OBJECT_COLOR TORUS_COLOR
+#define OBJECT_REFLECTIVITY TORUS_REFLECTIVITY
+
+// An axis of length 0 means none: upright. The tube is no wider than the hole's radius.
+Object placeObject(vec3 eyeLocal) {
+    vec3 axis = dot(TORUS_AXIS, TORUS_AXIS) > 0.0 ? TORUS_AXIS : vec3(0.0, 1.0, 0.0);
+    return makeTorus(TORUS_CENTER - eyeLocal, axis, TORUS_RADII.x, min(TORUS_RADII.y, TORUS_RADII.x));
+}
+
+vec4 intersectObject(vec3 ro, vec3 rd, Object torus, float tMax) {
+    return intersectTorus(ro, rd, torus, tMax);
+}
+
+// The point from the torus's core circle: the nearest point of the core, then the tube's radius
+// along the normal. Rays leave the torus from here, and may meet it again (reenters), so the
+// start must be off the surface by more than the point's error: this puts that error at a few
+// roundings of the point's coordinates, where the intersector's t leaves up to K u S (S the
+// distance the ray came), and the step off it can be small (leaveTorus). On the axis (no
+// nearest point of the core) the point stays as it is.
+vec3 objectSurfacePoint(Object torus, vec3 p, vec3 n) {
+    vec3 q = p - torus.center;
+    vec3 radial = q - dot(q, torus.axis) * torus.axis;
+    vec3 core = torus.center + torus.majorRadius * normalize(radial);
+    return mix(p, core + (torus.tubeRatio * torus.majorRadius) * n, bvec3(dot(radial, radial) > 0.0));
+}
+
+// Across its tube, with the tube's radius.
+float objectMirrorRadius(Object torus, vec3 p) {
+    return torus.tubeRatio * torus.majorRadius;
+}
+
+bool reenters(int id) {
+    return id == ID_OBJECT;
+}
+
+// The torus's outline has no cheap closed form (its distance from a line is a quartic's root
+// again). By its definition, the cone hitting the torus with its tube grown by the cone's width
+// and missing it shrunk, it took two more solves per ray: six per sample, and SwiftShader runs a
+// quad's every trip through them (the torus scene's adaptive frame went from seconds to over 90 s
+// at 320x180). So the torus's edges are the quad's to find.
+bool nearObject(RayCone c, Object torus) {
+    return false;
+}
+#endif
+
+// ---- the scene -------------------------------------------------------------------------------
 
 // Everything is traced relative to the eye: positions near the eye keep all their digits even
 // when the scene (and the camera with it) sits far from the origin.
@@ -554,13 +765,7 @@ struct Scene {
     vec3 cubeCenter;
     float sphereRadius;
     vec3 cubeHalfSize;
-#if SCENE == 0
-    Cone cone;
-#elif SCENE == 1
-    Cylinder cylinder;
-#else
-    Torus torus;
-#endif
+    Object object;      // the new object (SCENE)
     vec3 light;
     vec4 reflectivity;  // ground, sphere, cube, the new object
     vec2 textureOrigin; // world xz of the eye, reduced modulo the texture period (2)
@@ -574,15 +779,7 @@ Scene sceneRelativeTo(vec3 eyeLocal) {
     s.sphereRadius = SPHERE_RADIUS;
     s.cubeHalfSize = CUBE_HALF_SIZE;
     s.reflectivity = vec4(GROUND_REFLECTIVITY, SPHERE_REFLECTIVITY, CUBE_REFLECTIVITY, OBJECT_REFLECTIVITY);
-#if SCENE == 0
-    s.cone = makeCone(CONE_BASE - eyeLocal, CONE_BASE + vec3(0.0, CONE_HEIGHT, 0.0) - eyeLocal, CONE_RADIUS, 0.0);
-#elif SCENE == 1
-    s.cylinder = makeCylinder(CYLINDER_BASE - eyeLocal, CYLINDER_BASE + vec3(0.0, CYLINDER_HEIGHT, 0.0) - eyeLocal, CYLINDER_RADIUS);
-#else
-    // An axis of length 0 means none: upright. The tube is no wider than the hole's radius.
-    vec3 axis = dot(TORUS_AXIS, TORUS_AXIS) > 0.0 ? TORUS_AXIS : vec3(0.0, 1.0, 0.0);
-    s.torus = makeTorus(TORUS_CENTER - eyeLocal, axis, TORUS_RADII.x, min(TORUS_RADII.y, TORUS_RADII.x));
-#endif
+    s.object = placeObject(eyeLocal);
     s.light = LIGHT_POSITION - eyeLocal;
     // mod() of each term separately keeps the sum small: SCENE_ORIGIN may be ~1e4 or more.
     s.textureOrigin = mod(SCENE_ORIGIN.xz, 2.0) + mod(eyeLocal.xz, 2.0);
@@ -615,7 +812,7 @@ float maxAbs(vec3 v) {
 const float GROUND_BAND_ULPS = 64.0;
 
 // The one scene walk, for every ray: the nearest hit with 0 < t < tMax. An eye or reflection
-// ray passes tMax = T_MAX; a shadow ray passes the light's distance, and is blocked when the
+// ray passes tMax = T_INFINITY; a shadow ray passes the light's distance, and is blocked when the
 // walk finds anything ("any hit before the light" is "a nearest hit before the light": the
 // same answer, and one copy of the intersector code). Each object is asked only for hits
 // nearer than the best so far. skipId is the convex solid the ray is leaving: it cannot be hit
@@ -628,32 +825,22 @@ const float GROUND_BAND_ULPS = 64.0;
 // within the rounding band of the ground's plane, on a ray that meets the ground, is the
 // ground's (the float64 reference decides it the same way).
 //
-// Every object is asked, whatever the ray: on SwiftShader a bounding-sphere skip (an object's
-// code in a loop of 0 or 1 trips, 0 for a ray that misses the sphere) makes nothing cheaper, as
-// a loop that no lane of a quad needs still runs its body once (npm run bench:branches: 19.4 ms
-// for a loop of 0 trips tested at the top, 19.3 for its body straight), and costs a quad that
-// needs it two bodies. A GPU skips such a loop; there it would pay for the torus.
+// Every object is asked, whatever the ray: a bounding-sphere skip (an object's code in a loop of
+// 0 or 1 trips) makes nothing cheaper on SwiftShader, and costs a quad that needs it two bodies
+// (the cost model, at the top). A GPU skips such a loop; there it would pay for the torus.
 Hit traceScene(Scene s, vec3 ro, vec3 rd, int skipId, float tMax) {
     vec4 ground = intersectPlane(ro, rd, s.ground, skipId == ID_GROUND ? 0.0 : tMax);
     // The objects are asked only for hits nearer than the ground's by more than the band: along
     // the ray a point's height above the plane is |n.rd| (tGround - t), so "within the band of
     // the plane" is "within band / |n.rd| of the ground's t". Same test as checking the height
-    // of the nearest object's point afterwards, and no more than a float kept across the walk
-    // (checking afterwards kept the ground's whole hit across it: 46.8 ms against 42.6 at 640x360).
+    // of the nearest object's point afterwards, and only a float kept across the walk (checking
+    // afterwards kept the ground's whole hit across it, and cost a tenth of the frame).
     float band = GROUND_BAND_ULPS * EPS32 * (ground.x + maxAbs(ro) + abs(s.ground.w));
     float tGround = ground.x;
     Hit hit = Hit(tGround > 0.0 ? tGround - band / abs(dot(s.ground.xyz, rd)) : tMax, vec3(0.0), ID_NONE);
     hit = nearer(hit, intersectSphere(ro, rd, s.sphereCenter, s.sphereRadius, skipId == ID_SPHERE ? 0.0 : hit.t), ID_SPHERE);
     hit = nearer(hit, intersectBox(ro, rd, s.cubeCenter, s.cubeHalfSize, skipId == ID_CUBE ? 0.0 : hit.t), ID_CUBE);
-    // Only the scene's own new object is traced (SCENE is fixed at compile time).
-    float tObject = skipId == ID_OBJECT ? 0.0 : hit.t;
-#if SCENE == 0
-    hit = nearer(hit, intersectCone(ro, rd, s.cone, tObject), ID_OBJECT);
-#elif SCENE == 1
-    hit = nearer(hit, intersectCylinder(ro, rd, s.cylinder, tObject), ID_OBJECT);
-#else
-    hit = nearer(hit, intersectTorus(ro, rd, s.torus, tObject), ID_OBJECT);
-#endif
+    hit = nearer(hit, intersectObject(ro, rd, s.object, skipId == ID_OBJECT ? 0.0 : hit.t), ID_OBJECT);
     bool groundNearest = all(bvec2(hit.id == ID_NONE, tGround > 0.0));
     return Hit(groundNearest ? tGround : hit.t, mix(hit.n, s.ground.xyz, bvec3(groundNearest)), groundNearest ? ID_GROUND : hit.id);
 }
@@ -785,60 +972,123 @@ vec3 reprojectOnSurface(Scene s, vec3 p, vec3 n, int id) {
     vec3 onGround = vec3(p.x, -s.ground.w, p.z);
     vec3 onSphere = s.sphereCenter + s.sphereRadius * n;
     vec3 onSurface = mix(mix(p, onSphere, bvec3(id == ID_SPHERE)), onGround, bvec3(id == ID_GROUND));
-#if SCENE == 2
-    // The torus's point from its core circle: the nearest point of the core, then the tube's
-    // radius along the normal. Rays leave the torus from here, and may meet it again (reenters),
-    // so the start must be off the surface by more than the point's error: this puts that error
-    // at a few roundings of the point's coordinates, where the intersector's t leaves up to
-    // K u S (S the distance the ray came), and the step off it can be small (leaveTorus).
-    vec3 q = p - s.torus.center;
-    vec3 radial = q - dot(q, s.torus.axis) * s.torus.axis;
-    vec3 core = s.torus.center + s.torus.majorRadius * normalize(radial);
-    onSurface = mix(onSurface, core + (s.torus.tube * s.torus.majorRadius) * n, bvec3(all(bvec2(id == ID_OBJECT, dot(radial, radial) > 0.0))));
-#endif
+    // The new object's own (the torus's), where it has one.
+    onSurface = mix(onSurface, objectSurfacePoint(s.object, p, n), bvec3(id == ID_OBJECT));
     return onSurface;
 }
 
-// Moves p off its surface along n by 256 ulps of its largest coordinate, and by at least
-// 2^-16 near the origin: a float form of the integer-ulp offset of Waechter and Binder (Ray
-// Tracing Gems ch. 6, whose constants these are). An ulp of x is 2 EPS32 |x| or less. Only used
-// for rays that may hit the surface they start on again: from inside a solid, or leaving a solid
-// that is not convex (the torus).
-vec3 offsetAlong(vec3 p, vec3 n) {
-    return p + n * max(1.0 / 65536.0, 256.0 * 2.0 * EPS32 * maxAbs(p));
+// Moves p off its surface along n by `ulps` ulps of its largest coordinate, and by at least 2^-16
+// near the origin: a float form of the integer-ulp offset of Waechter and Binder (Ray Tracing
+// Gems ch. 6, whose constants these are). An ulp of x is 2 EPS32 |x| or less. Only used for rays
+// that may hit the surface they start on again: from inside a solid, or leaving a solid that is
+// not convex (the torus).
+vec3 offsetByUlps(vec3 p, vec3 n, float ulps) {
+    return p + n * max(1.0 / 65536.0, ulps * 2.0 * EPS32 * maxAbs(p));
 }
 
-// The radius of curvature of the new object's surface at p, as a mirror (its most curved
-// direction): the cone's side curves with radius r(y) across its axis (0 at the apex), the
-// cylinder's with its radius, the torus's across its tube with the tube's radius.
-float objectMirrorRadius(Scene s, vec3 p) {
-#if SCENE == 0
-    return CONE_RADIUS * max(1.0 - (p.y - s.cone.base.y) / CONE_HEIGHT, 0.0);
-#elif SCENE == 1
-    return CYLINDER_RADIUS;
-#else
-    return s.torus.tube * s.torus.majorRadius;
-#endif
+// From inside a solid: the hit point carries the intersector's error, up to K u S.
+vec3 offsetAlong(vec3 p, vec3 n) {
+    return offsetByUlps(p, n, 256.0);
 }
 
 // A point on the torus's surface (re-projected: its error a few roundings of its coordinates)
-// moved outward by 16 ulps of its largest coordinate: past that error, and 16 times less than
-// offsetAlong's step, which seen from 1e3 away is 3e-2, two pixels of a telephoto view (measured:
-// reflections off a torus 1e3 away, 0.67% of pixels over 2/255 against float64 with offsetAlong,
-// 0.04% with this; the property test holds either way).
+// moved outward by 16 ulps: past that error, and 16 times less than offsetAlong's step, which
+// seen from 1e3 away is 3e-2, two pixels of a telephoto view (measured: reflections off a torus
+// 1e3 away, 0.67% of pixels over 2/255 against float64 with offsetAlong, 0.04% with this; the
+// property test holds either way).
 vec3 leaveTorus(vec3 p, vec3 n) {
-    return p + n * max(1.0 / 65536.0, 16.0 * 2.0 * EPS32 * maxAbs(p));
+    return offsetByUlps(p, n, 16.0);
 }
 
-// Whether a ray that leaves the surface of `id` can meet that surface again: not for the ground
-// and the convex solids, which the scene walk then skips; for the torus it can (its hole, its
-// inner wall), so such a ray starts a few ulps off the surface, outside, and the torus stays in
-// the walk (tests/intersector-properties.test.js checks this rule on the GPU).
-bool reenters(int id) {
-#if SCENE == 2
-    return id == ID_OBJECT;
-#else
-    return false;
+// ---- what a path records ---------------------------------------------------------------------
+// radiance is the lecture's loop. What else needs to know about a pixel's first path (the edge
+// tests of the adaptive anti-aliasing, the Bounces view, the page's pixel inspector) radiance
+// tells these four functions, at four moments of the path; each keeps only what the host
+// compiles in (EDGE_TESTS, VIEW 4, PROBE_PATH: the inspector's src/shadertoy/path-probe.js
+// defines probeRay and probeLit), and with none of them they are empty.
+#ifndef EDGE_TESTS
+#define EDGE_TESTS (ADAPTIVE_AA == 1 && SAMPLES > 1)
+#endif
+
+#if EDGE_TESTS
+// What the first sample's path did at its first surface, for the edge tests.
+struct FirstPath {
+    float t;            // the eye ray's hit (T_INFINITY for the sky)
+    vec3 p, l;          // the first surface point, the direction to the light
+    float lightDist;
+    float facing;       // n.l there: a surface facing away from the light has no shadow boundary
+    float width;        // the eye ray's cone width at p
+    vec3 reflected;     // the first reflected ray, from p
+    float reflectedT;   // its hit
+    float spread;       // its cone's widening per unit of distance
+    float reflects;     // 1 when the path reflected at its first surface
+    int id;
+};
+FirstPath firstPath;
+#endif
+
+#if VIEW == 4
+// The reflections the pixel's first sample traced: set once, by its path (-1 until then).
+int pathBounces = -1;
+#endif
+
+// The eye ray met `hit` (the sky for ID_NONE).
+void recordEyeRay(Hit hit) {
+#ifdef PROBE_PATH
+    probeRay(0, hit.id, hit.t, hit.n, 1.0);
+#endif
+#if EDGE_TESTS
+    firstPath.t = hit.t;
+    firstPath.id = hit.id;
+    firstPath.p = vec3(0.0);
+    firstPath.l = vec3(0.0);
+    firstPath.lightDist = 0.0;
+    firstPath.facing = 0.0;
+    firstPath.width = 0.0;
+    firstPath.reflected = vec3(0.0);
+    firstPath.reflectedT = T_INFINITY;
+    firstPath.spread = 0.0;
+    firstPath.reflects = 0.0;
+#endif
+}
+
+// The surface at `bounce` was shaded: its point, the direction and distance to the light, n.l,
+// the ray cone's width there, and whether the light reaches it.
+void recordSurface(int bounce, vec3 p, vec3 l, float lightDist, float facing, float width, bool lit) {
+#ifdef PROBE_PATH
+    probeLit(bounce, lit);
+#endif
+#if EDGE_TESTS
+    if (bounce == 0) {
+        firstPath.p = p;
+        firstPath.l = l;
+        firstPath.lightDist = lightDist;
+        firstPath.facing = facing;
+        firstPath.width = width;
+    }
+#endif
+}
+
+// The surface at `bounce` reflected: the reflected ray rd met `hit`, its cone widening by spread
+// per unit of distance, carrying `weight` of the pixel.
+void recordReflection(int bounce, vec3 rd, Hit hit, float spread, float weight) {
+#ifdef PROBE_PATH
+    probeRay(bounce + 1, hit.id, hit.t, hit.n, weight);
+#endif
+#if EDGE_TESTS
+    if (bounce == 0) {
+        firstPath.reflected = rd;
+        firstPath.reflectedT = hit.t;
+        firstPath.spread = spread;
+        firstPath.reflects = 1.0;
+    }
+#endif
+}
+
+// The path ended after `bounces` reflections.
+void recordPathEnd(int bounces) {
+#if VIEW == 4
+    pathBounces = pathBounces < 0 ? bounces : pathBounces;
 #endif
 }
 
@@ -851,120 +1101,14 @@ bool reenters(int id) {
 // to a point at the light) grazes an occluder; near a reflected silhouette when the first
 // reflected ray's cone grazes an outline. Closed forms per primitive, no extra trace. (A host may
 // define EDGE_TESTS 0 before the file: the progressive form, whose samples are points.)
-#ifndef EDGE_TESTS
-#define EDGE_TESTS (ADAPTIVE_AA == 1 && SAMPLES > 1)
-#endif
 
 #if EDGE_TESTS
-// What the first sample's path did at its first surface, recorded by radiance for the edge tests.
-struct FirstPath {
-    float t;            // the eye ray's hit (T_MAX for the sky)
-    vec3 p, l;          // the first surface point, the direction to the light
-    float lightDist;
-    float facing;       // n.l there: a surface facing away from the light has no shadow boundary
-    float width;        // the eye ray's cone width at p
-    vec3 reflected;     // the first reflected ray, from p
-    float reflectedT;   // its hit
-    float spread;       // its cone's widening per unit of distance
-    float reflects;     // 1 when the path reflected at its first surface
-    int id;
-};
-FirstPath firstPath;
-
-// A ray standing for a cone: its width at distance t is w0 + w1 t (w1 < 0: one that narrows to a
-// point at the end, as a shadow ray's towards a point light), tested for outlines up to tEnd.
-struct RayCone {
-    vec3 ro, rd;
-    float w0, w1, tEnd;
-};
-
-float widthAt(RayCone c, float t) {
-    return max(c.w0 + c.w1 * t, 0.0);
-}
-
-// The sphere's outline: the ray passes at |offAxis| from the centre; the outline is within the
-// cone when |offAxis| - r is within its width there, and in front of where the cone ends.
-bool nearSphere(RayCone c, vec3 center, float radius) {
-    vec3 f = center - c.ro;
-    float along = dot(f, c.rd);
-    float off = length(f - along * c.rd);
-    return all(bvec3(abs(off - radius) < widthAt(c, along), along + radius > 0.0, along - radius < c.tEnd));
-}
-
-// A box's outline: the ray hits the box grown by the cone's width (half-sizes + w: each slab's
-// interval wider by w / |rd_i|) and misses it shrunk by w. One slab computation, as intersectBox's.
-bool nearBox(RayCone c, vec3 center, vec3 halfSize) {
-    vec3 o = c.ro - center;
-    float w = widthAt(c, max(-dot(o, c.rd), 0.0));
-    bvec3 parallel = equal(c.rd, vec3(0.0));
-    vec3 inv = 1.0 / mix(c.rd, vec3(1.0), parallel);
-    vec3 tA = (-halfSize - o) * inv, tB = (halfSize - o) * inv;
-    vec3 grow = mix(w * abs(inv), vec3(0.0), parallel);
-    vec3 tIn = mix(min(tA, tB), vec3(-T_MAX), parallel), tOut = mix(max(tA, tB), vec3(T_MAX), parallel);
-    vec3 margin = halfSize - abs(o);  // a parallel axis: how far inside its slab the ray runs
-    vec3 inGrown = tIn - grow, outGrown = tOut + grow, inShrunk = tIn + grow, outShrunk = tOut - grow;
-    float enterGrown = max(max(inGrown.x, inGrown.y), inGrown.z), exitGrown = min(min(outGrown.x, outGrown.y), outGrown.z);
-    float enterShrunk = max(max(inShrunk.x, inShrunk.y), inShrunk.z), exitShrunk = min(min(outShrunk.x, outShrunk.y), outShrunk.z);
-    bool grown = all(bvec4(enterGrown <= exitGrown, exitGrown > 0.0, enterGrown < c.tEnd, !any(lessThan(mix(vec3(1.0), margin + w, parallel), vec3(0.0)))));
-    bool shrunk = all(bvec3(enterShrunk <= exitShrunk, exitShrunk > 0.0, !any(lessThan(mix(vec3(1.0), margin - w, parallel), vec3(0.0)))));
-    return all(bvec2(grown, !shrunk));
-}
-
-// The outline of a capped solid of revolution about the unit axis from base, radius ra + k y at
-// height y in [0, H] (the cone, and the cylinder with k = 0). Along the ray (axial coordinate
-// y(t), distance rho(t) from the axis, rho^2 = m2 + a (t - tc)^2 as for the torus), the distance
-// to the side's generator line is D(t) = (rho - ra - k y) / sqrt(1 + k^2); its extremum is where
-// rho' = k y', at t = tc + u, u = k yd sqrt(m2 / (a (a - k^2 yd^2))) (none for a ray steeper than
-// the side). There the side's outline is within the cone if |D| is. The rims: where the ray
-// crosses a cap's plane at rho, the rim is |rho - r| away in that plane, |rho - r| |yd| across the
-// ray. (The apex is the top rim of radius 0.)
-bool nearRevolution(RayCone c, vec3 base, vec3 axis, float height, float ra, float k, float bound) {
-    vec3 o = c.ro - base;
-    float yo = dot(o, axis), yd = dot(c.rd, axis);
-    vec3 oPerp = o - yo * axis, dPerp = c.rd - yd * axis;
-    float a = dot(dPerp, dPerp);
-    float tc = a > 0.0 ? -dot(oPerp, dPerp) / a : 0.0;
-    vec3 closest = oPerp + tc * dPerp;
-    float m2 = dot(closest, closest);
-    float steep = a * (a - k * k * yd * yd);
-    float u = steep > 0.0 ? k * yd * sqrt(m2 / steep) : 0.0;
-    float tSide = tc + u;
-    float ySide = yo + yd * tSide;
-    float side = abs(sqrt(m2 + a * u * u) - ra - k * ySide) * inversesqrt(1.0 + k * k);
-    float wSide = widthAt(c, tSide);
-    bool nearSide = all(bvec4(steep > 0.0, side < wSide, ySide > -wSide, ySide < height + wSide));
-    vec2 tCap = (vec2(0.0, height) - yo) / yd;
-    vec2 rhoCap = vec2(length(oPerp + tCap.x * dPerp), length(oPerp + tCap.y * dPerp));
-    vec2 rim = abs(rhoCap - vec2(ra, ra + k * height)) * abs(yd);
-    bvec2 nearRim = lessThan(rim, vec2(widthAt(c, tCap.x), widthAt(c, tCap.y)));
-    bool inFront = all(bvec2(tc + bound > 0.0, tc - bound < c.tEnd));
-    bool rims = all(bvec2(yd != 0.0, any(nearRim)));  // a ray parallel to the caps crosses no rim
-    return all(bvec2(inFront, any(bvec2(nearSide, rims))));
-}
-
-// The ground's outline is the horizon: a ray cone that meets it within its own spread of parallel.
-bool nearHorizon(RayCone c, vec4 plane) {
-    return abs(dot(plane.xyz, c.rd)) < c.w1;
-}
-
 // Whether the cone passes near an outline of the scene: every object but `skipId` (the convex
 // solid a secondary ray leaves, whose own outline is not in its way).
 bool nearOutline(Scene s, RayCone c, int skipId) {
     bool sphere = all(bvec2(skipId != ID_SPHERE, nearSphere(c, s.sphereCenter, s.sphereRadius)));
     bool cube = all(bvec2(skipId != ID_CUBE, nearBox(c, s.cubeCenter, s.cubeHalfSize)));
-#if SCENE == 0
-    bool object = nearRevolution(c, s.cone.base, s.cone.axis, s.cone.height, s.cone.ra, s.cone.slope, s.cone.boundRadius);
-#elif SCENE == 1
-    bool object = nearRevolution(c, s.cylinder.base, s.cylinder.axis, s.cylinder.height, s.cylinder.radius, 0.0, s.cylinder.boundRadius);
-#else
-    // The torus's outline has no cheap closed form (its distance from a line is a quartic's
-    // root again). By its definition, the cone hitting the torus with its tube grown by the
-    // cone's width and missing it shrunk, it took two more solves per ray: six per sample, and
-    // SwiftShader runs a quad's every trip through them (the torus scene's adaptive frame went
-    // from seconds to over 90 s at 320x180). So the torus's edges are the quad's to find.
-    bool object = false;
-#endif
-    object = all(bvec2(skipId != ID_OBJECT, object));
+    bool object = all(bvec2(skipId != ID_OBJECT, nearObject(c, s.object)));
     return any(bvec4(sphere, cube, object, nearHorizon(c, s.ground)));
 }
 
@@ -994,19 +1138,13 @@ vec3 firstSampleEdges(Scene s, vec3 eyeDir, float pixelSpread) {
 // ---- debug views -----------------------------------------------------------------------------
 // VIEW 1 to 5 show what the picture is made of (they paste into Shadertoy too); only the chosen
 // view's code is compiled, and VIEW 0, the picture, has none of it.
-#if VIEW == 4
-// The reflections the pixel's first sample traced: radiance sets it once, on its first call
-// (-1 until then).
-int pathBounces = -1;
-#endif
-
 #if VIEW >= 1 && VIEW <= 3
 // A debug view's colour for the first surface the pixel centre's ray meets (the Normals, Depth
 // and Object views): its outward normal as a colour, its distance on a scale that shows the
 // whole scene (t / (t + the camera's distance): half grey at the camera's distance, white the
 // sky), or each object's own flat colour (the ground a sand colour, the sky pale blue).
 vec3 firstHitView(Scene s, vec3 dir) {
-    Hit hit = traceScene(s, vec3(0.0), dir, ID_NONE, T_MAX);
+    Hit hit = traceScene(s, vec3(0.0), dir, ID_NONE, T_INFINITY);
     bool sky = hit.id == ID_NONE;
 #if VIEW == 1
     return sky ? vec3(0.0) : 0.5 + 0.5 * hit.n;
@@ -1043,35 +1181,23 @@ struct EyeRay {
 // the object it hit, whether that point is lit, and the object its reflection hit; and the
 // normal there.
 //
-// Cost: SwiftShader (the CPU WebGL of the tests and the benchmark) runs a 2x2 pixel quad as SIMD
-// lanes and executes both sides of every `if`; only loop iterations that no lane needs are
-// skipped. So the bounce loop is written to end on its last needed iteration: `for (;;)` with
-// the exit at the bottom. A loop whose condition is tested at the top runs its body once more
-// with every lane masked off (npm run bench:branches: a body of 60 sin() calls takes 19.4, 37.9
-// and 56.4 ms for 0, 1 and 2 trips tested at the top, 19.6 and 37.8 ms for 1 and 2 trips written
-// this way). For the same reason the ground colour is computed for every hit and chosen by a
-// select, and the shadow ray is traced for every hit, lit or not: SwiftShader would run an `if`'s
-// body anyway (the filter costs nothing measurable: 34.2 ms filtered, 34.5 unfiltered; a shadow
-// ray behind `lit &&` made the frame 63 ms instead of 57).
+// Written for the cost model (at the top): the bounce loop ends at its bottom, on its last needed
+// trip; the ground colour is computed for every hit and chosen by a select; the shadow ray is
+// traced for every hit, lit or not (behind `lit &&` it cost more than it saved).
 vec3 radiance(Scene s, EyeRay eye, float coneSpread, out vec3 key, out vec3 keyNormal) {
     vec3 rd = eye.dir;
     vec3 ro = vec3(0.0);
     vec3 color = vec3(0.0);
     float throughput = 1.0;
     float coneWidth = 0.0;
-    Hit hit = traceScene(s, ro, rd, ID_NONE, T_MAX);
-#ifdef PROBE_PATH
-    probeRay(0, hit.id, hit.t, hit.n, throughput);  // the page's pixel inspector: src/shadertoy/path-probe.js
-#endif
+    Hit hit = traceScene(s, ro, rd, ID_NONE, T_INFINITY);
+    recordEyeRay(hit);
     key = vec3(float(hit.id), 0.0, float(ID_NONE));
     keyNormal = hit.n;
-#if EDGE_TESTS
-    firstPath = FirstPath(hit.t, vec3(0.0), vec3(0.0), 0.0, 0.0, 0.0, vec3(0.0), T_MAX, 0.0, 0.0, hit.id);
-#endif
-#if VIEW == 4
-    pathBounces = hit.id == ID_NONE ? max(pathBounces, 0) : pathBounces;
-#endif
-    if (hit.id == ID_NONE) return skyColor(rd);
+    if (hit.id == ID_NONE) {
+        recordPathEnd(0);
+        return skyColor(rd);
+    }
     // Where the eye ray meets the ground, the parallelogram its differentials span on the plane:
     // dp = t (dd - d (n.dd) / (n.d)) with n = +y. Once, before the loop: only the first hit uses it.
     vec3 dpdx = hit.t * (eye.dirDx - rd * (eye.dirDx.y / rd.y));
@@ -1101,20 +1227,9 @@ vec3 radiance(Scene s, EyeRay eye, float coneSpread, out vec3 key, out vec3 keyN
         bool blocked = traceScene(s, mix(p, leaveTorus(p, n), bvec3(meetsAgain)), l, meetsAgain ? ID_NONE : id, lightDist).id != ID_NONE;
         lit = all(bvec2(lit, !blocked));
 #endif
-#ifdef PROBE_PATH
-        probeLit(bounce, lit);
-#endif
+        recordSurface(bounce, p, l, lightDist, facing, coneWidth, lit);
         vec3 local = shadeLocal(l, n, rd, albedo, facing, lit);
         key.y = bounce == 0 ? float(lit) : key.y;
-#if EDGE_TESTS
-        if (bounce == 0) {
-            firstPath.p = p;
-            firstPath.l = l;
-            firstPath.lightDist = lightDist;
-            firstPath.facing = facing;
-            firstPath.width = coneWidth;
-        }
-#endif
 
         float mirror = s.reflectivity[id];
         // At the bounce limit the surface keeps all its weight as local colour, so lowering the
@@ -1122,9 +1237,7 @@ vec3 radiance(Scene s, EyeRay eye, float coneSpread, out vec3 key, out vec3 keyN
         // left, a reflection cannot change the 8-bit output: the path ends there.
         if (any(bvec2(bounce == BOUNCES, throughput * mirror < 1.0 / 255.0))) {
             color += throughput * local;
-#if VIEW == 4
-            pathBounces = pathBounces < 0 ? bounce : pathBounces;
-#endif
+            recordPathEnd(bounce);
             break;
         }
         color += throughput * (1.0 - mirror) * local;
@@ -1134,7 +1247,7 @@ vec3 radiance(Scene s, EyeRay eye, float coneSpread, out vec3 key, out vec3 keyN
         // Where the new object's radius of curvature -> 0 (the cone's apex), the curvature is
         // capped at that of a mirror as small as the cone's own footprint.
         float sphereSpread = 2.0 * coneWidth / s.sphereRadius;
-        float objectSpread = 2.0 * coneWidth / max(objectMirrorRadius(s, p), coneWidth);
+        float objectSpread = 2.0 * coneWidth / max(objectMirrorRadius(s.object, p), coneWidth);
         coneSpread += id == ID_SPHERE ? sphereSpread : (id == ID_OBJECT ? objectSpread : 0.0);
         rd = reflect(rd, n);
         // Leaving a convex solid: it cannot be hit again, so skip it. From inside, or leaving a
@@ -1142,24 +1255,12 @@ vec3 radiance(Scene s, EyeRay eye, float coneSpread, out vec3 key, out vec3 keyN
         // side the ray goes.
         bool again = any(bvec2(inside, reenters(id)));
         ro = mix(p, inside ? offsetAlong(p, -n) : leaveTorus(p, n), bvec3(again));
-        hit = traceScene(s, ro, rd, again ? ID_NONE : id, T_MAX);
-#ifdef PROBE_PATH
-        probeRay(bounce + 1, hit.id, hit.t, hit.n, throughput);
-#endif
+        hit = traceScene(s, ro, rd, again ? ID_NONE : id, T_INFINITY);
+        recordReflection(bounce, rd, hit, coneSpread, throughput);
         key.z = bounce == 0 ? float(hit.id) : key.z;
-#if EDGE_TESTS
-        if (bounce == 0) {
-            firstPath.reflected = rd;
-            firstPath.reflectedT = hit.t;
-            firstPath.spread = coneSpread;
-            firstPath.reflects = 1.0;
-        }
-#endif
         if (hit.id == ID_NONE) {
             color += throughput * skyColor(rd);
-#if VIEW == 4
-            pathBounces = pathBounces < 0 ? bounce + 1 : pathBounces;
-#endif
+            recordPathEnd(bounce + 1);
             break;
         }
     }
@@ -1236,26 +1337,50 @@ EyeRay eyeRay(Camera c, vec2 pixel, float footprint) {
     return ray;
 }
 
+// What every sample of a frame shares: the camera, the scene relative to its eye, and the angle
+// one pixel subtends.
+struct View {
+    Camera camera;
+    Scene scene;
+    float pixelSpread;
+};
+
+View frameView() {
+    View v;
+    v.camera = orbitCamera();
+    v.scene = sceneRelativeTo(v.camera.eyeLocal);
+    v.pixelSpread = 2.0 * v.camera.tanHalfFov / iResolution.y;
+    return v;
+}
+
+// The radiance of one sample through image point `pixel` (in pixels), standing for a square
+// `footprint` pixels on a side (1: the whole pixel; 0: a point). mainImage's one-sample form
+// takes it, and so do the page's pixel inspector (src/shadertoy/path-probe.js) and the
+// progressive form (src/shadertoy/progressive.js), which include this file.
+vec3 sampleRadiance(View v, vec2 pixel, float footprint, out vec3 key, out vec3 keyNormal) {
+    return radiance(v.scene, eyeRay(v.camera, pixel, footprint), v.pixelSpread * footprint, key, keyNormal);
+}
+
 void mainImage(out vec4 fragColor, in vec2 fragCoord) {
-    Camera camera = orbitCamera();
-    Scene s = sceneRelativeTo(camera.eyeLocal);
+    View view = frameView();
+    Camera camera = view.camera;
+    Scene s = view.scene;
 #if VIEW >= 1 && VIEW <= 3
     fragColor = vec4(firstHitView(s, eyeRay(camera, fragCoord, 1.0).dir), 1.0);
     return;
 #endif
     const int N = SAMPLES_PER_AXIS;
-    float pixelSpread = 2.0 * camera.tanHalfFov / iResolution.y;
+    float pixelSpread = view.pixelSpread;
     vec3 key, keyNormal;
     bool edge = false;
     // Which test gave the pixel its extra samples: (silhouette, shadow boundary, reflected
     // silhouette, the quad's derivatives), for the debug view.
     vec4 edges = vec4(0.0);
 #if SAMPLES_PER_AXIS == 1
-    // One sample at the pixel centre, the whole pixel its footprint, and no loop around it (a
-    // loop costs SwiftShader one more pass over its body than it has trips; see radiance).
-    vec3 linear = radiance(s, eyeRay(camera, fragCoord, 1.0), pixelSpread, key, keyNormal);
+    // One sample at the pixel centre, the whole pixel its footprint, and no loop around it.
+    vec3 pixelColor = sampleRadiance(view, fragCoord, 1.0, key, keyNormal);
 #elif ADAPTIVE_AA
-    vec3 linear = vec3(0.0);
+    vec3 pixelColor = vec3(0.0);
     for (int i = 0;; i++) {
         // Trip 0: the pixel centre, the whole pixel its footprint. Then, for a pixel near an edge,
         // the n x n grid of sub-pixel centres, each a 1/n-pixel footprint (the centre sample is
@@ -1297,23 +1422,23 @@ void mainImage(out vec4 fragColor, in vec2 fragCoord) {
             marked = max(marked, abs(dFdy(marked)));
             edge = marked > 0.0;
         }
-        linear = i <= 1 ? c : linear + c;
+        pixelColor = i <= 1 ? c : pixelColor + c;
         if (any(bvec2(!edge, i == N * N))) break;
     }
-    linear = edge ? linear / float(N * N) : linear;
+    pixelColor = edge ? pixelColor / float(N * N) : pixelColor;
 #else
     // Uniform supersampling: the n x n grid of sub-pixel centres, row by row.
-    vec3 linear = vec3(0.0);
+    vec3 pixelColor = vec3(0.0);
     for (int i = 0;; i++) {
         vec2 offset = (vec2(i % N, i / N) + 0.5) / float(N) - 0.5;
-        linear += radiance(s, eyeRay(camera, fragCoord + offset, 1.0 / float(N)), pixelSpread / float(N), key, keyNormal);
+        pixelColor += radiance(s, eyeRay(camera, fragCoord + offset, 1.0 / float(N)), pixelSpread / float(N), key, keyNormal);
         if (i == N * N - 1) break;
     }
-    linear /= float(N * N);
+    pixelColor /= float(N * N);
 #endif
 #if VIEW == 4
     // (the first sample's path: the pixel centre's)
-    linear = bouncesView(pathBounces);
+    pixelColor = bouncesView(pathBounces);
 #elif VIEW == 5
     // The pixels that took extra samples, over the picture in grey, coloured by the first test
     // that marked them: magenta a silhouette, yellow a shadow boundary, cyan a reflected
@@ -1321,7 +1446,7 @@ void mainImage(out vec4 fragColor, in vec2 fragCoord) {
     // of its own: a pixel of a quad another pixel marked.
     vec3 marked = edges.x > 0.0 ? vec3(1.0, 0.0, 1.0) : (edges.y > 0.0 ? vec3(1.0, 1.0, 0.0) : (edges.z > 0.0 ? vec3(0.0, 1.0, 1.0) : vec3(0.0, 1.0, 0.0)));
     marked = any(greaterThan(edges, vec4(0.0))) ? marked : vec3(0.0, 0.0, 1.0);
-    linear = edge ? marked : vec3(0.25 + 0.5 * dot(linear, vec3(0.299, 0.587, 0.114)));
+    pixelColor = edge ? marked : vec3(0.25 + 0.5 * dot(pixelColor, vec3(0.299, 0.587, 0.114)));
 #endif
-    fragColor = vec4(clamp(linear, 0.0, 1.0), 1.0);
+    fragColor = vec4(clamp(pixelColor, 0.0, 1.0), 1.0);
 }

@@ -104,7 +104,7 @@ void main() {
     int i = int(gl_FragCoord.x);
     vec4 a = texelFetch(rayTable, ivec2(i, 0), 0);
     vec4 d = texelFetch(rayTable, ivec2(i, 1), 0);
-    float tMax = d.w > 0.0 ? d.w : T_MAX;  // 0 in the table: no range end
+    float tMax = d.w > 0.0 ? d.w : T_INFINITY;  // 0 in the table: no range end
     vec4 p = texelFetch(rayTable, ivec2(i, 2), 0);
     vec4 q = texelFetch(rayTable, ivec2(i, 3), 0);
     shadertoy_out_color = intersectKind(int(a.w), a.xyz, d.xyz, p, q, tMax);

@@ -29,7 +29,7 @@ export const TEXTBOOK_SPHERE = `vec4 intersectSphere(vec3 ro, vec3 rd, vec3 cent
 // splits the quartic into two quadratics x^2 -+ w x + (p + z +- q / w) / 2, w = sqrt(z). No origin
 // shift, no scaling, no polishing: the closed form as written.
 export const NAIVE_TORUS = `vec4 intersectTorus(vec3 ro, vec3 rd, Torus torus, float tMax) {
-    float R = torus.majorRadius, r = torus.tube * torus.majorRadius;
+    float R = torus.majorRadius, r = torus.tubeRatio * torus.majorRadius;
     vec3 o = ro - torus.center;
     vec3 oPerp = o - dot(o, torus.axis) * torus.axis, dPerp = rd - dot(rd, torus.axis) * torus.axis;
     float n = dot(o, rd), k = 0.5 * (dot(o, o) + R * R - r * r);

@@ -35,7 +35,7 @@ void main() {
     vec4 q = texelFetch(rayTable, ivec2(i, 3), 0);
     vec4 u = texelFetch(rayTable, ivec2(i, 4), 0);
     int kind = int(a.w);
-    vec4 first = intersectKind(kind, a.xyz, d.xyz, p, q, T_MAX);
+    vec4 first = intersectKind(kind, a.xyz, d.xyz, p, q, T_INFINITY);
     vec3 n = first.yzw;
     vec3 hit = a.xyz + first.x * d.xyz;
     hit = kind == ${KINDS.sphere} ? p.xyz + p.w * n : hit;
@@ -45,7 +45,7 @@ void main() {
     vec3 e2 = cross(side, e1);
     vec3 rd = normalize(u.x * side + sqrt(max(1.0 - u.x * u.x, 0.0)) * (cos(u.y) * e1 + sin(u.y) * e2));
     vec3 ro = offsetAlong(hit, side);
-    vec4 second = intersectKind(kind, ro, rd, p, q, T_MAX);
+    vec4 second = intersectKind(kind, ro, rd, p, q, T_INFINITY);
     int row = int(gl_FragCoord.y);
     shadertoy_out_color = row == 0 ? first : (row == 1 ? vec4(ro, 0.0) : (row == 2 ? vec4(rd, 0.0) : second));
 }

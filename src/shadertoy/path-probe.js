@@ -75,11 +75,8 @@ void mainImage(out vec4 fragColor, in vec2 fragCoord) {
         probeRecords[3 * i + 2] = vec3(-1.0, 0.0, 0.0);
     }
     // The pixel's first sample as mainImage takes it: its centre, the whole pixel its footprint.
-    Camera camera = orbitCamera();
-    Scene s = sceneRelativeTo(camera.eyeLocal);
-    float pixelSpread = 2.0 * camera.tanHalfFov / iResolution.y;
     vec3 key, keyNormal;
-    probeRecords[3 * PROBE_RAYS] = radiance(s, eyeRay(camera, probePixel + 0.5, 1.0), pixelSpread, key, keyNormal);
+    probeRecords[3 * PROBE_RAYS] = sampleRadiance(frameView(), probePixel + 0.5, 1.0, key, keyNormal);
     fragColor = vec4(probeRecords[int(fragCoord.x)], 1.0);
 }
 `;

@@ -136,10 +136,8 @@ ${lines.join('\n')}
 // Linear radiance of one point sample through image point \`pixel\` (in pixels): a zero footprint
 // (the texture point-sampled: the pixel's box filter is the jitter), not clamped (the mean is).
 vec3 progressiveSample(vec2 pixel) {
-    Camera camera = orbitCamera();
-    Scene s = sceneRelativeTo(camera.eyeLocal);
     vec3 key, keyNormal;
-    return radiance(s, eyeRay(camera, pixel, 0.0), 0.0, key, keyNormal);
+    return sampleRadiance(frameView(), pixel, 0.0, key, keyNormal);
 }
 `;
 }

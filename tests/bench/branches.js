@@ -39,7 +39,7 @@ const project = fs.readFileSync(SHADER_FILE, 'utf8');
 const controls = parseControls(project);
 const onePixelSample = (text) =>
   composeImageShader(text, { hostBlock: hostControlBlock(controls, { SAMPLES: 1, ADAPTIVE_AA: 0 }, controlDefaults(controls)) }).code;
-const call = '    vec3 linear = radiance(s, eyeRay(camera, fragCoord, 1.0), pixelSpread, key, keyNormal);';
+const call = '    vec3 pixelColor = sampleRadiance(view, fragCoord, 1.0, key, keyNormal);';
 if (!project.includes(call)) throw new Error(`branches: ${SHADER_FILE} no longer has "${call.trim()}"`);
 
 const CASES = [
@@ -56,10 +56,7 @@ const CASES = [
   [
     'the same + radiance() behind if (iFrame < 0)',
     onePixelSample(
-      project.replace(
-        call,
-        `${call}\n    if (iFrame < 0) linear += radiance(s, eyeRay(camera, fragCoord.yx, 1.0), pixelSpread, key, keyNormal);`,
-      ),
+      project.replace(call, `${call}\n    if (iFrame < 0) pixelColor += sampleRadiance(view, fragCoord.yx, 1.0, key, keyNormal);`),
     ),
   ],
 ];

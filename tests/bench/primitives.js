@@ -46,12 +46,12 @@ const WARMUP = quick ? 1 : 2;
 // are constants, so what depends on the shape alone (our makeCone, the ba and m0 of iq's form) the
 // compiler may fold or hoist for either; what depends on the ray it cannot.
 const SHAPES = {
-  plane: 'intersectPlane(ro, rd, vec4(up, 1.0 - dot(up, EYE)), T_MAX)',
-  sphere: 'intersectSphere(ro, rd, vec3(0.0, 0.5, 0.0), 1.3, T_MAX)',
-  box: 'intersectBox(ro, rd, vec3(0.0, 0.5, 0.0), vec3(1.1, 0.95, 0.95), T_MAX)',
-  cone: 'intersectCone(ro, rd, makeCone(vec3(0.0, -1.0, 0.0), vec3(0.0, 2.0, 0.0), 2.0, 0.0), T_MAX)',
-  cylinder: 'intersectCylinder(ro, rd, makeCylinder(vec3(0.0, -0.8, 0.0), vec3(0.0, 1.8, 0.0), 1.1), T_MAX)',
-  torus: 'intersectTorus(ro, rd, makeTorus(vec3(0.0, 0.5, 0.0), vec3(0.0, 1.0, 0.2), 1.4, 0.45), T_MAX)',
+  plane: 'intersectPlane(ro, rd, vec4(up, 1.0 - dot(up, EYE)), T_INFINITY)',
+  sphere: 'intersectSphere(ro, rd, vec3(0.0, 0.5, 0.0), 1.3, T_INFINITY)',
+  box: 'intersectBox(ro, rd, vec3(0.0, 0.5, 0.0), vec3(1.1, 0.95, 0.95), T_INFINITY)',
+  cone: 'intersectCone(ro, rd, makeCone(vec3(0.0, -1.0, 0.0), vec3(0.0, 2.0, 0.0), 2.0, 0.0), T_INFINITY)',
+  cylinder: 'intersectCylinder(ro, rd, makeCylinder(vec3(0.0, -0.8, 0.0), vec3(0.0, 1.8, 0.0), 1.1), T_INFINITY)',
+  torus: 'intersectTorus(ro, rd, makeTorus(vec3(0.0, 0.5, 0.0), vec3(0.0, 1.0, 0.2), 1.4, 0.45), T_INFINITY)',
 };
 // The baseline's stand-in: reads the whole ray, costs a dot product.
 const NO_CALL = 'vec4(dot(ro, rd), rd)';

@@ -12,9 +12,10 @@
 //   position, every object at SCENE_ORIGIN + its local position (the project traces relative to
 //   the eye). sceneRelativeTo keeps the project's name and Scene struct but fills it with world
 //   positions, and leaves the eye in gEye for radiance;
-// - its cone: intersectCone and normalForCone exactly as the report prints them, called the way
+// - its cone: intersectCone and normalForCone exactly as the report prints them (the first renamed
+//   assignmentCone: the project's own intersectCone stays in the composed shader), called the way
 //   its addCone calls them. Placement (the report's cone is elsewhere): coneCenter = the project's
-//   CONE_BASE, coneHeight = CONE_HEIGHT, coneRadius = CONE_RADIUS (which intersectCone ignores).
+//   CONE_BASE, coneHeight = CONE_HEIGHT, coneRadius = CONE_RADIUS (which assignmentCone ignores).
 //   x^2 + z^2 - y^2 = 0 about coneCenter is the 45-degree double cone with its apex at
 //   coneCenter; keeping 0 < y < coneHeight selects the upper nappe, so the assignment's "cone"
 //   stands here as an open funnel, apex down on the project's base centre, widening to radius
@@ -33,7 +34,7 @@
 // project's intersectPlane, Cone and makeCone stay in the composed shader: makeCone fills the
 // Scene's cone (only its base is read here), intersectPlane is unused.
 //
-// @replaces intersectSphere intersectBox intersectCone sceneRelativeTo traceScene radiance
+// @replaces intersectSphere intersectBox sceneRelativeTo traceScene radiance
 
 // "No hit": the template's INFINITY (GLSL ES has no portable infinity literal).
 const float INFINITY = 1e30;
@@ -70,7 +71,7 @@ float intersectBox(vec3 ro, vec3 rd, vec3 center, vec3 halfSize) {
 }
 
 // ---- the seed's cone, as printed in the report (the PDF's line breaks joined) ----
-float intersectCone(vec3 origin, vec3 ray, vec3 coneCenter, float coneRadius, float coneHeight) {
+float assignmentCone(vec3 origin, vec3 ray, vec3 coneCenter, float coneRadius, float coneHeight) {
     float yMin = 0.0;
     float yMax = coneHeight;
     vec3 toCone = origin - coneCenter;
@@ -112,7 +113,7 @@ Scene sceneRelativeTo(vec3 eyeLocal) {
     s.sphereRadius = SPHERE_RADIUS;
     s.cubeHalfSize = CUBE_HALF_SIZE;
     vec3 coneBase = SCENE_ORIGIN + CONE_BASE;
-    s.cone = makeCone(coneBase, coneBase + vec3(0.0, CONE_HEIGHT, 0.0), CONE_RADIUS, 0.0);
+    s.object = makeCone(coneBase, coneBase + vec3(0.0, CONE_HEIGHT, 0.0), CONE_RADIUS, 0.0);
     s.light = SCENE_ORIGIN + LIGHT_POSITION;
     s.reflectivity = vec4(GROUND_REFLECTIVITY, SPHERE_REFLECTIVITY, CUBE_REFLECTIVITY, CONE_REFLECTIVITY);
     s.textureOrigin = vec2(0.0);  // unused: the texture is read at world x
@@ -170,7 +171,7 @@ return normal;
 // that the project's colour and reflectivity tables apply.
 void addCone( vec3 ro, vec3 rd, vec3 center, float radius, float height, int id, inout float hitDist, inout int hitId, inout vec3 hitNormal ){
 
-    float dist = intersectCone(ro, rd, center, radius, height);
+    float dist = assignmentCone(ro, rd, center, radius, height);
 
     if (dist < hitDist) {
         vec3 yMin = center-height;
@@ -190,7 +191,7 @@ int traceScene(Scene s, vec3 ro, vec3 rd, out float hitDist, out vec3 hitNormal)
     rayPlaneIntersection(ro, rd, s.ground.xyz, s.ground.w, ID_GROUND, hitDist, hitId, hitNormal);
     addSphere(ro, rd, s.sphereCenter, s.sphereRadius, ID_SPHERE, hitDist, hitId, hitNormal);
     addBox(ro, rd, s.cubeCenter, s.cubeHalfSize, ID_CUBE, hitDist, hitId, hitNormal);
-    addCone(ro, rd, s.cone.base, CONE_RADIUS, CONE_HEIGHT, ID_OBJECT, hitDist, hitId, hitNormal);
+    addCone(ro, rd, s.object.base, CONE_RADIUS, CONE_HEIGHT, ID_OBJECT, hitDist, hitId, hitNormal);
     return hitId;
 }
 

@@ -23,7 +23,7 @@ vec3 radiance(Scene s, EyeRay eye, float coneSpread, out vec3 key, out vec3 keyN
     float throughput = 1.0;
     float coneWidth = 0.0;
     int skipId = ID_NONE;
-    float tMax = T_MAX;
+    float tMax = T_INFINITY;
     bool shadowRay = false;     // the ray in flight is the shadow ray of the pending surface
     int bounce = 0;
     // the pending surface: its light with and without the light visible, and what follows it
@@ -55,7 +55,7 @@ vec3 radiance(Scene s, EyeRay eye, float coneSpread, out vec3 key, out vec3 keyN
         bool canBeLit = all(bvec2(!inside, facing > 0.0));
         float m = s.reflectivity[id];
         float sphereSpread = 2.0 * width / s.sphereRadius;
-        float coneSideSpread = 2.0 * width / max(objectMirrorRadius(s, p), width);
+        float coneSideSpread = 2.0 * width / max(objectMirrorRadius(s.object, p), width);
         float spread = id == ID_SPHERE ? sphereSpread : (id == ID_OBJECT ? coneSideSpread : 0.0);
         bool needShadow = all(bvec3(newSurface, canBeLit, SHADOWS != 0));
 
@@ -90,7 +90,7 @@ vec3 radiance(Scene s, EyeRay eye, float coneSpread, out vec3 key, out vec3 keyN
         ro = mix(nextRo, p, bvec3(needShadow));
         rd = mix(nextRd, l, bvec3(needShadow));
         skipId = needShadow ? id : nextSkip;
-        tMax = needShadow ? lightDist : T_MAX;
+        tMax = needShadow ? lightDist : T_INFINITY;
         shadowRay = needShadow;
     }
     return color;

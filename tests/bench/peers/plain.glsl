@@ -25,10 +25,11 @@
 // - the ground texture point-sampled at the hit's world xz: groundColor is the plain fract
 //   stripes (or floor checkerboard, TEXTURE 1); TEXTURE_FILTER is ignored, and so no ray cone;
 // - the camera's sin and cos are the built-ins (sinCos).
-// The project's Cone and makeCone stay in the composed shader: makeCone fills the Scene's cone,
+// The project's Cone, makeCone and intersectCone stay in the composed shader (the scene's new
+// object calls intersectCone; this file's cone is intersectCappedCone): makeCone fills the Scene's object,
 // whose base is read here.
 //
-// @replaces intersectPlane intersectSphere intersectBox intersectCone sceneRelativeTo traceScene
+// @replaces intersectPlane intersectSphere intersectBox sceneRelativeTo traceScene
 // @replaces groundColor radiance sinCos
 
 // The fixed offset of secondary rays off the surface, in scene units.
@@ -78,7 +79,7 @@ vec4 intersectBox(vec3 ro, vec3 rd, vec3 center, vec3 halfSize) {
 // |ba|^2 |w|^2 - y^2 = (ra |ba|^2 - (ra - rb) y)^2 / |ba|^2; on the ray this is the quadratic
 // k2 t^2 + 2 k1 t + k0 = 0 below. A ray that starts below the base (or above the top) is
 // first tested against that cap's disc.
-vec4 intersectCone(vec3 ro, vec3 rd, vec3 pa, vec3 pb, float ra, float rb) {
+vec4 intersectCappedCone(vec3 ro, vec3 rd, vec3 pa, vec3 pb, float ra, float rb) {
     vec3 ba = pb - pa;
     vec3 oa = ro - pa;
     vec3 ob = ro - pb;
@@ -123,7 +124,7 @@ Scene sceneRelativeTo(vec3 eyeLocal) {
     s.sphereRadius = SPHERE_RADIUS;
     s.cubeHalfSize = CUBE_HALF_SIZE;
     vec3 coneBase = SCENE_ORIGIN + CONE_BASE;
-    s.cone = makeCone(coneBase, coneBase + vec3(0.0, CONE_HEIGHT, 0.0), CONE_RADIUS, 0.0);
+    s.object = makeCone(coneBase, coneBase + vec3(0.0, CONE_HEIGHT, 0.0), CONE_RADIUS, 0.0);
     s.light = SCENE_ORIGIN + LIGHT_POSITION;
     s.reflectivity = vec4(GROUND_REFLECTIVITY, SPHERE_REFLECTIVITY, CUBE_REFLECTIVITY, CONE_REFLECTIVITY);
     s.textureOrigin = vec2(0.0);  // unused: the texture is read at world xz
@@ -140,7 +141,7 @@ Hit traceScene(Scene s, vec3 ro, vec3 rd, float tMax) {
     if (h.x > 0.0 && h.x < hit.t) hit = Hit(h.x, h.yzw, ID_SPHERE);
     h = intersectBox(ro, rd, s.cubeCenter, s.cubeHalfSize);
     if (h.x > 0.0 && h.x < hit.t) hit = Hit(h.x, h.yzw, ID_CUBE);
-    h = intersectCone(ro, rd, s.cone.base, s.cone.base + vec3(0.0, CONE_HEIGHT, 0.0), CONE_RADIUS, 0.0);
+    h = intersectCappedCone(ro, rd, s.object.base, s.object.base + vec3(0.0, CONE_HEIGHT, 0.0), CONE_RADIUS, 0.0);
     if (h.x > 0.0 && h.x < hit.t) hit = Hit(h.x, h.yzw, ID_OBJECT);
     return hit;
 }

@@ -24,7 +24,7 @@ vec3 radiance(Scene s, EyeRay eye, float coneSpread, out vec3 key, out vec3 keyN
     float coneWidth = 0.0;
     int skipId = ID_NONE;
     for (int bounce = 0; bounce <= BOUNCES; bounce++) {
-        Hit hit = traceScene(s, ro, rd, skipId, T_MAX);
+        Hit hit = traceScene(s, ro, rd, skipId, T_INFINITY);
         if (hit.id == ID_NONE) return color + throughput * skyColor(rd);
         vec3 n = hit.n;
         int id = hit.id;
@@ -51,7 +51,7 @@ vec3 radiance(Scene s, EyeRay eye, float coneSpread, out vec3 key, out vec3 keyN
         color += throughput * (1.0 - mirror) * local;
         throughput *= mirror;
         if (id == ID_SPHERE) coneSpread += 2.0 * coneWidth / s.sphereRadius;
-        if (id == ID_OBJECT) coneSpread += 2.0 * coneWidth / max(objectMirrorRadius(s, p), coneWidth);
+        if (id == ID_OBJECT) coneSpread += 2.0 * coneWidth / max(objectMirrorRadius(s.object, p), coneWidth);
         rd = reflect(rd, n);
         ro = inside ? offsetAlong(p, -n) : p;
         skipId = inside ? ID_NONE : id;

@@ -66,7 +66,7 @@ Scene sceneRelativeTo(vec3 eyeLocal) {
     s.sphereRadius = SPHERE_RADIUS;
     s.cubeHalfSize = CUBE_HALF_SIZE;
     vec3 coneBase = SCENE_ORIGIN + CONE_BASE;
-    s.cone = makeCone(coneBase, coneBase + vec3(0.0, CONE_HEIGHT, 0.0), CONE_RADIUS, 0.0);
+    s.object = makeCone(coneBase, coneBase + vec3(0.0, CONE_HEIGHT, 0.0), CONE_RADIUS, 0.0);
     s.light = SCENE_ORIGIN + LIGHT_POSITION;
     s.reflectivity = vec4(GROUND_REFLECTIVITY, SPHERE_REFLECTIVITY, CUBE_REFLECTIVITY, CONE_REFLECTIVITY);
     s.textureOrigin = vec2(0.0);  // unused: the texture is read at world xz
@@ -124,7 +124,7 @@ float sceneDistance(Scene s, vec3 p, out int id) {
     if (dSphere < d) { d = dSphere; id = ID_SPHERE; }
     float dCube = sdBox(p, s.cubeCenter, s.cubeHalfSize);
     if (dCube < d) { d = dCube; id = ID_CUBE; }
-    float dCone = sdCone(p, s.cone.base, s.cone.base + vec3(0.0, CONE_HEIGHT, 0.0), CONE_RADIUS);
+    float dCone = sdCone(p, s.object.base, s.object.base + vec3(0.0, CONE_HEIGHT, 0.0), CONE_RADIUS);
     if (dCone < d) { d = dCone; id = ID_OBJECT; }
     return d;
 }
@@ -234,7 +234,7 @@ vec3 radiance(Scene s, EyeRay eye, float coneSpread, out vec3 key, out vec3 keyN
         // side has radius CONE_RADIUS (1 - height / CONE_HEIGHT) across its axis.
         if (id == ID_SPHERE) coneSpread += 2.0 * coneWidth / s.sphereRadius;
         if (id == ID_OBJECT) {
-            float radiusHere = CONE_RADIUS * max(1.0 - (hit.y - s.cone.base.y) / CONE_HEIGHT, 0.0);
+            float radiusHere = CONE_RADIUS * max(1.0 - (hit.y - s.object.base.y) / CONE_HEIGHT, 0.0);
             coneSpread += 2.0 * coneWidth / max(radiusHere, coneWidth);
         }
         rd = reflect(rd, n);
