@@ -1,0 +1,26 @@
+// knip (npm run knip): unused files, exports and dependencies.
+//
+// Most entry points knip finds by itself, from what actually starts them, so that a file stays
+// "used" only while something still runs it:
+//   - package.json: bin (bin/shaderproof.js) and the scripts (`node tests/scripts/*.js`,
+//     `node tests/bench/*.js`, `vitest run --config tests/vitest.config.js`);
+//   - its Vite plugin: vite.config.js, whose root src/page/ holds index.html, whose script is
+//     src/page/main.js;
+//   - its Vitest plugin: tests/vitest.config.js, its include (tests/**/*.test.js) and its
+//     globalSetup (tests/harness/setup.js);
+//   - its ESLint plugin: eslint.config.js;
+//   - imports, including new Worker(new URL('./x.js', import.meta.url)) and
+//     fs.readFileSync(new URL('./x.js', import.meta.url)).
+// Listed here are only the entry points none of those can see.
+
+/** @type {import('knip').KnipConfig} */
+export default {
+  entry: [
+    // The raw WebGL2 test page's module: tests/harness/raw-webgl.html loads it with a <script>,
+    // and the page is opened by URL through the harness's routes (raw-webgl.js), not by Vite.
+    'tests/harness/raw-webgl-page.js',
+  ],
+  // The files that must all be reached. `!` marks what ships (the page, the command line), for
+  // `knip --production`: it checks that package.json's dependencies are what they use.
+  project: ['src/**/*.js!', 'bin/**/*.js!', 'tests/**/*.{js,ts}', '*.js'],
+};
