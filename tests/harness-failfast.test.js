@@ -1,7 +1,7 @@
 // The harness fails fast and says why (issue 12): no Chromium is said before anything else; a
 // wait on a page that gets no answer fails after its own timeout, well before the test's, with
 // what the page was doing; a crashed page or browser fails the wait at once, saying "crashed";
-// and the next test still gets a fresh page (tests/harness/watch.js, page.js).
+// and the next test still gets a fresh page (src/engine/watch.js, tests/harness/page.js).
 import { spawn } from 'node:child_process';
 import puppeteer from 'puppeteer-core';
 import { afterAll, describe, expect, test } from 'vitest';

@@ -194,7 +194,7 @@ describe('the URL', () => {
   });
 
   // A live (`const`) control is a uniform while it moves and a constant once it rests, so the
-  // still page runs the shader as it pastes (src/page/app.js, SPECIALIZE_AFTER_MS): both forms show
+  // still page runs the shader as it pastes (src/page/app/live-controls.js, SPECIALIZE_AFTER_MS): both forms show
   // the same picture, and a move back is drawn at once from the uniform form kept compiled.
   test('live controls: uniforms while they move, compiled in as constants when still', async () => {
     await withPage(async ({ page, goto }) => {

@@ -270,7 +270,7 @@ export async function button(page, name) {
   return handle;
 }
 
-// ---- the editor (CodeMirror 6, src/page/editor.js) ----------------------------------------------
+// ---- the editor (CodeMirror 6, src/page/ui/editor.js) -------------------------------------------
 
 /** The editor's text area (CodeMirror's content element). */
 export const EDITOR = '.cm-content[aria-label="Shader source"]';

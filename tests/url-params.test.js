@@ -1,4 +1,4 @@
-// The URL contract (src/page/url-params.js) without a browser: what each parameter reads as, that bad
+// The URL contract (src/page/io/url-params.js) without a browser: what each parameter reads as, that bad
 // values are clamped or ignored with a warning naming them, and that formatUrlParams writes what
 // parseUrlParams reads back.
 import { describe, expect, test } from 'vitest';

@@ -1,7 +1,7 @@
 // The raw WebGL2 test page's own code, in the browser: plain WebGL2, no three.js, no page code.
 // raw-webgl.html loads it through the harness's routes (routes.js: the files as they are on disk), so that it uses the same modules as
 // the page and the Node side: Shadertoy's uniforms and their first-frame values from the
-// Shadertoy module, the row flip and base64 from src/page/pixels.js. raw-webgl.js (in Node) and
+// Shadertoy module, the row flip and base64 from src/shared/pixels.js. raw-webgl.js (in Node) and
 // the benchmark's timer (tests/bench/timer.js) call it through page.evaluate as window.__rawWebGL.
 
 import { flipRows, toBase64 } from '../../src/shared/pixels.js';
