@@ -177,7 +177,7 @@ describe('compare with float64', () => {
       'a shader that is not the raytracer',
       '?shader=examples/pattern.glsl&size=160x90&time=0',
       {},
-      /Compare with float64 is for the built-in raytracer: this shader has no orbitCamera, sceneRelativeTo, eyeRay, radiance/,
+      /Compare with float64 is for the built-in raytracer: this shader has no frameView, sampleRadiance/,
     ],
     [
       'a multipass shader',

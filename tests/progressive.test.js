@@ -1,5 +1,5 @@
 // The progressive raytracer (issue 13): its tabs are built from shaders/raytrace.glsl
-// (src/shadertoy/progressive.js), its fingerprint covers every control, its jitter is the float64
+// (src/raytracer/progressive.js), its fingerprint covers every control, its jitter is the float64
 // reference's, its tabs compile in Shadertoy's exact header, and on SwiftShader 64 still frames
 // converge to the reference's 64 samples of the same sequence, then restart from one sample
 // after a camera change.
@@ -13,7 +13,7 @@ import {
   fingerprintInputs,
   progressiveJitter,
   progressiveTabs,
-} from '../src/shadertoy/progressive.js';
+} from '../src/raytracer/progressive.js';
 import { imageError, formatImageError } from '../src/reference/error.js';
 import { renderReference } from '../src/reference/render.js';
 import { SHADER_FILE } from './harness/config.js';

@@ -6,7 +6,7 @@ import { describe, expect, test } from 'vitest';
 import { parseControls } from '../src/shadertoy/controls.js';
 import { GOLDEN_DIR, SHADER_FILE } from './harness/config.js';
 import { MAX_DIFF_FRACTION, PIXEL_THRESHOLD, VIEWS, viewControlProblems, viewQuery, viewSize } from './views.js';
-import { EXTRA_SAMPLES_VIEW, extraSamplesValues } from '../src/shadertoy/extra-samples.js';
+import { EXTRA_SAMPLES_VIEW, extraSamplesValues } from '../src/raytracer/extra-samples.js';
 
 describe('view table', () => {
   const controls = parseControls(fs.readFileSync(SHADER_FILE, 'utf8'));

@@ -9,7 +9,7 @@
 // - 'converged': many stratified, jittered samples per pixel and the texture point-sampled, so
 //   the difference is the shader's total error, aliasing included;
 // - 'progressive': the first N samples of the progressive raytracer's own sequence
-//   (progressiveJitter of src/shadertoy/progressive.js), point-sampled as 'converged' is, so N
+//   (progressiveJitter of src/raytracer/progressive.js), point-sampled as 'converged' is, so N
 //   still frames of the progressive shader compare with it sample for sample.
 
 import { parseControls, parseConstants, controlDefaults, coerceControlValue } from '../shadertoy/controls.js';
@@ -18,7 +18,7 @@ import { intersectCylinder } from './cylinder.js';
 import { intersectTorus } from './torus.js';
 import { add, sub, scale, addScaled, dot, length, normalize, reflect, mix } from './vec3.js';
 import { PATTERNS, filteredPattern, groundFootprint } from './texture.js';
-import { progressiveJitter } from '../shadertoy/progressive.js';
+import { progressiveJitter } from '../raytracer/progressive.js';
 
 const DEG = Math.PI / 180;
 const ID_NONE = -1;
@@ -176,7 +176,7 @@ function makeScene(s) {
    * direction changes across its sample's footprint) the ground is filtered as the shader filters
    * it: over the eye ray's exact footprint, and over a ray cone of coneSpread for reflected rays.
    * Without, it is point-sampled. With `path` (an array), each ray's hit is pushed onto it as the
-   * shader's path probe records it (src/shadertoy/path-probe.js: PathRay).
+   * shader's path probe records it (src/raytracer/path-probe.js: PathRay).
    * @param {number[]} eye
    * @param {number[]} rd
    * @param {number} coneSpread
@@ -343,14 +343,14 @@ function makeSampler(camera, radiance, width, height, filter) {
 
 /**
  * One pixel of the same-ray reference, and the path of the ray through its centre (the
- * shader's first sample, the one the page's path probe records: src/shadertoy/path-probe.js).
+ * shader's first sample, the one the page's path probe records: src/raytracer/path-probe.js).
  * @param {string} shaderSource
  * @param {object} view as renderReference's
  * @param {number} x the pixel's column (fragCoord.x - 0.5)
  * @param {number} y its row counted from the bottom (fragCoord.y - 0.5)
  * @param {{extraSamples?: boolean}} [options] whether the shader gave this pixel the grid of extra
  *   samples (adaptive anti-aliasing on; with uniform supersampling every pixel takes the grid)
- * @returns {{rgb: number[], path: import('../shadertoy/path-probe.js').PathRay[]}} rgb clamped to [0, 1], as renderReference's
+ * @returns {{rgb: number[], path: import('../raytracer/path-probe.js').PathRay[]}} rgb clamped to [0, 1], as renderReference's
  */
 export function referencePixel(shaderSource, view, x, y, { extraSamples = false } = {}) {
   const s = referenceSettings(shaderSource, view.controls);

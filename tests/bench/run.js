@@ -33,7 +33,7 @@ import { withHarness } from '../harness/setup.js';
 import { replaceMarkedSection } from '../scripts/readme-section.js';
 import { timeShaders } from './timer.js';
 import { renderRawShader } from '../harness/raw-webgl.js';
-import { EXTRA_SAMPLES_VIEW, countExtraSamplePixels } from '../../src/shadertoy/extra-samples.js';
+import { EXTRA_SAMPLES_VIEW, countExtraSamplePixels } from '../../src/raytracer/extra-samples.js';
 import { composePeer } from './peers/compose-peer.js';
 import { renderReferenceParallel } from '../harness/reference-threads.js';
 import { paretoFront, chartSvg } from './chart.js';

@@ -10,7 +10,7 @@
 // reference's modules again.
 
 import { imageError } from '../../src/reference/error.js';
-import { EXTRA_SAMPLES_VIEW, extraSampleMask } from '../../src/shadertoy/extra-samples.js';
+import { EXTRA_SAMPLES_VIEW, extraSampleMask } from '../../src/raytracer/extra-samples.js';
 import { referenceView } from '../hard-views.js';
 import { renderView } from './page.js';
 import { renderReference } from '../../src/reference/render.js';

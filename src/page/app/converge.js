@@ -6,7 +6,7 @@
 // shader it converges from, and how many still frames it asks for; the frame loop asks it
 // whether another frame is wanted.
 
-import { MAX_SAMPLES, missingRaytracerFunctions, progressiveTabs } from '../../shadertoy/progressive.js';
+import { MAX_SAMPLES, missingRaytracerFunctions, progressiveTabs } from '../../raytracer/progressive.js';
 
 /** @typedef {import('./app.js').RaytracerApp} RaytracerApp */
 /** @typedef {import('./app.js').ShaderVersion} ShaderVersion */

@@ -1,7 +1,7 @@
 // The pixel inspector's GPU work, in the render worker (render-worker.js runs it as a job between
 // frames, so the buffers hold a whole frame): one pixel of the last frame drawn again, read in
 // float before the 8-bit rounding, with the value of every buffer there; and, for the raytracer,
-// the path probe (src/shadertoy/path-probe.js), a compile of the same file that writes the path
+// the path probe (src/raytracer/path-probe.js), a compile of the same file that writes the path
 // of the pixel's ray into a float target.
 //
 // The Image pass is drawn again with the material on screen, over the 2×2 quad of the pixel only
@@ -12,8 +12,8 @@
 // alpha the Image pass forces to 1.
 
 import * as THREE from 'three';
-import { edgeKind } from '../../shadertoy/extra-samples.js';
-import { PROBE_TEXELS } from '../../shadertoy/path-probe.js';
+import { edgeKind } from '../../raytracer/extra-samples.js';
+import { PROBE_TEXELS } from '../../raytracer/path-probe.js';
 
 /** @typedef {import('./pass-compiler.js').Step} Step */
 /** @typedef {import('./renderer.js').ShaderRenderer} ShaderRenderer */

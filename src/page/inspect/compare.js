@@ -13,7 +13,7 @@
 // control block and constants the reference reads; their code is not followed). The comparison
 // pauses the clock: what it measured stays on the canvas; any change after marks it out of date.
 
-import { extraSampleMask } from '../../shadertoy/extra-samples.js';
+import { extraSampleMask } from '../../raytracer/extra-samples.js';
 import { Emitter } from '../app/events.js';
 import { ReferenceCancelled } from './reference-client.js';
 

@@ -10,12 +10,12 @@
 // and the float64 reference's colour and path for that pixel (reference-client.js).
 
 import { Emitter } from '../app/events.js';
-import { readPath } from '../../shadertoy/path-probe.js';
+import { readPath } from '../../raytracer/path-probe.js';
 
 /** @typedef {import('../app/app.js').RaytracerApp} RaytracerApp */
 /** @typedef {import('./probe-program.js').ProbeProgram} ProbeProgram */
 /** @typedef {import('./reference-client.js').ReferenceClient} ReferenceClient */
-/** @typedef {import('../../shadertoy/path-probe.js').PathRay} PathRay */
+/** @typedef {import('../../raytracer/path-probe.js').PathRay} PathRay */
 
 /** Reads of a pinned pixel follow one another at most this often. */
 const MIN_INTERVAL_MS = 100;

@@ -1,4 +1,4 @@
-// The path probe of the app's shader (src/shadertoy/path-probe.js: the raytracer's file compiled
+// The path probe of the app's shader (src/raytracer/path-probe.js: the raytracer's file compiled
 // once more, its radiance() recording each ray, its mainImage showing the pixels with extra
 // samples), compiled in the render worker when the inspector or the comparison first needs it,
 // and again when the shader or a compile-time control changes. It is compiled in the live
@@ -6,12 +6,12 @@
 // constant forms draw the same picture: tests/page-controls.test.js).
 //
 // Only the raytracer has one: a single-pass shader with the functions the probe calls (the
-// progressive raytracer's test, shadertoy/progressive.js) whose control block the page read.
+// progressive raytracer's test, raytracer/progressive.js) whose control block the page read.
 
-import { extraSamplesValues } from '../../shadertoy/extra-samples.js';
+import { extraSamplesValues } from '../../raytracer/extra-samples.js';
 import { hostControlBlock } from '../../shadertoy/header.js';
-import { missingRaytracerFunctions } from '../../shadertoy/progressive.js';
-import { pathProbeHostBlock, pathProbeProject } from '../../shadertoy/path-probe.js';
+import { missingRaytracerFunctions } from '../../raytracer/progressive.js';
+import { pathProbeHostBlock, pathProbeProject } from '../../raytracer/path-probe.js';
 
 /** @typedef {import('../app/app.js').RaytracerApp} RaytracerApp */
 

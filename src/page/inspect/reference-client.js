@@ -64,7 +64,7 @@ export class ReferenceClient {
   /**
    * One pixel of the same-ray reference and the path through its centre (referencePixel).
    * @param {{source: string, view: ReferenceView, x: number, y: number, extraSamples: boolean}} question
-   * @returns {Promise<{rgb: number[], path: import('../../shadertoy/path-probe.js').PathRay[]}>}
+   * @returns {Promise<{rgb: number[], path: import('../../raytracer/path-probe.js').PathRay[]}>}
    */
   pixel(question) {
     this._pixelWorker ??= spawn();

@@ -11,7 +11,7 @@ import { formatPassMessages } from '../../shadertoy/pass-errors.js';
 import { projectTabs } from '../io/project-files.js';
 import { goBack } from '../app/gpu-context.js';
 import { element } from './dom.js';
-import { extraSamplesViewNote } from '../../shadertoy/extra-samples.js';
+import { extraSamplesViewNote } from '../../raytracer/extra-samples.js';
 
 /** @typedef {import('../app/app.js').RaytracerApp} RaytracerApp */
 /** @typedef {import('./overlay.js').Overlay} Overlay */

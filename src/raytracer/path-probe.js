@@ -21,12 +21,12 @@
 //
 // readPath() decodes what mode 0 wrote.
 
-import { singlePass } from './multipass.js';
+import { singlePass } from '../shadertoy/multipass.js';
 
 /** The macro radiance()'s record lines are behind. */
-export const PATH_PROBE_MACRO = 'PROBE_PATH';
+const PATH_PROBE_MACRO = 'PROBE_PATH';
 /** Rays recorded at most: the eye ray and its reflections (the shader's BOUNCES goes to 4). */
-export const PROBE_RAYS = 8;
+const PROBE_RAYS = 8;
 /** Texels a ray's record takes. */
 const TEXELS_PER_RAY = 3;
 /** The width of mode 0's target: every ray's texels, then the sample's radiance. */
@@ -35,7 +35,7 @@ export const PROBE_TEXELS = TEXELS_PER_RAY * PROBE_RAYS + 1;
 const NOT_TRACED = -2;
 
 /** Before the file, after the host's control block. */
-const PRELUDE = `// ---- the pixel inspector's path probe (src/shadertoy/path-probe.js) ----
+const PRELUDE = `// ---- the pixel inspector's path probe (src/raytracer/path-probe.js) ----
 #define ${PATH_PROBE_MACRO}
 uniform vec2 probePixel;   // mode 0: the pixel whose path is recorded (fragCoord - 0.5)
 uniform vec2 probeOrigin;  // mode 1: mainImage runs at gl_FragCoord.xy + probeOrigin
@@ -47,7 +47,7 @@ void probeLit(int k, bool lit);
 /** After the file. */
 const PROBE_MAIN = `
 #undef mainImage
-// ---- the pixel inspector's path probe (src/shadertoy/path-probe.js) ----
+// ---- the pixel inspector's path probe (src/raytracer/path-probe.js) ----
 // Ray k of the path (0: the eye ray; k: the k-th reflection) in texels 3k .. 3k + 2:
 // (object id, t, the weight it carries), the unit normal at its hit, (lit, 0, 0).
 const int PROBE_RAYS = ${PROBE_RAYS};
@@ -85,7 +85,7 @@ void mainImage(out vec4 fragColor, in vec2 fragCoord) {
  * The path probe of a raytracer's file, as a single-pass shader (its Image tab: the file with
  * its mainImage renamed, then the probe's own).
  * @param {string} source the raytracer's text (shaders/raytrace.glsl or an edit that keeps its functions)
- * @returns {import('./multipass.js').MultipassShader}
+ * @returns {import('../shadertoy/multipass.js').MultipassShader}
  */
 export function pathProbeProject(source) {
   return singlePass(`#define mainImage raytraceMainImage\n${source}${source.endsWith('\n') ? '' : '\n'}${PROBE_MAIN}`);
