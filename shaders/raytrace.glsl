@@ -1004,7 +1004,7 @@ vec3 leaveTorus(vec3 p, vec3 n) {
 // radiance is the lecture's loop. What else needs to know about a pixel's first path (the edge
 // tests of the adaptive anti-aliasing, the Bounces view, the page's pixel inspector) radiance
 // tells these four functions, at four moments of the path; each keeps only what the host
-// compiles in (EDGE_TESTS, VIEW 4, PROBE_PATH: the inspector's src/shadertoy/path-probe.js
+// compiles in (EDGE_TESTS, VIEW 4, PROBE_PATH: the inspector's src/raytracer/path-probe.js
 // defines probeRay and probeLit), and with none of them they are empty.
 #ifndef EDGE_TESTS
 #define EDGE_TESTS (ADAPTIVE_AA == 1 && SAMPLES > 1)
@@ -1355,8 +1355,8 @@ View frameView() {
 
 // The radiance of one sample through image point `pixel` (in pixels), standing for a square
 // `footprint` pixels on a side (1: the whole pixel; 0: a point). mainImage's one-sample form
-// takes it, and so do the page's pixel inspector (src/shadertoy/path-probe.js) and the
-// progressive form (src/shadertoy/progressive.js), which include this file.
+// takes it, and so do the page's pixel inspector (src/raytracer/path-probe.js) and the
+// progressive form (src/raytracer/progressive.js), which include this file.
 vec3 sampleRadiance(View v, vec2 pixel, float footprint, out vec3 key, out vec3 keyNormal) {
     return radiance(v.scene, eyeRay(v.camera, pixel, footprint), v.pixelSpread * footprint, key, keyNormal);
 }
