@@ -22,7 +22,7 @@ export default [
   },
   // The page runs in the browser.
   { files: ['src/page/**/*.js'], languageOptions: { globals: globals.browser } },
-  // What may import what (README, Layout). The page never loads the float64 reference up front:
+  // What may import what (docs/architecture.md, Layout). The page never loads the float64 reference up front:
   // a feature that needs it imports it with import(), when it is asked for.
   {
     files: ['src/page/**/*.js'],

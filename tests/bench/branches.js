@@ -1,4 +1,4 @@
-// What does SwiftShader skip? The experiments behind the shader's structure (README, "What
+// What does SwiftShader skip? The experiments behind the shader's structure (docs/benchmark.md, "What
 // SwiftShader rewards"): the same 60 sin() calls run straight, behind an `if` that no pixel
 // takes, and in loops of 0, 1 and 2 trips written two ways (condition at the top, as a `for`
 // reads; exit at the bottom, as the shader's loops are written); conditions joined with && and

@@ -59,7 +59,7 @@ export function primitivesMarkdown({ timed, errors, setup, environment }) {
     '|---|---|---|---|---|---|---|---|---|',
     ...table.map((cells) => `| ${cells.join(' | ')} |`),
     '',
-    `*of them from outside*: the wrong cases among the rays that start outside the solid (iq's article: most of its forms "only work for a ray with origin outside of the primitive"). *wrong as*: what was wrong first: the hit/miss decision, t beyond its tolerance, the normal (direction or length), a NaN. *worst t error*: over the hits with |rd·n| ≥ 0.1 where both sides hit, in units of K u S (K = ${K}, u = 2^-24, S the case's size); the tolerance there is 1. The iq-style peers are in [tests/bench/peers/iq/](tests/bench/peers/iq/), written from iq's formulas and adapted to the project's contract only (vec4(t, n), a miss t < 0, 0 < t < tMax; the sphere and box take their far root from inside, as the article's forms return it).`,
+    `*of them from outside*: the wrong cases among the rays that start outside the solid (iq's article: most of its forms "only work for a ray with origin outside of the primitive"). *wrong as*: what was wrong first: the hit/miss decision, t beyond its tolerance, the normal (direction or length), a NaN. *worst t error*: over the hits with |rd·n| ≥ 0.1 where both sides hit, in units of K u S (K = ${K}, u = 2^-24, S the case's size); the tolerance there is 1. The iq-style peers are in [tests/bench/peers/iq/](../tests/bench/peers/iq/), written from iq's formulas and adapted to the project's contract only (vec4(t, n), a miss t < 0, 0 < t < tMax; the sphere and box take their far root from inside, as the article's forms return it).`,
     '',
     'Where the iq-style forms go wrong:',
     '',

@@ -2,7 +2,7 @@
 // closed form a Shadertoy author writes from iq's published formulas (tests/bench/peers/iq/).
 //
 //   npm run bench:primitives              times and judges; writes tests/bench/primitives.md and
-//                                         the table in README.md (a few minutes)
+//                                         the table in docs/numerics.md (a few minutes)
 //   npm run bench:primitives -- --quick   every program at 32x18, one warm-up and one timed frame,
 //                                         and the hard cases judged; writes nothing (a smoke run,
 //                                         about 25 s, so that it cannot rot)

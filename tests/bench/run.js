@@ -4,7 +4,7 @@
 // and a plain analytic tracer.
 //
 //   npm run bench              640x360 and 1280x720, 15 timed frames after 3 warm-up frames
-//   npm run bench -- --report  the tables, chart and README section again from results.json
+//   npm run bench -- --report  the tables, chart and docs/benchmark.md section again from results.json
 //   npm run bench -- --quick   every variant once at 160x90 (CI runs this so the benchmark
 //                              cannot rot; it asserts no time and writes no results)
 //   npm run bench -- --gpu     the same on the machine's own GPU instead of SwiftShader (with
@@ -19,7 +19,7 @@
 // of the project's scene at its default settings (src/reference/, 64 jittered samples per pixel
 // at both sizes, texture point-sampled, so that every variant is ranked at both): RMSE and the fraction of pixels off by
 // more than 2/255 (src/reference/error.js). Writes tests/bench/results.json, results.md, chart.svg, and
-// the table in README.md.
+// the table in docs/benchmark.md.
 
 import fs from 'node:fs';
 import path from 'node:path';
@@ -53,10 +53,10 @@ import {
 } from './targets.js';
 
 const quick = process.argv.includes('--quick');
-// --report: the tables, chart and README section again from the last results.json, nothing measured.
+// --report: the tables, chart and docs/benchmark.md section again from the last results.json, nothing measured.
 const reportOnly = process.argv.includes('--report');
 // --gpu: the machine's own GPU (startHarness({ gpu: true })), into files of its own, so that the
-// SwiftShader results, chart and README table are never overwritten by a GPU run.
+// SwiftShader results, chart and docs/benchmark.md table are never overwritten by a GPU run.
 const gpu = process.argv.includes('--gpu');
 const OUTPUT = gpu
   ? {

@@ -4,7 +4,7 @@
 // the total error, aliasing included). Each view is measured at one sample per pixel and with
 // adaptive anti-aliasing (16 samples at edges; the same-ray reference takes its extra samples in
 // the pixels the shader's "Extra samples" debug view marks). Writes
-// tests/accuracy/results.json and the table between the accuracy markers in README.md.
+// tests/accuracy/results.json and the table between the accuracy markers in docs/numerics.md.
 //
 //   npm run accuracy            (about six minutes on two cores)
 
