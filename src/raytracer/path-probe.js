@@ -19,9 +19,11 @@
 //     samples (which the adaptive anti-aliasing gave the grid: the float64 reference samples those as it did),
 //     drawn over the 2×2 quad of the inspected pixel or over the whole frame.
 //
-// readPath() decodes what mode 0 wrote.
+// readPath() decodes what mode 0 wrote; objectNames() names the objects its rays hit, from the
+// shader's own ids and SCENE's choices.
 
 import { singlePass } from '../shadertoy/multipass.js';
+import { parseConstants } from '../shadertoy/controls.js';
 
 /** The macro radiance()'s record lines are behind. */
 const PATH_PROBE_MACRO = 'PROBE_PATH';
@@ -109,6 +111,29 @@ export function pathProbeHostBlock(hostBlock) {
  * @property {boolean | null} lit whether the light reaches the hit (null: not shaded, the sky)
  * @property {number} weight the share of the pixel's colour this ray carries (1 for the eye ray)
  */
+
+/**
+ * The names of the objects a path's rays hit, read from the shader: its `const int ID_NAME`
+ * lines name the ids (ID_NONE, no hit, is the sky), and ID_OBJECT, the scene's new object, is
+ * named by the label of SCENE's choice (its `// ui:` choices). An id the shader does not name is
+ * `object N`.
+ * @param {string} source the raytracer's text
+ * @param {import('../shadertoy/controls.js').Control[]} controls its controls (SCENE's choices)
+ * @returns {(id: number, values: Record<string, any>) => string} the name of `id` with these control values
+ */
+export function objectNames(source, controls) {
+  /** @type {Map<number, string>} */
+  const ids = new Map();
+  for (const [name, value] of Object.entries(parseConstants(source)))
+    if (name.startsWith('ID_') && typeof value === 'number' && !ids.has(value)) ids.set(value, name.slice(3).toLowerCase());
+  const scenes = controls.find((control) => control.name === 'SCENE')?.options?.map((option) => option.label.toLowerCase()) ?? [];
+  return (id, values) => {
+    const name = ids.get(id);
+    if (name === 'none') return 'sky';
+    if (name === 'object') return scenes[values.SCENE ?? 0] ?? `object ${id}`;
+    return name ?? `object ${id}`;
+  };
+}
 
 /**
  * The path mode 0 wrote: its rays in order, and the sample's radiance.

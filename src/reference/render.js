@@ -1,6 +1,6 @@
 // The float64 reference renderer: shaders/raytrace.glsl's scene, camera, shading and output
 // transform, in JavaScript doubles. It reads the control defaults and the material constants
-// from the shader's own text, so the two cannot drift apart silently.
+// from the shader's own text (its object ids too), so the two cannot drift apart silently.
 //
 // Two modes:
 // - 'same-rays': the shader's own sample positions and texture filter, so the difference to the
@@ -21,11 +21,8 @@ import { PATTERNS, filteredPattern, groundFootprint } from './texture.js';
 import { progressiveJitter } from '../raytracer/progressive.js';
 
 const DEG = Math.PI / 180;
-const ID_NONE = -1;
-const ID_GROUND = 0;
-const ID_SPHERE = 1;
-const ID_CUBE = 2;
-const ID_OBJECT = 3; // the new object of the scene (SCENE): cone, cylinder or torus
+/** The shader's object ids (its `const int ID_*` lines; ID_OBJECT: SCENE's cone, cylinder or torus). */
+const OBJECT_IDS = ['ID_NONE', 'ID_GROUND', 'ID_SPHERE', 'ID_CUBE', 'ID_OBJECT'];
 const GROUND = [0, 1, 0, 0];
 
 /**
@@ -87,6 +84,9 @@ function sceneObject(s) {
 
 /** A scene tracer bound to one set of settings. */
 function makeScene(s) {
+  const missing = OBJECT_IDS.filter((name) => typeof s[name] !== 'number');
+  if (missing.length) throw new Error(`reference: the shader has no ${missing.join(', ')}`);
+  const { ID_NONE, ID_GROUND, ID_SPHERE, ID_CUBE, ID_OBJECT } = s;
   const object = sceneObject(s);
   const colors = { [ID_SPHERE]: s.SPHERE_COLOR, [ID_CUBE]: s.CUBE_COLOR, [ID_OBJECT]: object.color };
   const reflectivity = {

@@ -10,7 +10,7 @@
 // and the float64 reference's colour and path for that pixel (reference-client.js).
 
 import { Emitter } from '../app/events.js';
-import { readPath } from '../../raytracer/path-probe.js';
+import { objectNames, readPath } from '../../raytracer/path-probe.js';
 
 /** @typedef {import('../app/app.js').RaytracerApp} RaytracerApp */
 /** @typedef {import('./probe-program.js').ProbeProgram} ProbeProgram */
@@ -21,20 +21,6 @@ import { readPath } from '../../raytracer/path-probe.js';
 const MIN_INTERVAL_MS = 100;
 /** What the readout says while the GPU context is gone. */
 const LOST = 'The GPU context was lost: the readout comes back with the picture.';
-
-/** The shader's object ids (shaders/raytrace.glsl: ID_*), the new object's by SCENE. */
-const OBJECTS = { '-1': 'sky', 0: 'ground', 1: 'sphere', 2: 'cube' };
-const SCENE_OBJECTS = ['cone', 'cylinder', 'torus'];
-
-/**
- * The name of the object a ray hit.
- * @param {number} id
- * @param {Record<string, any>} values the controls (SCENE picks the new object)
- */
-function objectName(id, values) {
-  if (id === 3) return SCENE_OBJECTS[values.SCENE ?? 0] ?? `object ${id}`;
-  return OBJECTS[id] ?? `object ${id}`;
-}
 
 /**
  * What the inspector read at the pinned pixel.
@@ -86,6 +72,8 @@ export class Inspector extends Emitter {
     this._lastStart = 0;
     /** The reference's answer for a pixel and view, kept while they stay. @type {{key: string, answer: Promise<any>} | null} */
     this._referenceFor = null;
+    /** The names of the shader's objects, read from the shader it was read of. @type {{source: string, controls: object, name: ReturnType<typeof objectNames>} | null} */
+    this._objects = null;
 
     app.on('drawn', (_, frame) => {
       if (!this.pinned) return;
@@ -170,6 +158,14 @@ export class Inspector extends Emitter {
     }
   }
 
+  /** The names of the app's shader's objects (its ids and SCENE's choices), read once a shader. */
+  _objectNames() {
+    const { source, controls } = this.app;
+    if (this._objects?.source !== source || this._objects.controls !== controls)
+      this._objects = { source, controls, name: objectNames(source, controls) };
+    return this._objects.name;
+  }
+
   /** One read of the pinned pixel: the GPU's answer, then the path probe's and the reference's. */
   async _read() {
     const app = this.app;
@@ -198,6 +194,7 @@ export class Inspector extends Emitter {
     if (pinned !== this.pinned) return;
     this.problem = null;
     const values = app.values;
+    const objectName = this._objectNames();
     const named = (/** @type {PathRay} */ ray) => ({ ...ray, object: objectName(ray.id, values) });
     const { inputs, path } = probed;
     const pathOk = wantsPath && path && probed.probeKey === program.key;
