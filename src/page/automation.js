@@ -78,6 +78,9 @@
 //                         height, bands}: how far the frame being drawn has got; null if none),
 //                         converging, stillFrames (frames since the last change)}
 //
+// The page's state is also on the page as attributes the tests wait on (page-marks.js:
+// data-error, data-context, data-hung on <html>, data-frame on the canvas).
+//
 // Every method waits for `ready` and for any compile under way, so a call right after
 // setControls() sees the new values.
 
@@ -85,6 +88,7 @@ import { toBase64 } from '../shared/pixels.js';
 import { median } from '../shared/stats.js';
 import { openShader, openShaderUrl } from './io/open-shader.js';
 import { singlePass } from '../shadertoy/multipass.js';
+import { markApp, markStartupFailure } from './page-marks.js';
 
 /** The window, with the hook. @type {Window & {raytracer?: object}} */
 const hooked = window;
@@ -96,6 +100,7 @@ const hooked = window;
  * @param {{open: (query: string) => Promise<void>}} page what the page does for open()
  */
 export function installAutomation(app, ready, ui, { open }) {
+  markApp(app);
   // the first source may still be on its way (?shader= is fetched): calls wait for it
   const loaded = () => (app.loading ?? Promise.resolve()).catch(() => {});
   // A first compile that failed rejects `ready` for good; once another shader has compiled,
@@ -300,6 +305,7 @@ export function installAutomation(app, ready, ui, { open }) {
 
 /** The hook for a page that could not start: `ready` rejects with `error`, and so does the rest. */
 export function installFailedAutomation(error) {
+  markStartupFailure(error);
   const failed = Promise.reject(error);
   failed.catch(() => {}); // reported on the page
   const fail = async () => failed;

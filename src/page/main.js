@@ -41,14 +41,15 @@ async function start() {
   const noticeAfterCompile = showAppOnPage(app, overlay);
   const ui = installUi(app, { builtinSource });
   overlay.onLine = (line, pass) => ui.editor.goToLine(line, pass);
-  const started = openView(app, ui, params, { hash: location.hash, noticeAfterCompile });
-  started.catch(() => {}); // shown on the page; `ready` rejects
   /** window.raytracer.open(query): the page as a fresh load of `query` (a URL's ?… and #…) gives it. */
   const open = (/** @type {string} */ query) => {
     const url = new URL(query, location.href);
     return openView(app, ui, parseUrlParams(url.search, url.href), { hash: url.hash, noticeAfterCompile, again: true });
   };
+  // before the first shader opens: the hook's marks (page-marks.js) follow it from its start
   installAutomation(app, app.ready, ui, { open });
+  const started = openView(app, ui, params, { hash: location.hash, noticeAfterCompile });
+  started.catch(() => {}); // shown on the page; `ready` rejects
 
   // A second link opened in this tab that differs only in its fragment loads no page: its
   // #source= is opened here, as a link opened afresh is.

@@ -1,10 +1,8 @@
 // What the page says, in one place: the notes at the top of the canvas that block nothing (what
 // a loaded shader cannot have, a file that could not be read, kept work restored), and the
 // messages in the overlay (ui/overlay.js) about what the app reports: compile errors, a lost
-// context, a frame that may never finish, a page that could not start. The overlay also says,
-// for the tests and the automation, data-error="shader-compile" on <html> while no shader could
-// run, data-context="lost" while the GPU context is gone, data-hung="true" while the watchdog's
-// message shows, and on the canvas data-frame, the number of frames drawn.
+// context, a frame that may never finish, a page that could not start. What the tests read of
+// the same states (data-error, data-hung, ...) is the automation hook's: page-marks.js.
 
 import { formatShaderMessages } from '../../shadertoy/shader-errors.js';
 import { formatPassMessages } from '../../shadertoy/pass-errors.js';
@@ -193,22 +191,18 @@ function messageFormatter(app, fileName) {
  */
 export function showStartupFailure(overlay, error) {
   const noWebGL2 = error.name === 'WebGL2UnavailableError';
-  document.documentElement.dataset.error = noWebGL2 ? 'webgl2' : 'startup';
   overlay.show(noWebGL2 ? 'WebGL2 is not available' : 'The raytracer could not start', error.message);
 }
 
 /**
  * Shows what the app reports: compile errors, an unreadable control block and a lost context in
- * the overlay; and, for the tests and the automation, data-error="shader-compile" on <html>
- * while no shader could run, data-context="lost" while the GPU context is gone, and on the
- * canvas data-frame, the number of frames drawn.
+ * the overlay.
  * @param {RaytracerApp} app
  * @param {Overlay} overlay
  * @returns {(notice: Notice) => void} shows a notice once the next compile succeeds (instead of
  *   hiding the overlay)
  */
 export function showAppOnPage(app, overlay) {
-  const root = document.documentElement.dataset;
   /** @type {Notice | null} */
   let pending = null;
   app.on('compile', (_, error, fileName) => {
@@ -217,27 +211,20 @@ export function showAppOnPage(app, overlay) {
       const title = `${fileName} did not compile${fallback}`;
       if (error.messages?.length) overlay.showMessages(title, error.messages, messageFormatter(app, fileName));
       else overlay.show(title, error.report ?? error.message);
-      if (!app.compiles.hasProgram) root.error = 'shader-compile';
       return;
     }
     if (app.notice) overlay.show(`Control block of ${fileName} not read`, app.notice);
     else if (pending) overlay.showActions(pending.title, pending.detail, pending.actions ?? []);
     else overlay.hide();
     pending = null;
-    delete root.error;
   });
   app.on('context', (_, lost) => {
-    if (lost) {
-      root.context = 'lost';
-      overlay.show(
-        'The GPU context was lost',
-        'The browser took the graphics context away (a driver reset, or too many pages using the GPU). The picture comes back when the browser restores it.',
-      );
-    } else {
-      delete root.context;
-    }
+    if (!lost) return;
+    overlay.show(
+      'The GPU context was lost',
+      'The browser took the graphics context away (a driver reset, or too many pages using the GPU). The picture comes back when the browser restores it.',
+    );
   });
-  app.on('drawn', () => (app.canvas.dataset.frame = String(app.frames.count)));
   showWatchdog(app, overlay);
   return (notice) => (pending = notice);
 }
@@ -246,22 +233,21 @@ export function showAppOnPage(app, overlay) {
  * The watchdog's message (render-client.js): a frame that has gone seconds without progress may
  * never finish; a program's first draw that takes long is still compiling, which SwiftShader
  * does on that draw. Either offers to go back to the last shader that finished a frame; it goes
- * away by itself when the drawing goes on. data-hung="true" on <html> while a frame may never
- * finish, "compiling" while a first draw compiles.
+ * away by itself when the drawing goes on.
  * @param {RaytracerApp} app
  * @param {Overlay} overlay
  */
 function showWatchdog(app, overlay) {
-  const root = document.documentElement.dataset;
+  /** The phase whose message shows (null: none). @type {string | null} */
+  let shown = null;
   app.on('hang', (_, seconds, phase = 'drawing') => {
     if (seconds === null) {
-      if (root.hung) overlay.hide();
-      delete root.hung;
+      if (shown) overlay.hide();
+      shown = null;
       return;
     }
-    const shown = phase === 'drawing' ? 'true' : 'compiling';
-    if (root.hung === shown) return; // the message stays as it is; the seconds are in its text from the start
-    root.hung = shown;
+    if (shown === phase) return; // the message stays as it is; the seconds are in its text from the start
+    shown = phase;
     const back = app.frames.lastFinished;
     const s = Math.round(seconds);
     const detail = [
