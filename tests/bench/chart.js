@@ -9,7 +9,21 @@ export function paretoFront(results) {
   return front;
 }
 
-const COLORS = ['#555555', '#1f77b4', '#2ca02c', '#9467bd', '#d62728', '#ff7f0e', '#8c564b', '#e377c2'];
+// one per group (12 with the standalone peer), so that no two series share a colour
+const COLORS = [
+  '#555555',
+  '#1f77b4',
+  '#2ca02c',
+  '#9467bd',
+  '#d62728',
+  '#ff7f0e',
+  '#8c564b',
+  '#e377c2',
+  '#bcbd22',
+  '#17becf',
+  '#393b79',
+  '#e7ba52',
+];
 const escape = (s) => s.replace(/&/g, '&amp;').replace(/</g, '&lt;');
 
 /**

@@ -1,7 +1,8 @@
 // The benchmark: speed against error, for the project's shader across its quality controls, in
 // the page's uniform form, with its savings switched off (savings-off.glsl), an empty shader
-// (the floor), and three peers (tests/bench/peers/): the assignment's algorithm, sphere tracing,
-// and a plain analytic tracer.
+// (the floor), and four peers (tests/bench/peers/): the assignment's algorithm, sphere tracing,
+// a plain analytic tracer spliced into the project's file, and a standalone plain tracer that
+// shares no line with the project (standalone.glsl: what the project's structure costs).
 //
 //   npm run bench              640x360 and 1280x720, 15 timed frames after 3 warm-up frames
 //   npm run bench -- --report  the tables, chart and docs/benchmark.md section again from results.json
@@ -11,6 +12,10 @@
 //                              --quick too); it prints the GPU's renderer string, stops with an
 //                              error if WebGL2 is missing or a software renderer, and writes
 //                              tests/bench/results-gpu.json and results-gpu.md only
+//   npm run bench -- --only 'project, 1 spp' --only standalone
+//                              only the variants whose name contains one of the --only strings
+//                              (with --quick or --gpu too): their times and errors printed,
+//                              interleaved as in a full run; no targets, nothing written
 //
 // Each variant is compiled inside Shadertoy's header and timed in headless Chromium on
 // SwiftShader (tests/harness/, and timer.js: all variants in one page, interleaved round by
@@ -43,6 +48,7 @@ import {
   PLAIN,
   SAVINGS_OFF,
   SCENES_GROUP,
+  STANDALONE,
   sceneVariant,
   adaptiveSamples,
   evaluateAdaptiveTargets,
@@ -58,6 +64,14 @@ const reportOnly = process.argv.includes('--report');
 // --gpu: the machine's own GPU (startHarness({ gpu: true })), into files of its own, so that the
 // SwiftShader results, chart and docs/benchmark.md table are never overwritten by a GPU run.
 const gpu = process.argv.includes('--gpu');
+// --only NAME (any number of times): the variants whose name contains one of them (a timed
+// comparison of a few, side by side). Names hold commas, so each string is a flag of its own.
+const onlyParts = process.argv.flatMap((arg, i) => (arg === '--only' ? [process.argv[i + 1] ?? ''] : []));
+const only = onlyParts.length ? onlyParts : null;
+if (only?.some((part) => !part || part.startsWith('--'))) {
+  console.error("npm run bench -- --only: each --only takes a part of a variant's name, e.g. --only 'project, 1 spp'");
+  process.exit(1);
+}
 const OUTPUT = gpu
   ? {
       json: 'results-gpu.json',
@@ -129,7 +143,7 @@ const EMPTY = composeImageShader(
 ).code;
 
 // group: which series a variant belongs to on the chart; spp: samples per pixel.
-export const VARIANTS = [
+export const ALL_VARIANTS = [
   { name: 'empty shader (floor)', group: 'floor', spp: 1, code: () => EMPTY },
   ...[1, 4, 9, 16].map((spp) => ({
     name: uniformSamples(spp),
@@ -171,6 +185,13 @@ export const VARIANTS = [
     code: () => peer('sdf.glsl', `#define MAX_STEPS ${steps}\n`),
   })),
   { name: PLAIN, group: 'peer: plain analytic', spp: 1, code: () => peer('plain.glsl') },
+  // A whole shader of its own, in Shadertoy's header only: none of the project's text.
+  {
+    name: STANDALONE,
+    group: 'peer: standalone plain',
+    spp: 1,
+    code: () => composeImageShader(read(path.join(BENCH_DIR, 'peers', 'standalone.glsl'))).code,
+  },
   // The other scenes (SCENE): their frame times, and their error against their own converged
   // reference (they are other pictures: off the chart and the Pareto front).
   ...[1, 2].map((scene) => ({
@@ -181,6 +202,15 @@ export const VARIANTS = [
     code: () => project({ SCENE: scene }),
   })),
 ];
+
+/** The variants this run measures: all of them, or those that --only names. */
+export const VARIANTS = only ? ALL_VARIANTS.filter((v) => only.some((part) => v.name.includes(part))) : ALL_VARIANTS;
+if (!VARIANTS.length) {
+  console.error(
+    `npm run bench -- --only ${only.map((part) => JSON.stringify(part)).join(' --only ')}: no variant's name contains that; the names:\n  ${ALL_VARIANTS.map((v) => v.name).join('\n  ')}`,
+  );
+  process.exit(1);
+}
 
 /**
  * The fraction of pixels to which an adaptive variant gave extra samples: its "Extra samples" debug
@@ -193,7 +223,9 @@ async function extraSampleFraction(variant, width, height) {
 }
 
 async function main() {
-  console.log(`benchmark${quick ? ' (quick)' : ''}: ${VARIANTS.length} variants at ${SIZES.map((s) => s.join('x')).join(' and ')}`);
+  console.log(
+    `benchmark${quick ? ' (quick)' : ''}${only ? ' (--only)' : ''}: ${VARIANTS.length} variants at ${SIZES.map((s) => s.join('x')).join(' and ')}`,
+  );
   const results = reportOnly ? JSON.parse(read(path.join(BENCH_DIR, OUTPUT.json))) : [];
   const failures = [];
   if (!reportOnly)
@@ -274,6 +306,10 @@ async function main() {
   }
   if (quick) {
     console.log(`\nquick run: all ${VARIANTS.length} variants compiled, rendered and were measured; nothing written.`);
+    return;
+  }
+  if (only) {
+    console.log(`\n--only: ${VARIANTS.length} of ${ALL_VARIANTS.length} variants measured; no targets, nothing written.`);
     return;
   }
 
