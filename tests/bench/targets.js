@@ -13,7 +13,7 @@ const ms = (r) => `${r.medianMs.toFixed(1)} ms`;
 
 export const uniformSamples = (spp) => `project, ${spp} spp`;
 export const adaptiveSamples = (spp) => `project, adaptive, ${spp} samples at edges`;
-export const PROJECT = uniformSamples(1);
+const PROJECT = uniformSamples(1);
 export const PAGE_FORM = 'project, page form (uniforms), 1 spp';
 export const SAVINGS_OFF = 'project, savings off';
 export const ONE_TRACE_SITE = 'project, one trace site (alternating loop)';
@@ -87,7 +87,7 @@ export function evaluateTargets(results) {
 
 // The anti-aliasing targets (issue 20), at each size: adaptive with 16 edge samples against
 // uniform supersampling, and every adaptive variant on the front among the sampling choices.
-export const ADAPTIVE_TIME_TARGET = 2.0;
+const ADAPTIVE_TIME_TARGET = 2.0;
 export function evaluateAdaptiveTargets(results) {
   const one = by(results, PROJECT);
   const four = by(results, uniformSamples(4));
