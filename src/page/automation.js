@@ -190,7 +190,7 @@ export function installAutomation(app, ready, ui, { open }) {
 
     // read in the same task as the frame was drawn (no preserveDrawingBuffer)
     async nextFrame() {
-      app.frames.readBackNext = true;
+      app.frames.readBackNextFrame();
       const drawn = await new Promise((resolve) => {
         const wait = (_, frame) => (frame.pixels ? resolve(frame) : app.once('drawn', wait));
         app.once('drawn', wait);

@@ -232,7 +232,7 @@ export async function openView(app, ui, params, { hash, noticeAfterCompile, agai
     showValueNotes(stage, [...params.warnings, ...warnings].map(plainWarning));
     return standIn;
   });
-  app.loading = opened.then(() => {});
+  app.setLoading(opened.then(() => {}));
   const standIn = await opened;
   const compiled = app.compiles.compile({ orElse: standIn?.() });
   if (!again) {
@@ -263,12 +263,12 @@ async function leaveView(app, ui, params) {
   app.inputs.pause();
   await app.frames.idle();
   app.inputs.restart();
-  app.inputs.playing = params.time === undefined;
+  if (params.time === undefined) app.inputs.play(); // ?time=T: that instant, paused
   app.inputs.setSpeed(params.speed ?? 1);
   app.inputs.setStartMouse(params.mouse ?? null);
   app.canvasSize.setFixed(params.size ?? null);
-  app.canvasSize.scale = params.scale ?? 1;
-  app.canvasSize.cap = params.cap ?? 0;
+  app.canvasSize.setScale(params.scale ?? 1);
+  app.canvasSize.setCap(params.cap ?? 0);
   ui.panel.setView({ scale: app.canvasSize.scale, cap: app.canvasSize.cap, sizeFixed: Boolean(app.canvasSize.fixed) });
   await Promise.all(params.channels.map((url, i) => (url || !app.channels.inUse(i) ? null : app.setChannel(i, null))));
   app.forgetValues();

@@ -92,9 +92,9 @@ export class RaytracerApp extends Emitter {
     this.values = {};
     /** Why the control block could not be read (the shader then runs with its own defaults). @type {string | null} */
     this.notice = null;
-    /** The first source on its way (set by the page while it fetches it). @type {Promise<void> | null} */
+    /** The first source on its way (the page's, while it fetches it: setLoading). @type {Promise<void> | null} */
     this.loading = null;
-    /** What to run instead of a shader that hung (io/hang-guard.js), once the page has one. @type {import('../io/hang-guard.js').HangGuard | null} */
+    /** What to run instead of a shader that hung (io/hang-guard.js: setHangGuard), once the page has one. @type {import('../io/hang-guard.js').HangGuard | null} */
     this.hangGuard = null;
 
     /** When to draw, and drawing. */
@@ -330,18 +330,36 @@ export class RaytracerApp extends Emitter {
     this.frames.request();
   }
 
+  // ---- what the page gives it -------------------------------------------------------------------
+
+  /**
+   * The source on its way (calls that need the shader's controls wait for it).
+   * @param {Promise<void>} loading
+   */
+  setLoading(loading) {
+    this.loading = loading;
+  }
+
+  /**
+   * What remembers the shader that hung and what to run instead (io/hang-guard.js).
+   * @param {import('../io/hang-guard.js').HangGuard} guard
+   */
+  setHangGuard(guard) {
+    this.hangGuard = guard;
+  }
+
   // ---- size and channels -----------------------------------------------------------------------
 
   /** @param {number} scale resolution scale of the device pixels */
   setScale(scale) {
-    this.canvasSize.scale = scale;
+    this.canvasSize.setScale(scale);
     this.emit('state');
     this.frames.request();
   }
 
   /** @param {number} cap cap on the drawing buffer's longer side, in device pixels (0: none) */
   setCap(cap) {
-    this.canvasSize.cap = Math.max(0, Math.round(Number(cap) || 0));
+    this.canvasSize.setCap(cap);
     this.emit('state');
     this.frames.request();
   }

@@ -69,6 +69,16 @@ export class CanvasSize {
     this.cap = cap;
   }
 
+  /** @param {number} scale resolution scale of the device pixels (without a fixed size) */
+  setScale(scale) {
+    this.scale = scale;
+  }
+
+  /** @param {number} cap cap on the drawing buffer's longer side, in device pixels (0: none) */
+  setCap(cap) {
+    this.cap = Math.max(0, Math.round(Number(cap) || 0));
+  }
+
   /**
    * A fixed drawing-buffer size (device px), or null: the canvas follows the layout again.
    * @param {Size | null} size

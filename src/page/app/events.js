@@ -5,7 +5,7 @@
 /**
  * A frame the app drew and showed.
  * @typedef {object} DrawnEvent
- * @property {Uint8Array | null} pixels RGBA8, rows top to bottom, when it was asked for (FrameLoop.readBackNext)
+ * @property {Uint8Array | null} pixels RGBA8, rows top to bottom, when it was asked for (FrameLoop.readBackNextFrame)
  * @property {number} width
  * @property {number} height
  * @property {number} frame its iFrame

@@ -36,7 +36,7 @@ export class FrameLoop {
     /** How far the frame under way has got: rows done of its height, bands drawn (null: none under way). @type {{y: number, height: number, bands: number} | null} */
     this.progress = null;
     /** Whether the next frame the page draws by itself is read back (the 'drawn' event's pixels). */
-    this.readBackNext = false;
+    this._readBackNext = false;
     /** The last shader a frame was finished with (the watchdog goes back to it). @type {ShaderVersion | null} */
     this.lastFinished = null;
 
@@ -97,9 +97,14 @@ export class FrameLoop {
   _tick(now) {
     this._raf = 0;
     if (this._drawing || !(this._dirty || this.running)) return;
-    const readBack = this.readBackNext;
-    this.readBackNext = false;
+    const readBack = this._readBackNext;
+    this._readBackNext = false;
     this.draw(now, readBack).catch(() => {}); // a lost context: the page says so
+  }
+
+  /** The next frame the page draws by itself is read back: its 'drawn' event has its pixels. */
+  readBackNextFrame() {
+    this._readBackNext = true;
   }
 
   /**

@@ -83,7 +83,7 @@ export class HangGuard {
  * @param {HangGuard} guard
  */
 export function watchHangs(app, guard) {
-  app.hangGuard = guard;
+  app.setHangGuard(guard);
   app.on('hang', (_, seconds, phase) => {
     if (seconds !== null) guard.record(app.version(), app.frames.lastFinished, { phase, seconds });
   });
