@@ -48,6 +48,25 @@ export default [
       ],
     },
   },
+  // The page's state (app/) is below its widgets and its edge: ui/, io/ and inspect/ import app/,
+  // never the other way (what app/ needs from io/, a loader, is given to it: main.js).
+  {
+    files: ['src/page/app/**/*.js'],
+    rules: {
+      'no-restricted-imports': [
+        'error',
+        {
+          patterns: [
+            REFERENCE_RULE,
+            {
+              group: ['../ui/*', '../io/*', '../inspect/*', '../main.js', '../automation.js', '../open-view.js'],
+              message: 'app/ is the state the rest of the page uses: it emits events and is given what it needs, never imports them.',
+            },
+          ],
+        },
+      ],
+    },
+  },
   // The Shadertoy contract, the reference and the shared helpers run in both.
   {
     files: ['src/shadertoy/**/*.js', 'src/reference/**/*.js', 'src/shared/**/*.js'],

@@ -40,6 +40,12 @@ import { Channels } from './channels.js';
  * @typedef {{name?: string, origin?: RaytracerApp['origin'], url?: string|null, info?: object | null, continues?: boolean}} ProjectFrom
  */
 
+/**
+ * What runs instead of a shader that hung (io/hang-guard.js's HangGuard): the last shader that
+ * finished a frame before `project` with `values` hung, or null.
+ * @typedef {{backFor: (project: MultipassShader, values: Record<string, any>) => ShaderVersion | null}} HangFallback
+ */
+
 /** @extends {Emitter<AppEvents>} */
 export class RaytracerApp extends Emitter {
   /**
@@ -47,13 +53,14 @@ export class RaytracerApp extends Emitter {
    * @param {object} options
    * @param {RenderClient} options.gpu a started render worker's client
    * @param {HTMLCanvasElement} options.canvas
+   * @param {import('./channels.js').ImageLoader} options.loadImage the channels' images fetched and decoded (io/shader-loader.js)
    * @param {string} options.fileName the shader's name in error messages
    * @param {{width:number, height:number} | null} [options.size] fixed drawing-buffer size (device px)
    * @param {number} [options.scale] resolution scale of the device pixels (without a fixed size)
    * @param {number} [options.cap] cap on the drawing buffer's longer side (device px; 0: none)
    * @param {boolean} [options.playing]
    */
-  constructor({ gpu, canvas, fileName, size = null, scale = 1, cap = 0, playing = true }) {
+  constructor({ gpu, canvas, loadImage, fileName, size = null, scale = 1, cap = 0, playing = true }) {
     super();
     this.canvas = canvas;
     /** Shows the frames the worker draws. */
@@ -64,13 +71,13 @@ export class RaytracerApp extends Emitter {
     this.gpu = gpu;
     gpu.on('hang', (_, seconds, phase) => this.emit('hang', seconds, phase));
     this.inputs = new ShadertoyInputs();
-    this.inputs.playing = playing;
+    if (!playing) this.inputs.pause();
     this.inputs.attach(canvas);
     this.inputs.onMouseChange = () => this.frames.request();
     /** The drawing buffer's size: fixed, or the layout's with scale and cap. */
     this.canvasSize = new CanvasSize(canvas, { maxSide: () => this.gpu.maxSize, fixed: size, scale, cap });
     /** The images in iChannel0..3. */
-    this.channels = new Channels(gpu);
+    this.channels = new Channels(gpu, loadImage);
     /** Shadertoy's keyboard texture, for the passes that read it (the page's keys: ui/keys.js). */
     this.keyboard = new KeyboardState();
 
@@ -94,7 +101,7 @@ export class RaytracerApp extends Emitter {
     this.notice = null;
     /** The first source on its way (the page's, while it fetches it: setLoading). @type {Promise<void> | null} */
     this.loading = null;
-    /** What to run instead of a shader that hung (io/hang-guard.js: setHangGuard), once the page has one. @type {import('../io/hang-guard.js').HangGuard | null} */
+    /** What to run instead of a shader that hung (io/hang-guard.js: setHangGuard), once the page has one. @type {HangFallback | null} */
     this.hangGuard = null;
 
     /** When to draw, and drawing. */
@@ -342,7 +349,7 @@ export class RaytracerApp extends Emitter {
 
   /**
    * What remembers the shader that hung and what to run instead (io/hang-guard.js).
-   * @param {import('../io/hang-guard.js').HangGuard} guard
+   * @param {HangFallback} guard
    */
   setHangGuard(guard) {
     this.hangGuard = guard;

@@ -1,17 +1,21 @@
 // The images in iChannel0..3, as the page loaded them: the one owner of each channel's image
 // (kept to give a new render worker again), its size (the panel shows it) and the URL it came
-// from (a shared link carries it). The worker gets a copy of each image.
-
-import { loadImage } from '../io/shader-loader.js';
+// from (a shared link carries it). The worker gets a copy of each image. Fetching and decoding
+// an image is the page's edge (io/shader-loader.js's loadImage), given to it.
 
 /** @typedef {import('./render-client.js').RenderClient} RenderClient */
+/** @typedef {(source: string | Blob) => Promise<ImageBitmap>} ImageLoader */
 
 const CHANNEL_COUNT = 4;
 
 export class Channels {
-  /** @param {RenderClient} gpu */
-  constructor(gpu) {
+  /**
+   * @param {RenderClient} gpu
+   * @param {ImageLoader} loadImage an image (a URL, a File or Blob) fetched and decoded, rows flipped as Shadertoy uploads them
+   */
+  constructor(gpu, loadImage) {
     this.gpu = gpu;
+    this.loadImage = loadImage;
     /** The image in each channel, as loaded (null: black). @type {Array<ImageBitmap | null>} */
     this.images = Array(CHANNEL_COUNT).fill(null);
     /** The URL of each channel's image, when it came from one. @type {Array<string | null>} */
@@ -20,13 +24,13 @@ export class Channels {
 
   /**
    * Loads an image (URL, File or Blob) into a channel; null empties it. Rejects with a readable
-   * reason (shader-loader.js) and leaves the channel as it was.
+   * reason (the loader's) and leaves the channel as it was.
    * @param {number} index
    * @param {string | Blob | null} source
    */
   async set(index, source) {
     if (!(Number.isInteger(index) && index >= 0 && index < CHANNEL_COUNT)) throw new Error(`no channel ${index}: iChannel0..3`);
-    const image = source === null ? null : await loadImage(source);
+    const image = source === null ? null : await this.loadImage(source);
     this.images[index] = image;
     this.urls[index] = typeof source === 'string' ? source : null;
     await this._send(index);
