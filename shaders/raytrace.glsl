@@ -616,7 +616,12 @@ bool nearRevolution(RayCone c, vec3 base, vec3 axis, float height, float ra, flo
     vec2 tCap = (vec2(0.0, height) - yo) / yd;
     vec2 rhoCap = vec2(length(oPerp + tCap.x * dPerp), length(oPerp + tCap.y * dPerp));
     vec2 rim = abs(rhoCap - vec2(ra, ra + k * height)) * abs(yd);
-    bvec2 nearRim = lessThan(rim, vec2(widthAt(c, tCap.x), widthAt(c, tCap.y)));
+    vec2 wCap = vec2(widthAt(c, tCap.x), widthAt(c, tCap.y));
+    // A rim crossed behind where the ray ends, by more than the cone's width across it, is hidden
+    // (the back half of the base ellipse, behind the solid's own body): (tCap - tEnd) |yd| is how
+    // far the ray's end lies from the cap's plane, as |rho - r| |yd| is how far from the rim.
+    bvec2 inView = lessThan((tCap - c.tEnd) * abs(yd), wCap);
+    bvec2 nearRim = bvec2(vec2(lessThan(rim, wCap)) * vec2(inView));
     bool inFront = all(bvec2(tc + bound > 0.0, tc - bound < c.tEnd));
     bool rims = all(bvec2(yd != 0.0, any(nearRim)));  // a ray parallel to the caps crosses no rim
     return all(bvec2(inFront, any(bvec2(nearSide, rims))));

@@ -14,6 +14,7 @@
 //                              tests/bench/results-gpu.json and results-gpu.md only
 //   npm run bench -- --only 'project, 1 spp' --only standalone
 //                              only the variants whose name contains one of the --only strings
+//                              (add --size 640x360 for one size)
 //                              (with --quick or --gpu too): their times and errors printed,
 //                              interleaved as in a full run; no targets, nothing written
 //
@@ -105,12 +106,25 @@ async function withBenchHarness(body) {
     process.exit(1);
   }
 }
-const SIZES = quick
-  ? [[160, 90]]
-  : [
-      [640, 360],
-      [1280, 720],
-    ];
+// --size WxH: that size alone (with --only: a quicker comparison; a full run keeps both sizes).
+const sizeArg = process.argv[process.argv.indexOf('--size') + 1];
+const sizeMatch = process.argv.includes('--size') ? /^(\d+)x(\d+)$/.exec(sizeArg ?? '') : null;
+if (process.argv.includes('--size') && !sizeMatch) {
+  console.error(`npm run bench -- --size: expected WxH such as 640x360, got "${sizeArg ?? ''}"`);
+  process.exit(1);
+}
+if (sizeMatch && !only) {
+  console.error('npm run bench -- --size: only with --only (a full run measures both sizes, as its tables show)');
+  process.exit(1);
+}
+const SIZES = sizeMatch
+  ? [[Number(sizeMatch[1]), Number(sizeMatch[2])]]
+  : quick
+    ? [[160, 90]]
+    : [
+        [640, 360],
+        [1280, 720],
+      ];
 // Each variant is compiled COPIES times (the copies differ by a comment) and timed as separate
 // programs, their frames pooled: on SwiftShader one compilation of a shader can run 20-40%
 // slower than another of the same text, for as long as it lives (seen for the project's shader:
