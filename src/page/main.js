@@ -12,7 +12,7 @@ import { parseUrlParams } from './io/url-params.js';
 import { fetchShader, loadImage, shaderName } from './io/shader-loader.js';
 import { HangGuard, watchHangs } from './io/hang-guard.js';
 import { openShader } from './io/open-shader.js';
-import { BUILTIN_NAME, keptWork, linkedShader, openView, useBuiltinSource } from './open-view.js';
+import { BUILTIN_NAME, linkedShader, openView, useBuiltinSource } from './open-view.js';
 import { singlePass } from '../shadertoy/multipass.js';
 
 useBuiltinSource(builtinSource);
@@ -59,7 +59,7 @@ async function start() {
     if (!linked) return;
     if (linked.notice) noticeAfterCompile(linked.notice);
     app.loadProject(linked.project, linked.from);
-    keptWork(app, ui, undefined, linked);
+    ui.kept.open(BUILTIN_NAME, linked);
     app.compiles.compile().catch(() => {});
   });
   return app;

@@ -1,15 +1,13 @@
 // The page opened at a URL's view: the shader (the one a link carries in its #source=, the
 // ?shader= file, or the built-in raytracer), its controls, size, clock, mouse and channels, the
-// edits kept for it, and the notes on what it could not have. The page's own load (main.js) and
+// edits kept for it (kept-work.js), and the notes on what it could not have. The page's own load (main.js) and
 // window.raytracer.open() (automation.js) both go through openView, so that a page put in a
 // state by open() is the page a fresh load of that URL gives (tests/page-open.test.js holds the
 // two pixel-identical).
 
-import { sayOnNote, showKeptOffer, showRestoredNote, showValueNotes } from './ui/notices.js';
+import { showValueNotes } from './ui/notices.js';
 import { fetchShader, shaderName } from './io/shader-loader.js';
 import { BUILTIN_BASE, sourceFromHash } from './io/share-link.js';
-import { sharedKey } from './io/kept-source.js';
-import { deserializeProject, serializeProject } from './io/project-files.js';
 import { readShader } from './io/open-shader.js';
 import { CHANNEL_PARAMS } from './io/url-params.js';
 import { singlePass } from '../shadertoy/multipass.js';
@@ -100,64 +98,6 @@ async function initialSource(params, hash) {
 /** A console warning as the page's note says it: without the console's "who says". @param {string} warning */
 const plainWarning = (warning) => warning.replace(/^(URL parameter |URL: )/, '');
 
-/** Whether this load is the same page again (a reload, back or forward), not a link opened afresh. */
-function reopened() {
-  const navigation = /** @type {PerformanceNavigationTiming | undefined} */ (performance.getEntriesByType?.('navigation')[0]);
-  return navigation?.type === 'reload' || navigation?.type === 'back_forward';
-}
-
-/**
- * Work is never lost (io/kept-source.js): edits kept for the page's shader (the ?shader= file, the
- * built-in one, or the shader a link carries), every tab of a multipass one, come back on a
- * reload, with a note that can discard them. A link opened afresh runs what it names: kept edits
- * of that shader are set aside and offered, never run in its place.
- * @param {RaytracerApp} app
- * @param {{kept: import('./io/kept-source.js').KeptSource}} ui the page's kept edits
- * @param {string | undefined} shader the ?shader= parameter
- * @param {FirstSource} first what the page loaded
- * @returns {(() => ShaderVersion) | null} edits restored: the file, to run while they do not compile
- */
-export function keptWork(app, ui, shader, { project, from }) {
-  const stage = /** @type {HTMLElement} */ (document.getElementById('stage'));
-  const file = { name: from.name, source: serializeProject(project) };
-  const own = app.version(); // the file as it is, before any edit of it
-  const kept = ui.kept.open(from.origin === 'editor' ? sharedKey(file) : (shader ?? BUILTIN_NAME), file);
-  /** @param {{name: string, source: string}} edits */
-  const load = (edits) =>
-    app.loadProject(deserializeProject(edits.source), { name: edits.name, origin: 'editor', info: from.info ?? null });
-  if (kept && reopened()) {
-    load(kept);
-    const note = showRestoredNote(stage, kept.name, () => app.setProject(project, from).catch(() => {}));
-    // the note belongs to the text it restored: once that is edited or replaced, Discard would
-    // throw away what it did not restore
-    const stale = (/** @type {string} */ text) => text !== kept.source && note.remove();
-    ui.kept.watch(stale);
-    app.on('source', () => stale(serializeProject(app.project)));
-    // edits that do not compile (kept mid-work): the file runs until they do, and the note says so
-    app.on('compile', (error) => {
-      const standing = error && app.compiles.running?.load === own.load;
-      sayOnNote(note, standing ? `They do not compile yet: the picture is ${from.name} as the file has it, until they do.` : null);
-    });
-    // with the values the page runs (a link's): those of the file's controls
-    return () => ({
-      ...own,
-      values: Object.fromEntries(Object.keys(own.values ?? {}).flatMap((name) => (name in app.values ? [[name, app.values[name]]] : []))),
-    });
-  }
-  if (kept) ui.kept.setAside();
-  const earlier = ui.kept.earlier();
-  if (!earlier) return null;
-  showKeptOffer(stage, earlier.name, {
-    open: () => {
-      ui.kept.forgetEarlier();
-      load(earlier);
-      app.compiles.compile().catch(() => {});
-    },
-    discard: () => ui.kept.forgetEarlier(),
-  });
-  return null;
-}
-
 /**
  * The shader about to run is the one that hung last time (io/hang-guard.js): run the last one that
  * finished a frame instead, say so, and offer the text that hung back to the editor, not run.
@@ -226,7 +166,7 @@ export async function openView(app, ui, params, { hash, noticeAfterCompile, agai
   const opened = first.then((loaded) => {
     if (loaded.notice) noticeAfterCompile(loaded.notice);
     app.loadProject(loaded.project, loaded.from);
-    const standIn = keptWork(app, ui, params.shader, loaded);
+    const standIn = ui.kept.open(params.shader ?? BUILTIN_NAME, loaded); // kept-work.js
     const { warnings } = app.applyControls(params.controls, 'URL');
     avoidHungShader(app, noticeAfterCompile); // after the link's values: a value can be what hung
     showValueNotes(stage, [...params.warnings, ...warnings].map(plainWarning));

@@ -10,10 +10,10 @@ import { installRecordDialog } from './record-dialog.js';
 import { installShortcuts, watchKeyboard } from './keys.js';
 import { pageActions } from './actions.js';
 import { installViewNote, showLoadNotes } from './notices.js';
-import { KeptSource } from '../io/kept-source.js';
+import { KeptWork } from '../kept-work.js';
 import { droppedKind } from '../io/shader-loader.js';
-import { BUILTIN_BASE, shareLink } from '../io/share-link.js';
-import { serializeProject, shaderNotes } from '../io/project-files.js';
+import { shareLink } from '../io/share-link.js';
+import { shaderNotes } from '../io/project-files.js';
 import { openShader } from '../io/open-shader.js';
 import { installInspection } from '../inspect/inspection.js';
 
@@ -63,7 +63,7 @@ export function installUi(app, { builtinSource }) {
     activeTab: () => editor.activeTab,
     toggleEditor: () => editor.toggle(),
     screenshotSize: (width, height) => panel.screenshotSize(width, height),
-    shipped: () => shippedBase(),
+    shipped: () => kept.shippedBase(), // (kept: below, called later)
   });
   const canvas = /** @type {HTMLCanvasElement} */ (document.getElementById('view'));
   const inspection = installInspection(app, { stage, canvas, builtinSource });
@@ -97,15 +97,15 @@ export function installUi(app, { builtinSource }) {
         },
       ),
   });
-  // an edited shader's name: "untitled" after a paste over everything, else "NAME (edited)"
-  const kept = new KeptSource();
+  // work is never lost: what is kept of the editor's text, and its name
+  const kept = new KeptWork(app, builtinSource);
   const editor = new Editor(/** @type {HTMLElement} */ (document.getElementById('editor')), {
     apply: (project, pasted) =>
       app
         // an edit goes on with the shader's clock; a paste over everything is a new shader
         .setProject(project, {
           origin: 'editor',
-          name: kept.nameFor(serializeProject(project), pasted),
+          name: kept.nameFor(project, pasted),
           info: app.projectInfo,
           continues: !pasted,
         })
@@ -114,17 +114,11 @@ export function installUi(app, { builtinSource }) {
       // a Shadertoy export pasted in: that shader, by its own name
       pastedShader = true;
       open(text, 'the pasted text', { origin: 'editor', json: true }, (loaded) =>
-        kept.loadedFile({ name: String(loaded.from.name), source: serializeProject(loaded.project) }),
+        kept.loadedFile(String(loaded.from.name), loaded.project),
       );
     },
     onToggle: (open) => toolbar.setEditorOpen(open),
-    // what the user typed is kept, and a shader they made (pasted, restored); a file the page
-    // loaded instead (a dropped one, the one the watchdog went back to) is not theirs to keep, and
-    // leaves what is kept alone
-    onChange: (project, typed, pastedOver = false) => {
-      const text = serializeProject(project);
-      if (typed || app.origin === 'editor' || text === kept.pageFile?.source) kept.save(text, pastedOver);
-    },
+    onChange: (project, typed, pastedOver = false) => kept.edited(project, typed, pastedOver),
   });
 
   // ---- notes on what a loaded shader cannot have ----------------------------------------------
@@ -185,7 +179,6 @@ export function installUi(app, { builtinSource }) {
     }
   });
   app.on('source', () => {
-    if (app.origin !== 'editor') kept.loadedFile({ name: app.fileName, source: serializeProject(app.project) });
     panel.setControls(app.controls, app.values);
     panel.setConverging(app.converge.on, app.converge.available);
     editor.setProject(app.project, app.fileName);
@@ -254,19 +247,7 @@ export function installUi(app, { builtinSource }) {
     }
   });
 
-  /**
-   * The file the page ships that the editor's text is an edit of (the built-in raytracer, or the
-   * ?shader= file), or null (a paste, a dropped file, a link's own shader).
-   * @returns {{base: string, source: string} | null}
-   */
-  function shippedBase() {
-    const base = kept.base;
-    if (!base || kept.pasted || app.origin !== 'editor') return null;
-    if (app.shaderUrl) return base === kept.pageFile ? { base: app.shaderUrl, source: base.source } : null;
-    return base.source === builtinSource ? { base: BUILTIN_BASE, source: builtinSource } : null;
-  }
-
   /** The link that reproduces this view (share-link.js). */
-  const shareUrl = async () => (await shareLink(app, shippedBase())).url;
+  const shareUrl = async () => (await shareLink(app, kept.shippedBase())).url;
   return { toast, toolbar, panel, editor, kept, actions, shareUrl, recording, open, inspection };
 }
