@@ -31,17 +31,14 @@ import fs from 'node:fs';
 import path from 'node:path';
 import { composeImageShader, hostControlBlock } from '../../src/shadertoy/header.js';
 import { parseControls } from '../../src/shadertoy/controls.js';
-import { imageError } from '../../src/reference/error.js';
-import { median } from '../../src/shared/stats.js';
 import { REPO_ROOT, SHADER_FILE } from '../harness/config.js';
 import { rendererLabel } from '../../src/engine/browser.js';
 import { withHarness } from '../harness/setup.js';
 import { replaceMarkedSection } from '../scripts/readme-section.js';
-import { timeShaders } from './timer.js';
+import { measureVariants } from './measure.js';
 import { renderRawShader } from '../harness/raw-webgl.js';
 import { EXTRA_SAMPLES_VIEW, countExtraSamplePixels } from '../../src/raytracer/extra-samples.js';
 import { composePeer } from './peers/compose-peer.js';
-import { renderReferenceParallel } from '../harness/reference-threads.js';
 import { paretoFront, chartSvg } from './chart.js';
 import {
   ONE_TRACE_SITE,
@@ -245,50 +242,21 @@ async function main() {
   if (!reportOnly)
     await withBenchHarness(async (context) => {
       for (const [width, height] of SIZES) {
-        const perAxis = REFERENCE_SAMPLES_PER_AXIS();
-        /** The converged float64 reference of each scene (the default one, 0, for every variant but the scenes'). */
-        const references = new Map();
-        for (const scene of new Set(VARIANTS.map((v) => v.scene ?? 0))) {
-          process.stdout.write(`${width}x${height}: converged float64 reference of scene ${scene} (${perAxis * perAxis} spp) ... `);
-          const started = Date.now();
-          const controlsOfScene = scene ? { SCENE: scene } : {};
-          references.set(
-            scene,
-            await renderReferenceParallel(
-              source,
-              { width, height, time: 0, mouse: [0, 0, 0, 0], controls: controlsOfScene },
-              { mode: 'converged', samplesPerAxis: perAxis },
-            ),
-          );
-          console.log(`${((Date.now() - started) / 1000).toFixed(0)} s`);
-        }
-        // All variants in one page, interleaved round by round (see timeShaders).
-        process.stdout.write(`  timing ${VARIANTS.length} variants x ${COPIES} copies, ${WARMUP} warm-up + ${FRAMES} timed rounds: `);
-        const programs = VARIANTS.flatMap((v) => {
-          const code = v.code();
-          return Array.from({ length: COPIES }, (_, k) => ({ code: `${code}\n// copy ${k}\n`, uniforms: v.uniforms ? uniformValues : [] }));
-        });
-        const runs = await timeShaders(programs, {
+        const measured = await measureVariants(VARIANTS, {
+          source,
           width,
           height,
+          copies: COPIES,
           frames: FRAMES,
           warmup: WARMUP,
-          onRound: (round) => process.stdout.write(`${round + 1} `),
+          referenceSamplesPerAxis: REFERENCE_SAMPLES_PER_AXIS(),
+          uniformValues,
         });
-        // One result per variant: the frames of all its copies, and the last copy's image.
-        const timed = VARIANTS.map((v, i) => {
-          const copies = runs.slice(i * COPIES, (i + 1) * COPIES);
-          const failed = copies.find((c) => c.error);
-          return failed ?? { ...copies[COPIES - 1], times: copies.flatMap((c) => c.times) };
-        });
-        console.log('done');
-        for (const [i, variant] of VARIANTS.entries()) {
-          const result = timed[i];
-          if (result.error) {
-            failures.push(`${variant.name} at ${width}x${height}: ${result.error}`);
+        for (const { variant, error: failure, ...result } of measured) {
+          if (failure) {
+            failures.push(`${variant.name} at ${width}x${height}: ${failure}`);
             continue;
           }
-          const error = imageError(result, references.get(variant.scene ?? 0));
           const extra = variant.adaptive ? await extraSampleFraction(variant, width, height) : undefined;
           const entry = {
             name: variant.name,
@@ -296,12 +264,7 @@ async function main() {
             width,
             height,
             samplesPerPixel: variant.spp,
-            medianMs: median(result.times),
-            minMs: Math.min(...result.times),
-            maxMs: Math.max(...result.times),
-            frames: result.times.length,
-            rmse: error.rmse,
-            over2: error.over2,
+            ...result,
             ...(extra === undefined ? {} : { extraSampleFraction: extra }),
             chromium: context.environment.chromium,
             renderer: context.environment.renderer,
