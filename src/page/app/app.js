@@ -109,7 +109,17 @@ export class RaytracerApp extends Emitter {
     /** Compiling the shader, and the shader on screen. */
     this.compiles = new CompileJob(this);
     /** "Converge when still". */
-    this.converge = new Converge(this);
+    this.converge = new Converge({
+      source: () => this.source,
+      isMultipass: () => this.isMultipass,
+      version: () => this.version(),
+      loadProject: (project, from) => this.loadProject(project, from),
+      runVersion: (version, from, options) => this.runVersion(version, from, options),
+      applyControls: (changes, from) => this.applyControls(changes, from),
+      pause: () => this.pause(),
+      compile: () => this.compiles.compile(),
+      requestFrame: () => this.frames.request(),
+    });
     /** Whether the next compile takes the live controls as constants or as uniforms. */
     this.liveForm = new LiveControlForm(() => this.compiles.compile().catch(() => {})); // failures are shown on the page
 

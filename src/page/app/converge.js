@@ -11,10 +11,25 @@ import { MAX_SAMPLES, missingRaytracerFunctions, progressiveTabs } from '../../r
 /** @typedef {import('./app.js').RaytracerApp} RaytracerApp */
 /** @typedef {import('./app.js').ShaderVersion} ShaderVersion */
 
+/**
+ * What converging uses of the app (app.js builds it): the shader it reads, and the app's
+ * methods that load, set and compile another (each field stays its owner's).
+ * @typedef {object} ConvergeHost
+ * @property {() => string} source the Image tab's text (RaytracerApp.source)
+ * @property {() => boolean} isMultipass whether the shader has a Common tab or a buffer
+ * @property {RaytracerApp['version']} version
+ * @property {RaytracerApp['loadProject']} loadProject
+ * @property {RaytracerApp['runVersion']} runVersion
+ * @property {RaytracerApp['applyControls']} applyControls
+ * @property {RaytracerApp['pause']} pause
+ * @property {() => Promise<void>} compile the app's shader compiled (CompileJob.compile)
+ * @property {() => void} requestFrame a frame drawn (FrameLoop.request)
+ */
+
 export class Converge {
-  /** @param {RaytracerApp} app */
-  constructor(app) {
-    this.app = app;
+  /** @param {ConvergeHost} host */
+  constructor(host) {
+    this._host = host;
     /** Whether the shader runs as its progressive form. */
     this.on = false;
     /** Frames drawn while the view is still: then its buffer sums no more. */
@@ -25,8 +40,8 @@ export class Converge {
 
   /** Whether "Converge when still" can run the app's shader (the raytracer: progressive.js). */
   get available() {
-    const app = this.app;
-    return !app.isMultipass && missingRaytracerFunctions(app.source).length === 0;
+    const app = this._host;
+    return !app.isMultipass() && missingRaytracerFunctions(app.source()).length === 0;
   }
 
   /**
@@ -52,25 +67,25 @@ export class Converge {
    * @returns {Promise<void>}
    */
   async set(on, { frames = MAX_SAMPLES } = {}) {
-    const app = this.app;
+    const app = this._host;
     this.frames = Math.max(1, Math.min(MAX_SAMPLES, Math.round(frames)));
-    if (on === this.on) return app.frames.request();
+    if (on === this.on) return app.requestFrame();
     if (!on) {
       const back = /** @type {ShaderVersion} */ (this._before);
       this.drop();
       app.runVersion(back, 'Converge when still', { continues: true });
-      return app.compiles.compile();
+      return app.compile();
     }
-    if (app.isMultipass) throw new Error('only the raytracer converges: this shader has buffers of its own');
-    const missing = missingRaytracerFunctions(app.source);
+    if (app.isMultipass()) throw new Error('only the raytracer converges: this shader has buffers of its own');
+    const missing = missingRaytracerFunctions(app.source());
     if (missing.length) throw new Error(`only the raytracer converges (shaders/raytrace.glsl): this shader has no ${missing.join(', ')}`);
     const before = app.version();
-    const tabs = progressiveTabs(app.source);
+    const tabs = progressiveTabs(app.source());
     app.pause();
     app.loadProject(tabs.model, { name: before.name, origin: before.origin, url: before.url, continues: true });
     this.on = true;
     this._before = before;
     app.applyControls({ SHOW_SAMPLE_COUNT: 1 }, 'Converge when still');
-    return app.compiles.compile();
+    return app.compile();
   }
 }
