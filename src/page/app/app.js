@@ -11,6 +11,7 @@
 // page shows them (ui/).
 
 import { projectControls } from '../../shadertoy/controls.js';
+import { hostControlBlock } from '../../shadertoy/header.js';
 import { KeyboardState } from '../../shadertoy/keyboard.js';
 import { frameSchedule, singlePass } from '../../shadertoy/multipass.js';
 import { RenderClient } from './render-client.js';
@@ -107,7 +108,15 @@ export class RaytracerApp extends Emitter {
     /** When to draw, and drawing. */
     this.frames = new FrameLoop(this);
     /** Compiling the shader, and the shader on screen. */
-    this.compiles = new CompileJob(this);
+    this.compiles = new CompileJob({
+      gpu,
+      version: () => this.version(),
+      hostBlock: () => (this.notice ? '' : hostControlBlock(this.controls, this.values, this.liveForm.asConstants ? this.values : null)),
+      onceContext: (listener) => this.once('context', listener),
+      emitCompile: (error, fileName) => this.emit('compile', error, fileName),
+      requestFrame: () => this.frames.request(),
+      startClock: () => this.startClock(),
+    });
     /** "Converge when still". */
     this.converge = new Converge({
       source: () => this.source,

@@ -11,10 +11,24 @@ import { controlDefaults, projectControls } from '../../shadertoy/controls.js';
 /** @typedef {import('./app.js').RaytracerApp} RaytracerApp */
 /** @typedef {import('./app.js').ShaderVersion} ShaderVersion */
 
+/**
+ * What compiling uses of the app (app.js builds it): the shader and its controls' block, read at
+ * each compile, and what it tells when one ends.
+ * @typedef {object} CompileHost
+ * @property {import('./render-client.js').RenderClient} gpu the render worker (contextLost, ask)
+ * @property {RaytracerApp['version']} version the shader as it is now
+ * @property {() => string} hostBlock the controls' block with their current values, as the shader compiles now
+ *   (header.js's hostControlBlock; empty when the shader's block could not be read)
+ * @property {(listener: () => void) => void} onceContext calls `listener` at the app's next 'context' event
+ * @property {(...args: import('./events.js').AppEvents['compile']) => void} emitCompile the app's 'compile' event
+ * @property {() => void} requestFrame a frame drawn (FrameLoop.request)
+ * @property {() => void} startClock a newly loaded shader starts at iFrame 0 (RaytracerApp.startClock)
+ */
+
 export class CompileJob {
-  /** @param {RaytracerApp} app whose shader, controls and values are compiled */
-  constructor(app) {
-    this.app = app;
+  /** @param {CompileHost} host whose shader, controls and values are compiled */
+  constructor(host) {
+    this._host = host;
     /** The latest compile started. @type {Promise<void> | null} */
     this.latest = null;
     /** The shader on screen, as it compiled; null while none runs (before the first, after a lost context). @type {ShaderVersion | null} */
@@ -64,26 +78,26 @@ export class CompileJob {
    * @returns {Promise<void>}
    */
   compile({ orElse = null } = {}) {
-    const app = this.app;
-    if (app.gpu.contextLost) {
+    const host = this._host;
+    if (host.gpu.contextLost) {
       // compiled when the context comes back: this job ends as the compile started then does
       /** @type {Promise<void>} */
-      const job = new Promise((resolve) => app.once('context', () => resolve(this.latest ?? undefined)));
+      const job = new Promise((resolve) => host.onceContext(() => resolve(this.latest ?? undefined)));
       this.latest = job;
       return job;
     }
-    const hostBlock = app.notice ? '' : hostControlBlock(app.controls, app.values, app.liveForm.asConstants ? app.values : null);
-    const version = app.version();
+    const hostBlock = host.hostBlock();
+    const version = host.version();
     const fileName = version.name;
     const serial = ++this._started;
-    const job = app.gpu.ask('compile', { project: version.project, hostBlock, fileName, serial }).then(
+    const job = host.gpu.ask('compile', { project: version.project, hostBlock, fileName, serial }).then(
       () => {
         if (serial > this._runningSerial) this._onScreen(version, serial);
         if (job !== this.latest) return;
         this.errors = [];
         this.count++;
-        app.emit('compile', null, fileName);
-        app.frames.request();
+        host.emitCompile(null, fileName);
+        host.requestFrame();
       },
       async (error) => {
         if (job !== this.latest) throw error;
@@ -92,7 +106,7 @@ export class CompileJob {
         if (job === this.latest) {
           this.errors = error.messages ?? [];
           console.warn(error.message);
-          app.emit('compile', error, fileName);
+          host.emitCompile(error, fileName);
         }
         throw error;
       },
@@ -107,7 +121,7 @@ export class CompileJob {
    * @param {ShaderVersion} version
    */
   async _standIn(version) {
-    const app = this.app;
+    const host = this._host;
     let controls = [];
     try {
       controls = projectControls(version.project);
@@ -117,10 +131,10 @@ export class CompileJob {
     const values = { ...controlDefaults(controls), ...version.values };
     const serial = ++this._started;
     const hostBlock = controls.length ? hostControlBlock(controls, values, values) : '';
-    await app.gpu.ask('compile', { project: version.project, hostBlock, fileName: version.name, serial });
+    await host.gpu.ask('compile', { project: version.project, hostBlock, fileName: version.name, serial });
     if (this.running || serial < this._runningSerial) return; // the app's own shader compiled meanwhile
     this._onScreen(version, serial);
-    app.frames.request();
+    host.requestFrame();
   }
 
   /**
@@ -136,7 +150,7 @@ export class CompileJob {
     // with cleared buffers (its buffers may set themselves up on frame 0)
     if (version.load !== this._clockOf) {
       this._clockOf = version.load;
-      this.app.startClock();
+      this._host.startClock();
     }
   }
 

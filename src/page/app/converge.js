@@ -40,8 +40,8 @@ export class Converge {
 
   /** Whether "Converge when still" can run the app's shader (the raytracer: progressive.js). */
   get available() {
-    const app = this._host;
-    return !app.isMultipass() && missingRaytracerFunctions(app.source()).length === 0;
+    const host = this._host;
+    return !host.isMultipass() && missingRaytracerFunctions(host.source()).length === 0;
   }
 
   /**
@@ -67,25 +67,25 @@ export class Converge {
    * @returns {Promise<void>}
    */
   async set(on, { frames = MAX_SAMPLES } = {}) {
-    const app = this._host;
+    const host = this._host;
     this.frames = Math.max(1, Math.min(MAX_SAMPLES, Math.round(frames)));
-    if (on === this.on) return app.requestFrame();
+    if (on === this.on) return host.requestFrame();
     if (!on) {
       const back = /** @type {ShaderVersion} */ (this._before);
       this.drop();
-      app.runVersion(back, 'Converge when still', { continues: true });
-      return app.compile();
+      host.runVersion(back, 'Converge when still', { continues: true });
+      return host.compile();
     }
-    if (app.isMultipass()) throw new Error('only the raytracer converges: this shader has buffers of its own');
-    const missing = missingRaytracerFunctions(app.source());
+    if (host.isMultipass()) throw new Error('only the raytracer converges: this shader has buffers of its own');
+    const missing = missingRaytracerFunctions(host.source());
     if (missing.length) throw new Error(`only the raytracer converges (shaders/raytrace.glsl): this shader has no ${missing.join(', ')}`);
-    const before = app.version();
-    const tabs = progressiveTabs(app.source());
-    app.pause();
-    app.loadProject(tabs.model, { name: before.name, origin: before.origin, url: before.url, continues: true });
+    const before = host.version();
+    const tabs = progressiveTabs(host.source());
+    host.pause();
+    host.loadProject(tabs.model, { name: before.name, origin: before.origin, url: before.url, continues: true });
     this.on = true;
     this._before = before;
-    app.applyControls({ SHOW_SAMPLE_COUNT: 1 }, 'Converge when still');
-    return app.compile();
+    host.applyControls({ SHOW_SAMPLE_COUNT: 1 }, 'Converge when still');
+    return host.compile();
   }
 }
