@@ -64,8 +64,6 @@ export class RaytracerApp extends Emitter {
   constructor({ gpu, canvas, loadImage, fileName, size = null, scale = 1, cap = 0, playing = true }) {
     super();
     this.canvas = canvas;
-    /** Shows the frames the worker draws. */
-    this.screen = /** @type {ImageBitmapRenderingContext} */ (canvas.getContext('bitmaprenderer'));
     /** The shader's name in messages and downloads. */
     this.fileName = fileName;
     /** The render worker, through its client: the GPU side (gpu/). */
@@ -106,7 +104,19 @@ export class RaytracerApp extends Emitter {
     this.hangGuard = null;
 
     /** When to draw, and drawing. */
-    this.frames = new FrameLoop(this);
+    this.frames = new FrameLoop({
+      gpu,
+      canvas,
+      inputs: this.inputs,
+      canvasSize: this.canvasSize,
+      keyboard: this.keyboard,
+      readsKeyboard: () => this.readsKeyboard,
+      isMultipass: () => this.isMultipass,
+      hasProgram: () => this.compiles.hasProgram,
+      versionOf: (serial) => this.compiles.versionOf(serial),
+      wantsFrame: (stillFrames) => this.converge.wantsFrame(stillFrames),
+      emitDrawn: (frame) => this.emit('drawn', frame),
+    });
     /** Compiling the shader, and the shader on screen. */
     this.compiles = new CompileJob({
       gpu,

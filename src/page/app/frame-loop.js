@@ -7,19 +7,38 @@
 // the last frame again, at another size.
 //
 // It owns what drawing knows: the frame under way and how far it has got, the last frame drawn
-// (its inputs and size), the counters, and the last shader a frame was finished with.
+// (its inputs and size), the counters, the last shader a frame was finished with, and the
+// canvas's bitmap renderer that shows the frames.
 
 import { fitGpu } from './canvas-size.js';
 
-/** @typedef {import('./app.js').RaytracerApp} RaytracerApp */
 /** @typedef {import('./app.js').ShaderVersion} ShaderVersion */
 /** @typedef {import('../gpu/protocol.js').FrameInputs} FrameInputs */
 /** @typedef {import('./events.js').DrawnEvent} DrawnEvent */
 
+/**
+ * What the frame loop uses of the app (app.js builds it): the parts a frame is made from, what
+ * it reads of the shader and the other parts at each frame, and the 'drawn' event it tells.
+ * @typedef {object} FrameHost
+ * @property {import('./render-client.js').RenderClient} gpu the render worker (on, contextLost, ask, maxSize)
+ * @property {HTMLCanvasElement} canvas where the frames are shown (sized to them here)
+ * @property {import('./shadertoy-inputs.js').ShadertoyInputs} inputs the clock and the mouse
+ * @property {import('./canvas-size.js').CanvasSize} canvasSize the drawing buffer's size
+ * @property {import('../../shadertoy/keyboard.js').KeyboardState} keyboard Shadertoy's keyboard texture
+ * @property {() => boolean} readsKeyboard whether some pass reads the keyboard (RaytracerApp.readsKeyboard)
+ * @property {() => boolean} isMultipass whether the shader has a Common tab or a buffer
+ * @property {() => boolean} hasProgram whether a shader runs (CompileJob.hasProgram)
+ * @property {(serial: number) => ShaderVersion | null} versionOf the shader a frame was drawn with (CompileJob.versionOf)
+ * @property {(stillFrames: number) => boolean} wantsFrame whether converging wants another frame (Converge.wantsFrame)
+ * @property {(frame: DrawnEvent) => void} emitDrawn the app's 'drawn' event
+ */
+
 export class FrameLoop {
-  /** @param {RaytracerApp} app */
-  constructor(app) {
-    this.app = app;
+  /** @param {FrameHost} host */
+  constructor(host) {
+    this._host = host;
+    /** Shows the frames the worker draws. */
+    this._screen = /** @type {ImageBitmapRenderingContext} */ (host.canvas.getContext('bitmaprenderer'));
     this._raf = 0;
     /** The frame the worker is drawing. @type {Promise<unknown> | null} */
     this._drawing = null;
@@ -40,7 +59,7 @@ export class FrameLoop {
     /** The last shader a frame was finished with (the watchdog goes back to it). @type {ShaderVersion | null} */
     this.lastFinished = null;
 
-    app.gpu.on('band', (_, band) => {
+    host.gpu.on('band', (_, band) => {
       if (band.kind !== 'frame') return;
       this.progress = { y: band.y, height: band.height, bands: (this.progress?.bands ?? 0) + 1 };
       if (band.bitmap) this.show(band.bitmap);
@@ -89,8 +108,8 @@ export class FrameLoop {
    * clock stands still, and every frame would be the last one again), or converging a still view.
    */
   get running() {
-    const { playing, speed } = this.app.inputs;
-    return (playing && speed > 0) || this.app.converge.wantsFrame(this.stillFrames);
+    const { playing, speed } = this._host.inputs;
+    return (playing && speed > 0) || this._host.wantsFrame(this.stillFrames);
   }
 
   /** @param {number} now */
@@ -116,18 +135,18 @@ export class FrameLoop {
    * @returns {Promise<DrawnEvent | null>}
    */
   async draw(now = performance.now(), readBack = false) {
-    const app = this.app;
+    const host = this._host;
     while (this._drawing) await this._drawing.catch(() => {});
-    if (app.gpu.contextLost || !app.compiles.hasProgram) return null;
-    const { width, height } = app.canvasSize.target();
+    if (host.gpu.contextLost || !host.hasProgram()) return null;
+    const { width, height } = host.canvasSize.target();
     this._dirty = false;
     const continued = this.running && this._lastDrawnAt !== null;
-    const run = app.inputs.run;
-    const frame = app.inputs.beginFrame(width, height, now);
+    const run = host.inputs.run;
+    const frame = host.inputs.beginFrame(width, height, now);
     // the keyboard texture goes to the worker (and is uploaded) only for a shader that reads it
-    const inputs = app.readsKeyboard ? { ...frame, keyboard: app.keyboard.data.slice() } : frame;
+    const inputs = host.readsKeyboard() ? { ...frame, keyboard: host.keyboard.data.slice() } : frame;
     this.progress = { y: 0, height, bands: 0 };
-    const drawing = app.gpu.ask('frame', { inputs, readBack });
+    const drawing = host.gpu.ask('frame', { inputs, readBack });
     this._drawing = drawing;
     let drawn;
     try {
@@ -138,7 +157,7 @@ export class FrameLoop {
         this.progress = null;
       }
     }
-    if (run !== app.inputs.run) {
+    if (run !== host.inputs.run) {
       // The clock was restarted while this frame was drawn (Restart, a new shader): its iFrame
       // and iTime are the run before's, and a buffer cleared meanwhile was drawn half over. It is
       // not shown; the new run's iFrame 0 is drawn in its place.
@@ -147,13 +166,13 @@ export class FrameLoop {
     }
     this.show(drawn.bitmap);
     this.last = frame;
-    app.inputs.endFrame(run);
+    host.inputs.endFrame(run);
     // "pressed this frame" is over: a shader that reads it is drawn once more without it
-    if (app.keyboard.endFrame() && app.readsKeyboard) this.request();
+    if (host.keyboard.endFrame() && host.readsKeyboard()) this.request();
     this.count++;
     // the shader the worker drew it with: a compile that landed while it was drawn started the
     // frame again with the new program (gpu/protocol.js)
-    this.lastFinished = app.compiles.versionOf(drawn.program) ?? this.lastFinished;
+    this.lastFinished = host.versionOf(drawn.program) ?? this.lastFinished;
     // the clock when the frame was drawn, not when it was due: on a slow GPU the animation
     // frames' timestamps run ahead of the drawing
     const drawnAt = performance.now();
@@ -161,7 +180,7 @@ export class FrameLoop {
     this._lastDrawnAt = this.running ? drawnAt : null;
     /** @type {DrawnEvent} */
     const result = { pixels: drawn.pixels, width, height, frame: inputs.frame, interval, gpuTimes: drawn.gpuTimes };
-    app.emit('drawn', result);
+    host.emitDrawn(result);
     this.stillFrames++;
     if (this.running || this._dirty) this._schedule();
     return result;
@@ -174,26 +193,26 @@ export class FrameLoop {
    * @returns {Promise<{width:number, height:number, data:Uint8Array, time: number}>}
    */
   async capture(size = null) {
-    const app = this.app;
-    if (!app.compiles.hasProgram || app.gpu.contextLost) throw new Error('nothing to capture: no shader is running');
+    const host = this._host;
+    if (!host.hasProgram() || host.gpu.contextLost) throw new Error('nothing to capture: no shader is running');
     if (!this.last) await this.draw();
     const last = this.last;
     if (!last) throw new Error('nothing to capture: the GPU context is lost');
     // a multipass shader's buffers are the canvas's size: its Image pass is drawn again over them
     // as they are, which only means the same picture at the same size
-    const wanted = size && !app.isMultipass ? size : { width: last.width, height: last.height };
+    const wanted = size && !host.isMultipass() ? size : { width: last.width, height: last.height };
     const rounded = { width: Math.max(1, Math.round(wanted.width)), height: Math.max(1, Math.round(wanted.height)) };
-    const { width, height } = fitGpu(rounded, app.gpu.maxSize, 'screenshot size');
-    return { width, height, data: await app.gpu.ask('capture', { inputs: last, width, height, allPasses: false }), time: last.time };
+    const { width, height } = fitGpu(rounded, host.gpu.maxSize, 'screenshot size');
+    return { width, height, data: await host.gpu.ask('capture', { inputs: last, width, height, allPasses: false }), time: last.time };
   }
 
   /** Puts a bitmap from the worker on the canvas (sized to it: the mouse maps through that size). @param {ImageBitmap} bitmap */
   show(bitmap) {
-    const canvas = this.app.canvas;
+    const canvas = this._host.canvas;
     if (canvas.width !== bitmap.width || canvas.height !== bitmap.height) {
       canvas.width = bitmap.width;
       canvas.height = bitmap.height;
     }
-    this.app.screen.transferFromImageBitmap(bitmap);
+    this._screen.transferFromImageBitmap(bitmap);
   }
 }
