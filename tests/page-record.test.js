@@ -110,7 +110,23 @@ async function captureDownloads(page) {
   const session = await page.browser().target().createCDPSession();
   await session.send('Browser.setDownloadBehavior', { behavior: 'allow', downloadPath: dir });
   const seen = new Set();
-  const finished = () => fs.readdirSync(dir).filter((f) => !f.endsWith('.crdownload') && !seen.has(f));
+  // Chromium may put an empty file of the final name beside the .crdownload it writes into, and
+  // move the data over when done (a full run under load read such a file: "unrecognizable
+  // format"): a file is finished when no .crdownload is left and its size, not 0, holds still
+  // over two looks.
+  /** @type {Map<string, number>} */
+  const sizes = new Map();
+  const finished = () => {
+    const names = fs.readdirSync(dir);
+    if (names.some((f) => f.endsWith('.crdownload'))) return [];
+    return names.filter((f) => {
+      if (seen.has(f)) return false;
+      const size = fs.statSync(path.join(dir, f)).size;
+      const still = size > 0 && sizes.get(f) === size;
+      sizes.set(f, size);
+      return still;
+    });
+  };
   return {
     async next(timeoutMs = 60_000) {
       const end = Date.now() + timeoutMs;
