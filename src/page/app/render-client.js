@@ -76,11 +76,14 @@ export class RenderClient extends Emitter {
     this._watch = 0;
     /** Settles the worker's start. @type {{resolve: () => void, reject: (error: Error) => void} | null} */
     this._started = null;
+    /** ImageBitmaps received from this worker, in all (its 'settled' command counts them). */
+    this._bitmaps = 0;
   }
 
   async _spawn() {
     const worker = new Worker(new URL('../gpu/render-worker.js', import.meta.url), { type: 'module' });
     this.worker = worker;
+    this._bitmaps = 0;
     /** @type {Promise<void>} */
     const started = new Promise((resolve, reject) => {
       this._started = { resolve, reject };
@@ -120,6 +123,30 @@ export class RenderClient extends Emitter {
 
   /** @param {Message} message */
   _receive(message) {
+    this._dispatch(message);
+    const bitmaps = transferables(message.kind === 'reply' ? message.result : message.params).filter((item) => item instanceof ImageBitmap);
+    if (bitmaps.length) this._settleAfterPaint((this._bitmaps += bitmaps.length));
+  }
+
+  /**
+   * Tells the worker that the page is done with the first `count` bitmaps it sent, once what
+   * they were given to (dispatched above: shown, or closed) has been painted: at the second
+   * animation frame from now. The worker holds a new program's first draw until then
+   * (render-worker.js's settledByPage: painting a bitmap waits for the GPU process, which an
+   * endless draw holds for good).
+   * @param {number} count
+   */
+  _settleAfterPaint(count) {
+    const worker = this.worker;
+    requestAnimationFrame(() =>
+      requestAnimationFrame(() => {
+        if (this.worker === worker) this.tell('settled', { bitmaps: count });
+      }),
+    );
+  }
+
+  /** @param {Message} message */
+  _dispatch(message) {
     if (message.kind === 'reply') {
       const pending = this._pending.get(message.id);
       if (!pending) return;

@@ -82,6 +82,9 @@ import { ShaderCompileError, WebGL2UnavailableError } from './errors.js';
  *   controls as uniforms, with their values
  * @property {{name: string, value: unknown}} controlUniform one live control's new value
  * @property {{index: number, image: ImageBitmap | null}} channel an image into iChannel0..3 (null: black)
+ * @property {{bitmaps: number}} settled the page has shown (or closed) and painted the first
+ *   `bitmaps` ImageBitmaps the worker sent it: a new program's first draw waits for it
+ *   (render-worker.js's settledByPage)
  * @property {{}} loseContext WEBGL_lose_context, for tests of a lost context
  * @property {{}} restoreContext
  */
