@@ -361,19 +361,19 @@ struct TorusRay {
 };
 
 // g(t) = |(rho - 1, y)| - k: the signed distance of the ray's point to the tube's surface, and its
-// slope along the ray, at four parameters at once. This is the surface function unexpanded: near
+// slope along the ray, at two parameters at once. This is the surface function unexpanded: near
 // a root rho - 1 and y carry the rounding of numbers of size 1 and nothing cancels, so g is good
 // to a few EPS32 for any tube radius; the expanded quartic's constant term subtracts two terms of
 // size R^4 to leave one of size R^2 r^2 (about 2 log2(R / r) bits lost: 20 of 24 at r = 1e-3 R).
 // Its gradient is unit, so Newton's method on it is well conditioned. At the axis (rho = 0) and
 // at the core circle g has a kink: its slope is taken as 0 there, and the solver bisects.
-vec4 torusDistance(TorusRay ray, vec4 t, out vec4 slope) {
-    vec4 u = t - ray.tc;
-    vec4 rho = sqrt(ray.m2 + ray.a * u * u);
-    vec4 y = ray.yo + ray.yd * t;
-    vec4 core = sqrt((rho - 1.0) * (rho - 1.0) + y * y);
-    vec4 dRho = ray.a * u / mix(rho, vec4(1.0), equal(rho, vec4(0.0)));
-    slope = ((rho - 1.0) * dRho + y * ray.yd) / mix(core, vec4(1.0), equal(core, vec4(0.0)));
+vec2 torusDistance(TorusRay ray, vec2 t, out vec2 slope) {
+    vec2 u = t - ray.tc;
+    vec2 rho = sqrt(ray.m2 + ray.a * u * u);
+    vec2 y = ray.yo + ray.yd * t;
+    vec2 core = sqrt((rho - 1.0) * (rho - 1.0) + y * y);
+    vec2 dRho = ray.a * u / mix(rho, vec2(1.0), equal(rho, vec2(0.0)));
+    slope = ((rho - 1.0) * dRho + y * ray.yd) / mix(core, vec2(1.0), equal(core, vec2(0.0)));
     return core - ray.k;
 }
 
@@ -402,8 +402,9 @@ void torusBend(TorusRay ray, vec3 t, out vec3 dF, out vec3 ddF) {
 // holds (F' and F''' of one sign; F''' has the sign of t - tc), so its iterates move
 // monotonically and never leave the piece; each g root by Newton's method on g, bisecting
 // whenever a step would leave the bracket (a safeguarded Newton, as Numerical Recipes' rtsafe).
-// The four roots are solved as one vec4. The origin is first moved to the bounding sphere (Wald,
-// Ray Tracing Gems II ch. 34), then everything runs in units of R.
+// The two roots that can be the first past the origin are solved as one vec2. The origin is
+// first moved to the bounding sphere (Wald, Ray Tracing Gems II ch. 34), then everything runs in
+// units of R.
 // Measured (tests/intersectors.test.js, 1,800 hard rays): worst t error 0.3 K u S on transversal
 // hits; a textbook Ferrari solve of the expanded quartic in its place gets 81% of rays from 1e3,
 // 16% of a tube r = 1e-3 R and 32% of near-axial rays wrong (those all fake hits in the hole).
@@ -487,8 +488,8 @@ vec4 intersectTorus(vec3 ro, vec3 rd, Torus torus, float tMax) {
     // g(c3) + (hi - c3) bounds it (g changes by at most 1 per unit of t), which is all the chord
     // start below needs (it is g(hi) for a ray leaving the tube square on).
     vec4 left = vec4(lo, crit), right = vec4(crit, hi);
-    vec4 slope;
-    vec4 gLeft = torusDistance(ray, left, slope);
+    vec2 slope;
+    vec4 gLeft = vec4(torusDistance(ray, left.xy, slope), torusDistance(ray, left.zw, slope));
     vec4 gRight = vec4(gLeft.yzw, max(gLeft.w + (hi - crit.z), gNoise));
     bvec4 insideLeft = lessThan(gLeft, vec4(0.0));
     bvec4 crosses = notEqual(insideLeft, lessThan(gRight, vec4(0.0)));
@@ -499,39 +500,49 @@ vec4 intersectTorus(vec3 ro, vec3 rd, Torus torus, float tMax) {
     const vec4 GAP = vec4(0.0, 1.0, 2.0, 3.0);
     vec4 firstGaps = mix(vec4(4.0), GAP, bvec4(vec4(crosses) * vec4(greaterThan(left, vec4(0.0)))));
     float first = min(min(firstGaps.x, firstGaps.y), min(firstGaps.z, firstGaps.w));
-    crosses = bvec4(vec4(crosses) * vec4(lessThanEqual(GAP, vec4(first))));
+    // So at most two gaps are solved: that first one, and before it one that crosses from t = 0
+    // (the ends only grow, and a gap of no width cannot cross: g is the same at both of its ends,
+    // so at most one crossing gap starts at 0). As a vec2 the loop below does half the work of
+    // all four gaps (SwiftShader runs each component as an operation of its own).
+    vec4 zeroGaps = mix(vec4(4.0), GAP, bvec4(vec4(crosses) * vec4(lessThanEqual(left, vec4(0.0))) * vec4(lessThan(GAP, vec4(first)))));
+    float fromZero = min(min(zeroGaps.x, zeroGaps.y), min(zeroGaps.z, zeroGaps.w));
+    bvec2 solved = lessThan(vec2(fromZero, first), vec2(4.0));
+    ivec2 gap = ivec2(min(vec2(fromZero, first), vec2(3.0)));
+    vec2 lo2 = vec2(left[gap.x], left[gap.y]), hi2 = vec2(right[gap.x], right[gap.y]);
+    vec2 gLo = vec2(gLeft[gap.x], gLeft[gap.y]), gHi = vec2(gRight[gap.x], gRight[gap.y]);
+    bvec2 insideLo = lessThan(gLo, vec2(0.0));
     // Start where the chord across the gap crosses 0: g is a distance, close to linear. Trips on
     // the test rays: 5 or fewer for 92%, at most 11 (near-tangent rays, where Newton's convergence
     // is linear); the cap of 16 is never reached there. Its cost against the cone's and against a
     // closed form: docs/numerics.md ("Per primitive: speed against error").
-    vec4 root = mix(0.5 * (left + right), left + (right - left) * gLeft / (gLeft - gRight), crosses);
+    vec2 root = mix(0.5 * (lo2 + hi2), lo2 + (hi2 - lo2) * gLo / (gLo - gHi), solved);
     for (int trip = 1;; trip++) {
-        vec4 g = torusDistance(ray, root, slope);
-        bvec4 likeLeft = equal(lessThan(g, vec4(0.0)), insideLeft);
-        left = mix(left, root, likeLeft);
-        right = mix(root, right, likeLeft);
+        vec2 g = torusDistance(ray, root, slope);
+        bvec2 likeLo = equal(lessThan(g, vec2(0.0)), insideLo);
+        lo2 = mix(lo2, root, likeLo);
+        hi2 = mix(root, hi2, likeLo);
         // Newton's step where it stays in the bracket, else bisection. A step that leaves it by
         // no more than rounding is clamped to the end, not rejected: a root can sit within
         // rounding of an end, and bisection would then creep to it one halving a trip.
-        vec4 newton = root - g / mix(slope, vec4(1.0), equal(slope, vec4(0.0)));
-        vec4 kept = clamp(newton, left, right);
-        vec4 next = mix(0.5 * (left + right), kept, lessThanEqual(abs(newton - kept), vec4(tNoise)));
+        vec2 newton = root - g / mix(slope, vec2(1.0), equal(slope, vec2(0.0)));
+        vec2 kept = clamp(newton, lo2, hi2);
+        vec2 next = mix(0.5 * (lo2 + hi2), kept, lessThanEqual(abs(newton - kept), vec2(tNoise)));
         // A gap without a root stays put, and so does a point on the surface to rounding (|g| at
         // most gNoise): a step from there would be noise over g', a jump where g' is near 0.
-        next = mix(root, next, crosses);
-        bvec4 onSurface = lessThanEqual(abs(g), vec4(gNoise));
+        next = mix(root, next, solved);
+        bvec2 onSurface = lessThanEqual(abs(g), vec2(gNoise));
         next = mix(next, root, onSurface);
         // Done: on the surface, or a step or bracket below rounding, in every gap.
-        vec4 unsettled = mix(min(abs(next - root), right - left), vec4(0.0), onSurface);
-        bool done = all(lessThanEqual(unsettled, vec4(tNoise)));
+        vec2 unsettled = mix(min(abs(next - root), hi2 - lo2), vec2(0.0), onSurface);
+        bool done = all(lessThanEqual(unsettled, vec2(tNoise)));
         root = next;
         if (any(bvec2(done, trip == 16))) break;
     }
 
     // The first root past the origin (the gaps are in order along the ray).
-    vec4 found = mix(vec4(T_INFINITY), root, crosses);
-    found = mix(vec4(T_INFINITY), found, greaterThan(found, vec4(0.0)));
-    float t = min(min(found.x, found.y), min(found.z, found.w));
+    vec2 found = mix(vec2(T_INFINITY), root, solved);
+    found = mix(vec2(T_INFINITY), found, greaterThan(found, vec2(0.0)));
+    float t = min(found.x, found.y);
 
     // Normal: the gradient of g, (rho - 1) times the radial unit vector plus y times the axis.
     // rho > 1 - k at every hit, so the radial direction is 0/0 only for the horn torus (k = 1) at
