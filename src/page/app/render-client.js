@@ -123,21 +123,21 @@ export class RenderClient extends Emitter {
 
   /** @param {Message} message */
   _receive(message) {
+    this._bitmaps += transferables(message.kind === 'reply' ? message.result : message.params).filter(
+      (item) => item instanceof ImageBitmap,
+    ).length;
     this._dispatch(message);
-    const bitmaps = transferables(message.kind === 'reply' ? message.result : message.params).filter((item) => item instanceof ImageBitmap);
-    if (bitmaps.length) this._settleAfterPaint((this._bitmaps += bitmaps.length));
   }
 
   /**
-   * Tells the worker that the page is done with the first `count` bitmaps it sent, once what
-   * they were given to (dispatched above: shown, or closed) has been painted: at the second
-   * animation frame from now. The worker holds a new program's first draw until then
-   * (render-worker.js's settledByPage: painting a bitmap waits for the GPU process, which an
-   * endless draw holds for good).
-   * @param {number} count
+   * The worker holds a new program's first draw until the page has painted the bitmaps it was
+   * sent (render-worker.js's settledByPage: painting a bitmap waits for the GPU process, which an
+   * endless draw holds for good). What the page has received by now has been given to the canvas
+   * (shown, or closed); at the second animation frame from now it has been painted.
    */
-  _settleAfterPaint(count) {
+  _settleAfterPaint() {
     const worker = this.worker;
+    const count = this._bitmaps;
     requestAnimationFrame(() =>
       requestAnimationFrame(() => {
         if (this.worker === worker) this.tell('settled', { bitmaps: count });
@@ -167,6 +167,8 @@ export class RenderClient extends Emitter {
       this.contextLost = params.lost;
       this._bandEnded();
       this.emit('context', params.lost);
+    } else if (type === 'awaitingPaint') {
+      this._settleAfterPaint();
     } else if (type === 'bandStarted') {
       this._bandSince = performance.now();
       this._bandCompiling = params.compiling;

@@ -82,9 +82,8 @@ import { ShaderCompileError, WebGL2UnavailableError } from './errors.js';
  *   controls as uniforms, with their values
  * @property {{name: string, value: unknown}} controlUniform one live control's new value
  * @property {{index: number, image: ImageBitmap | null}} channel an image into iChannel0..3 (null: black)
- * @property {{bitmaps: number}} settled the page has shown (or closed) and painted the first
- *   `bitmaps` ImageBitmaps the worker sent it: a new program's first draw waits for it
- *   (render-worker.js's settledByPage)
+ * @property {{bitmaps: number}} settled the answer to `awaitingPaint`: the page has shown (or
+ *   closed) and painted the first `bitmaps` ImageBitmaps the worker sent it
  * @property {{}} loseContext WEBGL_lose_context, for tests of a lost context
  * @property {{}} restoreContext
  */
@@ -97,6 +96,8 @@ import { ShaderCompileError, WebGL2UnavailableError } from './errors.js';
  * @property {{name: string, message: string}} failed no context (name 'WebGL2UnavailableError')
  * @property {{lost: boolean}} context the context was lost (true) or restored (false); a restored
  *   context has no shader: the page compiles again
+ * @property {{}} awaitingPaint a new program's first draw waits until the page has painted the
+ *   bitmaps it was sent (render-worker.js's settledByPage): the page answers with `settled`
  * @property {{compiling: boolean}} bandStarted a band went to the GPU (`compiling`: a new
  *   program's first draw, one quad, in which SwiftShader compiles it: render-worker.js's pump)
  * @property {{kind: 'frame' | 'capture' | 'probe' | 'compile', y: number, height: number, bitmap: ImageBitmap | null}} band
