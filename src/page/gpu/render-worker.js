@@ -180,11 +180,11 @@ function pump() {
  * GPU process for good. The page's main thread shows the bitmaps this worker sends, and in doing
  * so it waits for the GPU process (a bitmap sent just before an endless draw froze the page's
  * script for good in 4 of 6 runs of page-heavy's endless shader; 1 of 48 once the draw waited
- * for the page to paint it). So that draw waits until
- * the page says it has painted every bitmap sent (asked by 'awaitingPaint', answered by
- * 'settled' two animation frames later: app/render-client.js), or SETTLE_WAIT_MS. (Asked, not
- * told after every bitmap: an animation frame the page asks for runs its virtual clock on in the
- * tests, tests/harness/deterministic-injection.js.)
+ * for the page to paint it). So that draw waits until the page says it has painted every bitmap
+ * sent (asked by 'awaitingPaint', answered by 'settled' two animation frames later:
+ * app/render-client.js), or SETTLE_WAIT_MS. (Asked, not told after every bitmap: an animation
+ * frame the page asks for runs its virtual clock on in the tests,
+ * tests/harness/deterministic-injection.js.)
  */
 function settledByPage() {
   if (bitmaps.settled >= bitmaps.sent || settleWait.over) {
