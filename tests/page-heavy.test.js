@@ -275,7 +275,7 @@ describe('the page never comes back with the shader that hung', () => {
 describe('a shader that never finishes', () => {
   // The page's script froze for good here in 4 of 6 runs alone: heavy.glsl's last bitmap was
   // still being painted when endless.glsl's first draw took the GPU process (the worker now waits
-  // for the page to say it has painted: render-worker.js's settledByPage). Since then 23 of 24
+  // for the page to say it has painted: src/page/gpu/paint-gate.js). Since then 23 of 24
   // runs alone passed; the one that froze left nothing to tell why. Retried once for that; a
   // second failure still fails the run.
   test(

@@ -131,7 +131,7 @@ export class RenderClient extends Emitter {
 
   /**
    * The worker holds a new program's first draw until the page has painted the bitmaps it was
-   * sent (render-worker.js's settledByPage: painting a bitmap waits for the GPU process, which an
+   * sent (gpu/paint-gate.js: painting a bitmap waits for the GPU process, which an
    * endless draw holds for good). What the page has received by now has been given to the canvas
    * (shown, or closed); at the second animation frame from now it has been painted. A hidden
    * page paints nothing and gets no animation frames (a background tab): it answers at once.

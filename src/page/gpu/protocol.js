@@ -97,7 +97,7 @@ import { ShaderCompileError, WebGL2UnavailableError } from './errors.js';
  * @property {{lost: boolean}} context the context was lost (true) or restored (false); a restored
  *   context has no shader: the page compiles again
  * @property {{}} awaitingPaint a new program's first draw waits until the page has painted the
- *   bitmaps it was sent (render-worker.js's settledByPage): the page answers with `settled`
+ *   bitmaps it was sent (paint-gate.js): the page answers with `settled`
  * @property {{compiling: boolean}} bandStarted a band went to the GPU (`compiling`: a new
  *   program's first draw, one quad, in which SwiftShader compiles it: render-worker.js's pump)
  * @property {{kind: 'frame' | 'capture' | 'probe' | 'compile', y: number, height: number, bitmap: ImageBitmap | null}} band

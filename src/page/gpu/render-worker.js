@@ -4,7 +4,7 @@
 // bands (band-planner.js), polls a fence after each band instead of waiting for the GPU, and
 // hands each finished frame to the page as an ImageBitmap, which the page's canvas shows.
 // Nothing the page's script does waits for the GPU, but painting those bitmaps does, so a draw
-// that may never end waits until the page has painted them (settledByPage). The page
+// that may never end waits until the page has painted them (paint-gate.js). The page
 // (app/render-client.js) sees the bands come in and knows when they stop coming. What it is
 // asked and what it answers is protocol.js's.
 
@@ -13,6 +13,7 @@ import { writeUniforms } from './uniforms.js';
 import { BandPlanner } from './band-planner.js';
 import { flipRows } from '../../shared/pixels.js';
 import { serve } from './protocol.js';
+import { PaintGate } from './paint-gate.js';
 import { TILE_OFFSET_UNIFORM } from '../../shadertoy/header.js';
 
 /** @typedef {import('./protocol.js').FrameInputs} FrameInputs */
@@ -23,9 +24,6 @@ import { TILE_OFFSET_UNIFORM } from '../../shadertoy/header.js';
 const POLL_MS = 2;
 /** How often a frame that is still being drawn is shown as far as it got. */
 const PRESENT_EVERY_MS = 250;
-/** A new program's first draw waits for the page to settle the bitmaps it was sent (see
- * settledByPage), but no longer than this: a hidden page paints nothing, and says nothing. */
-const SETTLE_WAIT_MS = 1_000;
 
 /**
  * A frame, a capture or a probe under way: a probe reads the last frame drawn at its pixel (y
@@ -72,10 +70,11 @@ let lastPresent = 0;
 let loseContext = null;
 /** The inputs of the last frame finished (a probe reads that frame). @type {FrameInputs | null} */
 let lastFrame = null;
-/** ImageBitmaps sent to the page, and how many of them it has shown and painted ('settled'). */
-const bitmaps = { sent: 0, settled: 0 };
-/** The wait of settledByPage: its timer, and whether it ran out. */
-const settleWait = { timer: 0, over: false };
+/** A program's first draw waits until the page has painted the bitmaps it was sent. */
+const paints = new PaintGate(
+  () => tell('awaitingPaint', {}),
+  () => pump(),
+);
 
 /**
  * The renderer. Only start() can fail to make it, and then the page is told 'failed' and asks
@@ -162,7 +161,7 @@ function pump() {
   // compile is neither the shader's cost per pixel nor a draw that hangs. The band drawn next
   // covers the quad again with the same inputs, so the frame's pixels are the same.
   if (!drawnPrograms.has(drawn.material)) {
-    if (!settledByPage()) return;
+    if (!paints.mayDraw()) return;
     drawnPrograms.add(drawn.material);
     renderer().drawRegion(target, 0, job.y, Math.min(2, job.width), Math.min(2, job.height - job.y));
     startBand(0, { warmUp: true, compiling: true });
@@ -172,36 +171,6 @@ function pump() {
   renderer().drawRows(job.y, job.y + rows, target);
   if (last && job.y + rows >= job.height && job.kind === 'frame') renderer().gpuTimer.end();
   startBand(rows);
-}
-
-/**
- * Whether a draw that may never end can go to the GPU now; if not, pump() is called again when
- * it can. A program's first draw may be an endless loop, and on SwiftShader that draw holds the
- * GPU process for good. The page's main thread shows the bitmaps this worker sends, and in doing
- * so it waits for the GPU process (a bitmap sent just before an endless draw froze the page's
- * script for good in 4 of 6 runs of page-heavy's endless shader; 1 of 48 once the draw waited
- * for the page to paint it). So that draw waits until the page says it has painted every bitmap
- * sent (asked by 'awaitingPaint', answered by 'settled' two animation frames later:
- * app/render-client.js), or SETTLE_WAIT_MS. (Asked, not told after every bitmap: an animation
- * frame the page asks for runs its virtual clock on in the tests,
- * tests/harness/deterministic-injection.js.)
- */
-function settledByPage() {
-  if (bitmaps.settled >= bitmaps.sent || settleWait.over) {
-    clearTimeout(settleWait.timer);
-    settleWait.timer = 0;
-    settleWait.over = false;
-    return true;
-  }
-  if (!settleWait.timer) {
-    tell('awaitingPaint', {});
-    settleWait.timer = self.setTimeout(() => {
-      settleWait.timer = 0;
-      settleWait.over = true;
-      pump();
-    }, SETTLE_WAIT_MS);
-  }
-  return false;
 }
 
 /**
@@ -242,7 +211,7 @@ function startProbe(probe) {
   const warm = Boolean(material) && drawnPrograms.has(material);
   probe.withPath = Boolean(material) && (warm || probe.warmUp || !probeWarming);
   const compiling = probe.withPath && !warm;
-  if (compiling && !settledByPage()) return;
+  if (compiling && !paints.mayDraw()) return;
   renderer().probe.draw(x, y, width, height, probe.withPath);
   if (compiling) drawnPrograms.add(/** @type {object} */ (material));
   startBand(1, { compiling });
@@ -358,7 +327,7 @@ function start() {
 const counted = {
   /** @param {any} message @param {Transferable[]} transfer */
   postMessage(message, transfer) {
-    bitmaps.sent += transfer.filter((item) => item instanceof ImageBitmap).length;
+    paints.sending(transfer);
     /** @type {any} */ (self).postMessage(message, transfer); // a worker's postMessage (the types know a window's)
   },
   /** @param {any} handler */
@@ -463,8 +432,7 @@ const tell = serve(
     },
 
     settled({ bitmaps: count }) {
-      bitmaps.settled = Math.max(bitmaps.settled, count);
-      if (bitmaps.settled >= bitmaps.sent) pump();
+      paints.settle(count);
     },
 
     loseContext() {
