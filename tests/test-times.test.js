@@ -1,4 +1,6 @@
 // tests/scripts/test-times.js: the README's per-file table from vitest's JSON report.
+import fs from 'node:fs';
+import os from 'node:os';
 import path from 'node:path';
 import { describe, expect, test } from 'vitest';
 import { REPO_ROOT } from './harness/config.js';
@@ -29,6 +31,14 @@ describe('the suite time table', () => {
     ]);
     expect(times.wall).toBe(16.75);
     expect(times.inFiles).toBe(12.75);
+  });
+
+  test("a report from another checkout (a worktree) links the README's own paths", () => {
+    const elsewhere = fs.mkdtempSync(path.join(os.tmpdir(), 'checkout-'));
+    fs.writeFileSync(path.join(elsewhere, 'package.json'), '{}');
+    const report = { ...REPORT, testResults: [{ ...REPORT.testResults[0], name: path.join(elsewhere, 'tests', 'bench', 'x.test.js') }] };
+    expect(timesOf(report).files[0].file).toBe('tests/bench/x.test.js');
+    fs.rmSync(elsewhere, { recursive: true });
   });
 
   test('the table names the machine, links each file, and says how it was written', () => {

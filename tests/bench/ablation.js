@@ -13,8 +13,7 @@
 
 import fs from 'node:fs';
 import path from 'node:path';
-import { composeImageShader, hostControlBlock } from '../../src/shadertoy/header.js';
-import { parseControls } from '../../src/shadertoy/controls.js';
+import { composeImageShader } from '../../src/shadertoy/header.js';
 import { REPO_ROOT, SHADER_FILE } from '../harness/config.js';
 import { rendererLabel } from '../../src/engine/browser.js';
 import { withHarness } from '../harness/setup.js';
@@ -22,23 +21,13 @@ import { replaceMarkedSection } from '../scripts/readme-section.js';
 import { replaceFunction } from '../intersector-naive.js';
 import { composePeer } from './peers/compose-peer.js';
 import { measureVariants } from './measure.js';
+import { edit, pasteFormOf } from './variant-text.js';
 
 const quick = process.argv.includes('--quick');
 const BENCH_DIR = path.join(REPO_ROOT, 'tests', 'bench');
 const read = (file) => fs.readFileSync(file, 'utf8');
 const source = read(SHADER_FILE);
-const controls = parseControls(source);
-const defaults = Object.fromEntries(controls.map((c) => [c.name, c.default]));
-const ONE_SAMPLE = { SAMPLES: 1, ADAPTIVE_AA: 0 };
-const pasteForm = (text, defines = {}) =>
-  composeImageShader(text, { hostBlock: hostControlBlock(controls, { ...ONE_SAMPLE, ...defines }, defaults) }).code;
-
-/** `text` with `from` replaced by `to`, which must occur exactly once. */
-function edit(text, from, to) {
-  const at = text.indexOf(from);
-  if (at < 0 || text.indexOf(from, at + 1) >= 0) throw new Error(`ablation: "${from}" is not in ${SHADER_FILE} exactly once`);
-  return text.slice(0, at) + to + text.slice(at + from.length);
-}
+const pasteForm = pasteFormOf(source);
 
 /** iq's sphere, box, plane and cone (peers/iq/, early returns, textbook roots) in the scene walk. */
 function iqIntersectors(text) {

@@ -25,12 +25,23 @@ const DEFAULT_REPORT = path.join(OUTPUT_DIR, 'test-times.json');
  */
 
 /**
+ * The checkout a test file belongs to: the nearest folder above it with a package.json (a run in
+ * another worktree names its own files, whose links must still be the README's own paths).
+ * @param {string} file
+ */
+function checkoutOf(file) {
+  for (let dir = path.dirname(file); dir !== path.dirname(dir); dir = path.dirname(dir))
+    if (fs.existsSync(path.join(dir, 'package.json'))) return dir;
+  return REPO_ROOT;
+}
+
+/**
  * The table's rows, slowest first, and the run's figures.
  * @param {Report} report
  */
 export function timesOf(report) {
   const files = report.testResults.map((file) => ({
-    file: path.relative(REPO_ROOT, file.name).split(path.sep).join('/'),
+    file: path.relative(checkoutOf(file.name), file.name).split(path.sep).join('/'),
     tests: file.assertionResults.length,
     seconds: Math.max(0, file.endTime - file.startTime) / 1000,
   }));
