@@ -9,9 +9,10 @@
 // - controls: one block that Shadertoy compiles as it is and the page turns into a panel;
 // - the new object (cone, cylinder or torus): one section, "the new object", behind one
 //   interface, chosen by the one #if SCENE;
-// - near misses and edges: the adaptive anti-aliasing's tests of a pixel's own ray cones, from
-//   what radiance records of the first path ("what a path records", the one place where the
-//   edge tests, the Bounces view and the page's inspector hook into the loop);
+// - near misses and edges: the adaptive anti-aliasing's tests of the ray cones of a pixel's
+//   centre ray, from its first hit, before the sample loop;
+// - what radiance records of the first path ("what a path records", the one place where the
+//   Bounces view and the page's inspector hook into the loop);
 // - the debug views (VIEW 1 to 5), compiled only when chosen.
 //
 // Numerical choices, each explained where it is made:
@@ -1017,32 +1018,10 @@ vec3 leaveTorus(vec3 p, vec3 n) {
 }
 
 // ---- what a path records ---------------------------------------------------------------------
-// radiance is the lecture's loop. What else needs to know about a pixel's first path (the edge
-// tests of the adaptive anti-aliasing, the Bounces view, the page's pixel inspector) radiance
-// tells these four functions, at four moments of the path; each keeps only what the host
-// compiles in (EDGE_TESTS, VIEW 4, PROBE_PATH: the inspector's src/raytracer/path-probe.js
-// defines probeRay and probeLit), and with none of them they are empty.
-#ifndef EDGE_TESTS
-#define EDGE_TESTS (ADAPTIVE_AA == 1 && SAMPLES > 1)
-#endif
-
-#if EDGE_TESTS
-// What the first sample's path did at its first surface, for the edge tests.
-struct FirstPath {
-    float t;            // the eye ray's hit (T_INFINITY for the sky)
-    vec3 p, l;          // the first surface point, the direction to the light
-    float lightDist;
-    float facing;       // n.l there: a surface facing away from the light has no shadow boundary
-    float width;        // the eye ray's cone width at p
-    vec3 reflected;     // the first reflected ray, from p
-    float reflectedT;   // its hit
-    float spread;       // its cone's widening per unit of distance
-    float reflects;     // 1 when the path reflected at its first surface
-    int id;
-};
-FirstPath firstPath;
-#endif
-
+// radiance is the lecture's loop. What else needs to know about a pixel's first path (the Bounces
+// view, the page's pixel inspector) radiance tells these four functions, at four moments of the
+// path; each keeps only what the host compiles in (VIEW 4, PROBE_PATH: the inspector's
+// src/raytracer/path-probe.js defines probeRay and probeLit), and with none of them they are empty.
 #if VIEW == 4
 // The reflections the pixel's first sample traced: set once, by its path (-1 until then).
 int pathBounces = -1;
@@ -1053,51 +1032,19 @@ void recordEyeRay(Hit hit) {
 #ifdef PROBE_PATH
     probeRay(0, hit.id, hit.t, hit.n, 1.0);
 #endif
-#if EDGE_TESTS
-    firstPath.t = hit.t;
-    firstPath.id = hit.id;
-    firstPath.p = vec3(0.0);
-    firstPath.l = vec3(0.0);
-    firstPath.lightDist = 0.0;
-    firstPath.facing = 0.0;
-    firstPath.width = 0.0;
-    firstPath.reflected = vec3(0.0);
-    firstPath.reflectedT = T_INFINITY;
-    firstPath.spread = 0.0;
-    firstPath.reflects = 0.0;
-#endif
 }
 
-// The surface at `bounce` was shaded: its point, the direction and distance to the light, n.l,
-// the ray cone's width there, and whether the light reaches it.
-void recordSurface(int bounce, vec3 p, vec3 l, float lightDist, float facing, float width, bool lit) {
+// The surface at `bounce` was shaded; `lit`: the light reaches it.
+void recordSurface(int bounce, bool lit) {
 #ifdef PROBE_PATH
     probeLit(bounce, lit);
 #endif
-#if EDGE_TESTS
-    if (bounce == 0) {
-        firstPath.p = p;
-        firstPath.l = l;
-        firstPath.lightDist = lightDist;
-        firstPath.facing = facing;
-        firstPath.width = width;
-    }
-#endif
 }
 
-// The surface at `bounce` reflected: the reflected ray rd met `hit`, its cone widening by spread
-// per unit of distance, carrying `weight` of the pixel.
-void recordReflection(int bounce, vec3 rd, Hit hit, float spread, float weight) {
+// The surface at `bounce` reflected: the reflected ray met `hit`, carrying `weight` of the pixel.
+void recordReflection(int bounce, Hit hit, float weight) {
 #ifdef PROBE_PATH
     probeRay(bounce + 1, hit.id, hit.t, hit.n, weight);
-#endif
-#if EDGE_TESTS
-    if (bounce == 0) {
-        firstPath.reflected = rd;
-        firstPath.reflectedT = hit.t;
-        firstPath.spread = spread;
-        firstPath.reflects = 1.0;
-    }
 #endif
 }
 
@@ -1108,17 +1055,52 @@ void recordPathEnd(int bounces) {
 #endif
 }
 
-// ---- edges: the first sample's own near-miss tests ------------------------------------------
-// With adaptive anti-aliasing a pixel takes the n x n grid of samples when its first sample lies
-// near an edge it cannot resolve. Each pixel tests its own rays: the eye ray stands for a cone as
-// wide as the pixel's footprint (the ray cone the texture filter uses), and the pixel is near a
+// ---- edges: the centre ray's own near-miss tests ---------------------------------------------
+// With adaptive anti-aliasing a pixel takes the n x n grid of samples when its centre lies near
+// an edge it cannot resolve. Each pixel tests its own rays: the eye ray stands for a cone as wide
+// as the pixel's footprint (the ray cone the texture filter uses), and the pixel is near a
 // silhouette when an object's outline passes within that width of the ray, in front of what the
 // ray hit; near a shadow boundary when the shadow ray's cone (from the footprint on the surface
-// to a point at the light) grazes an occluder; near a reflected silhouette when the first
-// reflected ray's cone grazes an outline. Closed forms per primitive, no extra trace. (A host may
-// define EDGE_TESTS 0 before the file: the progressive form, whose samples are points.)
+// to a point at the light) grazes an occluder; near a reflected silhouette when the reflected
+// ray's cone grazes an outline. Closed forms per primitive, from the eye ray's hit alone. (A host
+// may define EDGE_TESTS 0 before the file: the progressive form, whose samples are points.)
+#ifndef EDGE_TESTS
+#define EDGE_TESTS (ADAPTIVE_AA == 1 && SAMPLES > 1)
+#endif
 
 #if EDGE_TESTS
+// What the tests read of the centre ray's first surface: the shadow ray's and the reflected
+// ray's cones start there as radiance would start them.
+struct FirstHit {
+    float t;            // the eye ray's hit (T_INFINITY for the sky)
+    int id;
+    vec3 p, l;          // the hit point, the direction to the light
+    float lightDist;
+    bool facesLight;    // n.l > 0: only then can a shadow boundary cross it
+    float width;        // the eye ray's cone width at p
+    vec3 reflected;     // the reflected ray's direction
+    float spread;       // its cone's widening per unit of distance (radiance's, curvature included)
+    bool reflects;      // radiance reflects there: weight of at least 1/255 and a bounce left
+};
+
+FirstHit firstHitOf(Scene s, vec3 dir, Hit hit, float pixelSpread) {
+    FirstHit f;
+    f.t = hit.t;
+    f.id = hit.id;
+    bool sky = hit.id == ID_NONE;
+    f.p = sky ? vec3(0.0) : hit.t * dir;
+    vec3 toLight = s.light - f.p;
+    f.lightDist = length(toLight);
+    f.l = toLight / f.lightDist;
+    f.facesLight = all(bvec2(!sky, dot(hit.n, f.l) > 0.0));
+    f.width = pixelSpread * hit.t;
+    f.reflected = reflect(dir, hit.n);
+    float sphereSpread = 2.0 * f.width / s.sphereRadius;
+    float objectSpread = 2.0 * f.width / max(objectMirrorRadius(s.object, f.p), f.width);
+    f.spread = pixelSpread + (hit.id == ID_SPHERE ? sphereSpread : (hit.id == ID_OBJECT ? objectSpread : 0.0));
+    f.reflects = all(bvec3(!sky, BOUNCES > 0, s.reflectivity[clamp(hit.id, 0, 3)] >= 1.0 / 255.0));
+    return f;
+}
 // Whether the cone passes near an outline of the scene: every object but `skipId` (the convex
 // solid a secondary ray leaves, whose own outline is not in its way).
 bool nearOutline(Scene s, RayCone c, int skipId) {
@@ -1132,21 +1114,21 @@ bool nearOutline(Scene s, RayCone c, int skipId) {
 // the first sample): an outline that crosses the pixel passes within 0.5 of its centre across it
 // (0.71 at its corners). Measured at 640x360 against the converged reference, 16 samples at
 // edges: reach 0.5, RMSE 0.0034 with 1.9% of pixels marked by these tests; 0.65, 0.0033 and 2.6%;
-// 0.8, 0.0033 and 3.0%; 1, 0.0032 and 3.7%. The quad's sharing (mainImage) gives back what 0.5
-// leaves at the corners.
+// 0.8, 0.0033 and 3.0%; 1, 0.0032 and 3.7% (then with the reflected cone ending at its hit). The
+// quad's sharing (mainImage) gives back what 0.5 leaves at the corners.
 const float EDGE_REACH = 0.5;
 
-// The first sample's edge tests, from what radiance recorded of its path: (silhouette, shadow
-// boundary, reflected silhouette), each 1 when its cone grazes an outline. pixelSpread is the
-// angle the pixel subtends.
-vec3 firstSampleEdges(Scene s, vec3 eyeDir, float pixelSpread) {
-    FirstPath f = firstPath;
+// The centre ray's edge tests: (silhouette, shadow boundary, reflected silhouette), each 1 when
+// its cone grazes an outline. pixelSpread is the angle the pixel subtends. The reflected ray is
+// not traced: its cone runs on past its hit, which marks at least the pixels a test that stopped
+// there would (measured: the same RMSE, npm run bench:apart).
+vec3 centreEdges(Scene s, vec3 eyeDir, float pixelSpread) {
+    FirstHit f = firstHitOf(s, eyeDir, traceScene(s, vec3(0.0), eyeDir, ID_NONE, T_INFINITY), pixelSpread);
     float w = EDGE_REACH * f.width;
     bool silhouette = nearOutline(s, RayCone(vec3(0.0), eyeDir, 0.0, EDGE_REACH * pixelSpread, f.t), ID_NONE);
-    bool lit = all(bvec2(f.id != ID_NONE, f.facing > 0.0));
     int leaving = reenters(f.id) ? ID_NONE : f.id;  // the torus may shade and mirror itself
-    bool shadow = all(bvec2(lit, nearOutline(s, RayCone(f.p, f.l, w, -w / f.lightDist, f.lightDist), leaving)));
-    bool reflection = all(bvec2(f.reflects > 0.0, nearOutline(s, RayCone(f.p, f.reflected, w, EDGE_REACH * f.spread, f.reflectedT), leaving)));
+    bool shadow = all(bvec2(f.facesLight, nearOutline(s, RayCone(f.p, f.l, w, -w / f.lightDist, f.lightDist), leaving)));
+    bool reflection = all(bvec2(f.reflects, nearOutline(s, RayCone(f.p, f.reflected, w, EDGE_REACH * f.spread, T_INFINITY), leaving)));
     return vec3(silhouette, shadow, reflection);
 }
 #endif
@@ -1243,7 +1225,7 @@ vec3 radiance(Scene s, EyeRay eye, float coneSpread, out vec3 key, out vec3 keyN
         bool blocked = traceScene(s, mix(p, leaveTorus(p, n), bvec3(meetsAgain)), l, meetsAgain ? ID_NONE : id, lightDist).id != ID_NONE;
         lit = all(bvec2(lit, !blocked));
 #endif
-        recordSurface(bounce, p, l, lightDist, facing, coneWidth, lit);
+        recordSurface(bounce, lit);
         vec3 local = shadeLocal(l, n, rd, albedo, facing, lit);
         key.y = bounce == 0 ? float(lit) : key.y;
 
@@ -1272,7 +1254,7 @@ vec3 radiance(Scene s, EyeRay eye, float coneSpread, out vec3 key, out vec3 keyN
         bool again = any(bvec2(inside, reenters(id)));
         ro = mix(p, inside ? offsetAlong(p, -n) : leaveTorus(p, n), bvec3(again));
         hit = traceScene(s, ro, rd, again ? ID_NONE : id, T_INFINITY);
-        recordReflection(bounce, rd, hit, coneSpread, throughput);
+        recordReflection(bounce, hit, throughput);
         key.z = bounce == 0 ? float(hit.id) : key.z;
         if (hit.id == ID_NONE) {
             color += throughput * skyColor(rd);
@@ -1396,6 +1378,16 @@ void mainImage(out vec4 fragColor, in vec2 fragCoord) {
     // One sample at the pixel centre, the whole pixel its footprint, and no loop around it.
     vec3 pixelColor = sampleRadiance(view, fragCoord, 1.0, key, keyNormal);
 #elif ADAPTIVE_AA
+    // Near an edge the first sample cannot resolve? Each pixel asks its own rays first
+    // (centreEdges: a silhouette, a shadow boundary, a reflected silhouette within reach of the
+    // cones of its centre ray, traced once more for them), before the loop: inside it, SwiftShader
+    // would run the tests on every trip of a quad that takes the extra samples: 5-8% of the
+    // adaptive frame, more than the second trace of the centre ray costs (docs/benchmark.md).
+#if EDGE_TESTS
+    vec3 ownEdges = centreEdges(s, eyeRay(camera, fragCoord, 1.0).dir, pixelSpread);
+#else
+    vec3 ownEdges = vec3(0.0);
+#endif
     vec3 pixelColor = vec3(0.0);
     for (int i = 0;; i++) {
         // Trip 0: the pixel centre, the whole pixel its footprint. Then, for a pixel near an edge,
@@ -1407,9 +1399,7 @@ void mainImage(out vec4 fragColor, in vec2 fragCoord) {
         EyeRay ray = eyeRay(camera, fragCoord + (i == 0 ? vec2(0.0) : offset), footprint);
         vec3 c = radiance(s, ray, pixelSpread * footprint, key, keyNormal);
         if (i == 0) {
-            // Near an edge the first sample cannot resolve? Each pixel asks its own rays
-            // (firstSampleEdges: a silhouette, a shadow boundary, a reflected silhouette within
-            // reach of its cones), and the 2x2 quad adds, from the derivatives of what each of its
+            // The 2x2 quad adds to the pixel's own tests, from the derivatives of what each of its
             // pixels' first samples saw, what those cannot see: a crease (a normal that turns by
             // more than a crease would: the sum of the absolute changes of its components over
             // the quad, at most ~0.1 across a pixel of the sphere at 640x360, at least 1 across
@@ -1417,19 +1407,15 @@ void mainImage(out vec4 fragColor, in vec2 fragCoord) {
             // shadowed, or of the object in the first reflection. Derivatives are defined only in
             // uniform control flow: trip 0 is, since no pixel can leave the loop before its first
             // exit test, at the bottom. The ground's stripes are already filtered over each
-            // pixel's footprint: they are in neither test. Measured (640x360, the default view):
-            // the tests of its own rays mark 1.9% of the pixels (silhouettes 0.8%, shadow
-            // boundaries 0.2%, reflected silhouettes 0.9%), the quad's derivatives 1.0% more, the
-            // quad's sharing (below) 0.7%; the quad test alone marked 2.1% and missed the edges
-            // that run between quads.
+            // pixel's footprint: they are in neither test. Measured (640x360, the default view,
+            // the "Extra samples" view): the tests of its own rays mark 1.8% of the pixels
+            // (silhouettes 0.7%, shadow boundaries 0.2%, reflected silhouettes 0.9%), the quad's
+            // derivatives 1.0% more, the quad's sharing (below) 0.7%: 3.5% in all; the quad test
+            // alone marked 2.1% and missed the edges that run between quads.
             vec3 keyStep = abs(dFdx(key)) + abs(dFdy(key));
             float normalStep = dot(abs(dFdx(keyNormal)) + abs(dFdy(keyNormal)), vec3(1.0));
             bool quad = any(bvec2(any(greaterThan(keyStep, vec3(0.0))), normalStep > 0.5));
-#if EDGE_TESTS
-            edges = vec4(firstSampleEdges(s, ray.dir, pixelSpread), float(quad));
-#else
-            edges = vec4(0.0, 0.0, 0.0, float(quad));
-#endif
+            edges = vec4(ownEdges, float(quad));
             // SwiftShader runs a quad's four pixels together through the trips any of them
             // takes: once one of them takes the extra samples, the others take them too, at no
             // cost (an edge found in one pixel of a quad runs on into its neighbours).

@@ -1,6 +1,6 @@
 // The two frames that miss issue 28's targets, taken apart: the adaptive frame (target: 2.0x the
 // 1-spp frame) and the torus scene (target: 1.3x the cone scene). Each row is the project's text
-// with one edit (or a peer's design in its place), all timed in one page at 640x360, interleaved,
+// with one edit (or a design tried in its place), all timed in one page at 640x360, interleaved,
 // and each compared with the converged float64 reference of its scene. What a part costs is the
 // difference between two rows; the designs tried are rows of their own.
 //
@@ -17,9 +17,10 @@ import { withHarness } from '../harness/setup.js';
 import { renderRawShader } from '../harness/raw-webgl.js';
 import { EXTRA_SAMPLES_VIEW, countExtraSamplePixels } from '../../src/raytracer/extra-samples.js';
 import { replaceMarkedSection } from '../scripts/readme-section.js';
-import { composePeer } from './peers/compose-peer.js';
 import { measureVariants } from './measure.js';
-import { edit, pasteFormOf } from './variant-text.js';
+import { edit, pasteFormOf, uniformFormOf } from './variant-text.js';
+import { composeImageShader } from '../../src/shadertoy/header.js';
+import { median } from '../../src/shared/stats.js';
 
 const quick = process.argv.includes('--quick');
 /** The number after `flag` on the command line, else `fallback`. */
@@ -44,8 +45,8 @@ const TORUS = { SCENE: 2 };
 
 /** The first sample's cone test `name` (silhouette, shadow, reflection) never marks a pixel. */
 function withoutConeTest(text, name) {
-  const at = text.indexOf(`    bool ${name} = `, text.indexOf('vec3 firstSampleEdges('));
-  if (at < 0) throw new Error(`benchmark: firstSampleEdges has no test named ${name}`);
+  const at = text.indexOf(`    bool ${name} = `, text.indexOf('vec3 centreEdges('));
+  if (at < 0) throw new Error(`benchmark: centreEdges has no test named ${name}`);
   return text.slice(0, at) + `    bool ${name} = false;` + text.slice(text.indexOf('\n', at));
 }
 
@@ -115,8 +116,8 @@ const VARIANTS = [
       pasteForm(
         edit(
           edit(source, 'edge = marked > 0.0;', 'edge = false;'),
-          'edges = vec4(firstSampleEdges(s, ray.dir, pixelSpread), float(quad));',
-          'edges = vec4(0.0);',
+          'vec3 ownEdges = centreEdges(s, eyeRay(camera, fragCoord, 1.0).dir, pixelSpread);',
+          'vec3 ownEdges = vec3(0.0);',
         ),
         ADAPTIVE,
       ),
@@ -124,7 +125,7 @@ const VARIANTS = [
   {
     table: 'adaptive',
     name: 'every edge test computed, never an edge',
-    shows: 'what the tests cost a pixel that takes no extra samples',
+    shows: 'what the tests (and the centre ray they trace again) cost a pixel that takes no extra samples',
     code: () => pasteForm(edit(source, 'edge = marked > 0.0;', 'edge = marked > 2.0;'), ADAPTIVE),
   },
   { table: 'adaptive', name: 'adaptive 16 at edges, as it is', shows: '', edgeView: (t) => t, code: () => pasteForm(source, ADAPTIVE) },
@@ -141,12 +142,6 @@ const VARIANTS = [
     shows: 'the cheapest marking: it misses the edges that run between quads',
     edgeView: (t) => edit(t, '#define EDGE_TESTS (ADAPTIVE_AA == 1 && SAMPLES > 1)', '#define EDGE_TESTS 0'),
     code: () => pasteForm(edit(source, '#define EDGE_TESTS (ADAPTIVE_AA == 1 && SAMPLES > 1)', '#define EDGE_TESTS 0'), ADAPTIVE),
-  },
-  {
-    table: 'adaptive',
-    name: 'design tried: the cone tests before the loop (peers/prepass-edges.glsl)',
-    shows: 'the tests no longer ride in every trip of a marked quad, for a second trace of the centre ray',
-    code: () => pasteForm(composePeer(source, read(path.join(PEERS, 'prepass-edges.glsl')), { peerName: 'prepass-edges.glsl' }), ADAPTIVE),
   },
   { table: 'adaptive', name: 'uniform 4', shows: 'the >2/255 target', code: () => pasteForm(source, { SAMPLES: 4 }) },
   {
@@ -209,6 +204,43 @@ const VARIANTS = [
   },
 ];
 
+// What a program costs before its first frame, in each scene and form (the default view,
+// adaptive 16): the wall time of renderRawShader at 2x2, which is the compile, the link and one
+// tiny frame, plus opening a page, which the empty shader's row measures. Each program text is
+// new to the browser (a comment numbers it), so no cache answers.
+const COMPILE_ROUNDS = quick ? 1 : 3;
+/** @type {Array<{scene: string, SCENE: number}>} */
+const SCENES = [
+  { scene: 'cone', SCENE: 0 },
+  { scene: 'cylinder', SCENE: 1 },
+  { scene: 'torus', SCENE: 2 },
+];
+const uniformForm = uniformFormOf(source);
+
+async function compileTimes() {
+  const DEFAULT_VIEW = { SAMPLES: 16, ADAPTIVE_AA: 1 };
+  const programs = [
+    { scene: 'the empty shader (opening the page, the floor)', form: 'paste', code: composeImageShader(EMPTY).code },
+    ...SCENES.flatMap(({ scene, SCENE }) => [
+      { scene, form: 'paste', code: pasteForm(source, { ...DEFAULT_VIEW, SCENE }) },
+      { scene, form: 'uniform', code: uniformForm(source, { ...DEFAULT_VIEW, SCENE }) },
+    ]),
+  ];
+  /** @type {Map<object, number[]>} */
+  const seconds = new Map(programs.map((p) => [p, []]));
+  let n = 0;
+  for (let round = 0; round < COMPILE_ROUNDS; round++) {
+    for (const program of programs) {
+      const started = performance.now();
+      const shown = await renderRawShader(`${program.code}\n// compile ${n++}\n`, { width: 2, height: 2 });
+      if (shown.stage) throw new Error(`${program.scene} (${program.form} form): ${shown.stage}: ${shown.log}`);
+      seconds.get(program)?.push((performance.now() - started) / 1000);
+    }
+  }
+  return programs.map((p) => ({ scene: p.scene, form: p.form, seconds: seconds.get(p) ?? [] }));
+}
+const EMPTY = 'void mainImage(out vec4 fragColor, in vec2 fragCoord) {\n    fragColor = vec4(0.5, 0.5, 0.5, 1.0);\n}\n';
+
 const [width, height] = quick ? [160, 90] : [640, 360];
 const results = await withHarness(async (context) => {
   const measured = await measureVariants(VARIANTS, {
@@ -228,7 +260,7 @@ const results = await withHarness(async (context) => {
     if (shown.stage) throw new Error(`${m.variant.name}, edge view: ${shown.stage}: ${shown.log}`);
     extras.set(m.variant.name, countExtraSamplePixels(shown) / (width * height));
   }
-  return { environment: context.environment, measured, extras };
+  return { environment: context.environment, measured, extras, compiles: await compileTimes() };
 });
 const failed = results.measured.filter((m) => m.error);
 if (failed.length) {
@@ -237,6 +269,7 @@ if (failed.length) {
 }
 for (const m of results.measured)
   console.log(`  ${m.variant.name}: ${m.medianMs.toFixed(1)} ms, RMSE ${m.rmse.toFixed(4)}, >2/255 ${(100 * m.over2).toFixed(2)}%`);
+for (const c of results.compiles) console.log(`  compile: ${c.scene}, ${c.form} form: ${c.seconds.map((x) => x.toFixed(2)).join(', ')} s`);
 if (quick) {
   console.log(`\nquick run: all ${VARIANTS.length} variants compiled, rendered and measured; nothing written.`);
   process.exit(0);
@@ -262,6 +295,18 @@ const text = [
   table('adaptive', '1 spp'),
   '',
   table('torus', 'cone scene'),
+  '',
+  `The compile before the first frame (the default view, adaptive 16; wall time of a 2×2 render, median (min–max) of ${COMPILE_ROUNDS} rounds, interleaved):`,
+  '',
+  '| scene | paste form s | uniform form s |',
+  '|---|---|---|',
+  ...[...new Set(results.compiles.map((c) => c.scene))].map((scene) => {
+    const cell = (form) => {
+      const c = results.compiles.find((k) => k.scene === scene && k.form === form);
+      return c ? `${median(c.seconds).toFixed(2)} (${Math.min(...c.seconds).toFixed(2)}–${Math.max(...c.seconds).toFixed(2)})` : '';
+    };
+    return `| ${scene} | ${cell('paste')} | ${cell('uniform')} |`;
+  }),
 ].join('\n');
 replaceMarkedSection(path.join(REPO_ROOT, 'docs', 'benchmark.md'), 'apart', text);
 console.log(`\n${text}\n\nwrote the two tables between the apart markers in docs/benchmark.md`);

@@ -12,11 +12,23 @@ import { parseControls } from '../../src/shadertoy/controls.js';
  * @param {string} source the project's shader, whose controls the host block declares
  */
 export function pasteFormOf(source) {
+  return formOf(source, true);
+}
+
+/** As pasteFormOf, but the live controls uniforms: the form the page compiles while a control moves. */
+export function uniformFormOf(source) {
+  return formOf(source, false);
+}
+
+/** @param {string} source @param {boolean} constants */
+function formOf(source, constants) {
   const controls = parseControls(source);
   const defaults = Object.fromEntries(controls.map((c) => [c.name, c.default]));
   /** @param {string} text @param {Record<string, number>} [defines] */
   return (text, defines = {}) =>
-    composeImageShader(text, { hostBlock: hostControlBlock(controls, { SAMPLES: 1, ADAPTIVE_AA: 0, ...defines }, defaults) }).code;
+    composeImageShader(text, {
+      hostBlock: hostControlBlock(controls, { SAMPLES: 1, ADAPTIVE_AA: 0, ...defines }, constants ? defaults : null),
+    }).code;
 }
 
 /** `text` with `from` replaced by `to`, which must occur exactly once. */
