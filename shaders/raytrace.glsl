@@ -10,9 +10,8 @@
 // - the new object (cone, cylinder or torus): one section, "the new object", behind one
 //   interface, chosen by the one #if SCENE;
 // - near misses and edges: the adaptive anti-aliasing's tests of the ray cones of a pixel's
-//   centre ray, from its first hit, before the sample loop;
-// - what radiance records of the first path ("what a path records", the one place where the
-//   Bounces view and the page's inspector hook into the loop);
+//   centre ray, from the hit radiance records of it ("what a path records", the one place where
+//   the edge tests, the Bounces view and the page's inspector hook into the loop);
 // - the debug views (VIEW 1 to 5), compiled only when chosen.
 //
 // Numerical choices, each explained where it is made:
@@ -1018,10 +1017,21 @@ vec3 leaveTorus(vec3 p, vec3 n) {
 }
 
 // ---- what a path records ---------------------------------------------------------------------
-// radiance is the lecture's loop. What else needs to know about a pixel's first path (the Bounces
-// view, the page's pixel inspector) radiance tells these four functions, at four moments of the
-// path; each keeps only what the host compiles in (VIEW 4, PROBE_PATH: the inspector's
-// src/raytracer/path-probe.js defines probeRay and probeLit), and with none of them they are empty.
+// radiance is the lecture's loop. What else needs to know about a pixel's first path (the edge
+// tests of the adaptive anti-aliasing, the Bounces view, the page's pixel inspector) radiance
+// tells these four functions, at four moments of the path; each keeps only what the host
+// compiles in (EDGE_TESTS, VIEW 4, PROBE_PATH: the inspector's src/raytracer/path-probe.js
+// defines probeRay and probeLit), and with none of them they are empty.
+#ifndef EDGE_TESTS
+#define EDGE_TESTS (ADAPTIVE_AA == 1 && SAMPLES > 1)
+#endif
+
+#if EDGE_TESTS
+// The eye ray's hit: all the edge tests read of a sample's path (one record a sample; the shadow
+// and reflected cones start from it as radiance's rays do).
+Hit eyeHit;
+#endif
+
 #if VIEW == 4
 // The reflections the pixel's first sample traced: set once, by its path (-1 until then).
 int pathBounces = -1;
@@ -1031,6 +1041,9 @@ int pathBounces = -1;
 void recordEyeRay(Hit hit) {
 #ifdef PROBE_PATH
     probeRay(0, hit.id, hit.t, hit.n, 1.0);
+#endif
+#if EDGE_TESTS
+    eyeHit = hit;
 #endif
 }
 
@@ -1064,9 +1077,6 @@ void recordPathEnd(int bounces) {
 // to a point at the light) grazes an occluder; near a reflected silhouette when the reflected
 // ray's cone grazes an outline. Closed forms per primitive, from the eye ray's hit alone. (A host
 // may define EDGE_TESTS 0 before the file: the progressive form, whose samples are points.)
-#ifndef EDGE_TESTS
-#define EDGE_TESTS (ADAPTIVE_AA == 1 && SAMPLES > 1)
-#endif
 
 #if EDGE_TESTS
 // What the tests read of the centre ray's first surface: the shadow ray's and the reflected
@@ -1118,12 +1128,12 @@ bool nearOutline(Scene s, RayCone c, int skipId) {
 // quad's sharing (mainImage) gives back what 0.5 leaves at the corners.
 const float EDGE_REACH = 0.5;
 
-// The centre ray's edge tests: (silhouette, shadow boundary, reflected silhouette), each 1 when
-// its cone grazes an outline. pixelSpread is the angle the pixel subtends. The reflected ray is
-// not traced: its cone runs on past its hit, which marks at least the pixels a test that stopped
-// there would (measured: the same RMSE, npm run bench:apart).
-vec3 centreEdges(Scene s, vec3 eyeDir, float pixelSpread) {
-    FirstHit f = firstHitOf(s, eyeDir, traceScene(s, vec3(0.0), eyeDir, ID_NONE, T_INFINITY), pixelSpread);
+// The centre ray's edge tests, from its hit: (silhouette, shadow boundary, reflected silhouette),
+// each 1 when its cone grazes an outline. pixelSpread is the angle the pixel subtends. The
+// reflected ray's hit is not recorded: its cone runs on past it, which marks at least the pixels
+// a test that stopped there would (3.48% of the pixels against 3.45% at 640x360, the same RMSE).
+vec3 centreEdges(Scene s, vec3 eyeDir, Hit hit, float pixelSpread) {
+    FirstHit f = firstHitOf(s, eyeDir, hit, pixelSpread);
     float w = EDGE_REACH * f.width;
     bool silhouette = nearOutline(s, RayCone(vec3(0.0), eyeDir, 0.0, EDGE_REACH * pixelSpread, f.t), ID_NONE);
     int leaving = reenters(f.id) ? ID_NONE : f.id;  // the torus may shade and mirror itself
@@ -1378,16 +1388,6 @@ void mainImage(out vec4 fragColor, in vec2 fragCoord) {
     // One sample at the pixel centre, the whole pixel its footprint, and no loop around it.
     vec3 pixelColor = sampleRadiance(view, fragCoord, 1.0, key, keyNormal);
 #elif ADAPTIVE_AA
-    // Near an edge the first sample cannot resolve? Each pixel asks its own rays first
-    // (centreEdges: a silhouette, a shadow boundary, a reflected silhouette within reach of the
-    // cones of its centre ray, traced once more for them), before the loop: inside it, SwiftShader
-    // would run the tests on every trip of a quad that takes the extra samples: 5-8% of the
-    // adaptive frame, more than the second trace of the centre ray costs (docs/benchmark.md).
-#if EDGE_TESTS
-    vec3 ownEdges = centreEdges(s, eyeRay(camera, fragCoord, 1.0).dir, pixelSpread);
-#else
-    vec3 ownEdges = vec3(0.0);
-#endif
     vec3 pixelColor = vec3(0.0);
     for (int i = 0;; i++) {
         // Trip 0: the pixel centre, the whole pixel its footprint. Then, for a pixel near an edge,
@@ -1399,23 +1399,32 @@ void mainImage(out vec4 fragColor, in vec2 fragCoord) {
         EyeRay ray = eyeRay(camera, fragCoord + (i == 0 ? vec2(0.0) : offset), footprint);
         vec3 c = radiance(s, ray, pixelSpread * footprint, key, keyNormal);
         if (i == 0) {
-            // The 2x2 quad adds to the pixel's own tests, from the derivatives of what each of its
-            // pixels' first samples saw, what those cannot see: a crease (a normal that turns by
-            // more than a crease would: the sum of the absolute changes of its components over
-            // the quad, at most ~0.1 across a pixel of the sphere at 640x360, at least 1 across
-            // an edge of the cube), two surfaces meeting, and any change of object, of lit or
-            // shadowed, or of the object in the first reflection. Derivatives are defined only in
-            // uniform control flow: trip 0 is, since no pixel can leave the loop before its first
-            // exit test, at the bottom. The ground's stripes are already filtered over each
-            // pixel's footprint: they are in neither test. Measured (640x360, the default view,
-            // the "Extra samples" view): the tests of its own rays mark 1.8% of the pixels
-            // (silhouettes 0.7%, shadow boundaries 0.2%, reflected silhouettes 0.9%), the quad's
-            // derivatives 1.0% more, the quad's sharing (below) 0.7%: 3.5% in all; the quad test
-            // alone marked 2.1% and missed the edges that run between quads.
+            // Near an edge the first sample cannot resolve? Each pixel asks its own rays
+            // (centreEdges: a silhouette, a shadow boundary, a reflected silhouette within reach
+            // of the cones of its centre ray, from the hit that ray recorded), and the 2x2 quad
+            // adds, from the derivatives of what each of its pixels' first samples saw, what those
+            // cannot see: a crease (a normal that turns by more than a crease would: the sum of
+            // the absolute changes of its components over the quad, at most ~0.1 across a pixel
+            // of the sphere at 640x360, at least 1 across an edge of the cube), two surfaces
+            // meeting, and any change of object, of lit or shadowed, or of the object in the first
+            // reflection. Derivatives are defined only in uniform control flow: trip 0 is, since
+            // no pixel can leave the loop before its first exit test, at the bottom. SwiftShader
+            // runs this body on every trip, so a marked quad pays the tests on each; before the
+            // loop they would need a trace of their own, which measured slower in the torus scene
+            // (docs/benchmark.md). The ground's stripes are already filtered over each pixel's
+            // footprint: they are in neither test. Measured (640x360, the default view, the "Extra
+            // samples" view): the tests of its own rays mark 1.8% of the pixels (silhouettes 0.7%,
+            // shadow boundaries 0.2%, reflected silhouettes 0.9%), the quad's derivatives 1.0%
+            // more, the quad's sharing (below) 0.7%: 3.5% in all; the quad test alone marked 2.1%
+            // and missed the edges that run between quads.
             vec3 keyStep = abs(dFdx(key)) + abs(dFdy(key));
             float normalStep = dot(abs(dFdx(keyNormal)) + abs(dFdy(keyNormal)), vec3(1.0));
             bool quad = any(bvec2(any(greaterThan(keyStep, vec3(0.0))), normalStep > 0.5));
-            edges = vec4(ownEdges, float(quad));
+#if EDGE_TESTS
+            edges = vec4(centreEdges(s, ray.dir, eyeHit, pixelSpread), float(quad));
+#else
+            edges = vec4(0.0, 0.0, 0.0, float(quad));
+#endif
             // SwiftShader runs a quad's four pixels together through the trips any of them
             // takes: once one of them takes the extra samples, the others take them too, at no
             // cost (an edge found in one pixel of a quad runs on into its neighbours).

@@ -116,8 +116,8 @@ const VARIANTS = [
       pasteForm(
         edit(
           edit(source, 'edge = marked > 0.0;', 'edge = false;'),
-          'vec3 ownEdges = centreEdges(s, eyeRay(camera, fragCoord, 1.0).dir, pixelSpread);',
-          'vec3 ownEdges = vec3(0.0);',
+          'edges = vec4(centreEdges(s, ray.dir, eyeHit, pixelSpread), float(quad));',
+          'edges = vec4(0.0);',
         ),
         ADAPTIVE,
       ),
@@ -125,7 +125,7 @@ const VARIANTS = [
   {
     table: 'adaptive',
     name: 'every edge test computed, never an edge',
-    shows: 'what the tests (and the centre ray they trace again) cost a pixel that takes no extra samples',
+    shows: 'what the tests cost a pixel that takes no extra samples',
     code: () => pasteForm(edit(source, 'edge = marked > 0.0;', 'edge = marked > 2.0;'), ADAPTIVE),
   },
   { table: 'adaptive', name: 'adaptive 16 at edges, as it is', shows: '', edgeView: (t) => t, code: () => pasteForm(source, ADAPTIVE) },

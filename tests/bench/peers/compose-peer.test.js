@@ -221,9 +221,7 @@ describe('composed peers in WebGL2 (SwiftShader)', () => {
     for (const name of PEERS) {
       const source = composePeer(project, peerSource(name), { peerName: name });
       const controls = parseControls(source);
-      // (Uniform 4 samples: the peers are one-sample designs, and the adaptive path's edge tests
-      // trace through the project's traceScene, which a peer may replace with another signature.)
-      const values = { BOUNCES: 0, SHADOWS: 0, TEXTURE: 1, TEXTURE_FILTER: 0, SAMPLES: 4, ADAPTIVE_AA: 0 };
+      const values = { BOUNCES: 0, SHADOWS: 0, TEXTURE: 1, TEXTURE_FILTER: 0, SAMPLES: 4 };
       // A host block declares the live controls as uniforms; unset uniforms read 0, so this
       // checks compilation and a draw, not the picture.
       const { code, firstSourceLine } = composeImageShader(source, { hostBlock: hostControlBlock(controls, values) });
