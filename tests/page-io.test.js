@@ -28,6 +28,7 @@ import {
   withPage,
   withServedDir,
 } from './page-helpers.js';
+import { captureDownloads } from './harness/downloads.js';
 
 afterAll(disconnect);
 
@@ -40,35 +41,6 @@ function allPixels(image, rgb) {
     if (p.some((v, c) => Math.abs(v - rgb[c]) > 1)) return false;
   }
   return true;
-}
-
-/** Saves the page's downloads in a fresh folder; `next()` waits for the next finished file. */
-async function captureDownloads(page) {
-  const dir = fs.mkdtempSync(path.join(os.tmpdir(), 'raytracer-downloads-'));
-  // the page's own session: the browser target's (browser().target()) was found gone once in a
-  // full run ("No target with given id found"), and the Browser domain answers on a page's too
-  const session = await page.createCDPSession();
-  await session.send('Browser.setDownloadBehavior', { behavior: 'allow', downloadPath: dir });
-  const seen = new Set();
-  return {
-    async next(timeoutMs = 20_000) {
-      const end = Date.now() + timeoutMs;
-      while (Date.now() < end) {
-        const done = fs.readdirSync(dir).filter((f) => !f.endsWith('.crdownload') && !seen.has(f));
-        if (done.length) {
-          seen.add(done[0]);
-          return { name: done[0], file: path.join(dir, done[0]) };
-        }
-        await new Promise((r) => setTimeout(r, 50));
-      }
-      throw new Error(`no download arrived in ${timeoutMs} ms`);
-    },
-    async close() {
-      await session.send('Browser.setDownloadBehavior', { behavior: 'default' }).catch(() => {});
-      await session.detach().catch(() => {});
-      fs.rmSync(dir, { recursive: true, force: true });
-    },
-  };
 }
 
 /** Drops files on the page as a person does from a file manager (CDP drag events). */

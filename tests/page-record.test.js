@@ -5,15 +5,13 @@
 // frames, decoded by the browser's VideoDecoder, show their iFrame and iTime), the PNG sequence
 // with fflate and pngjs (frame count, size, and each frame's iFrame and iTime in its colour).
 // Cancel stops a recording and nothing is saved.
-import fs from 'node:fs';
-import os from 'node:os';
-import path from 'node:path';
 import { unzipSync } from 'fflate';
 import { ALL_FORMATS, BufferSource, EncodedPacketSink, Input } from 'mediabunny';
 import { PNG } from 'pngjs';
 import { afterAll, describe, expect, test } from 'vitest';
 import { disconnect } from './harness/page.js';
 import { button, info, typeInEditor, withControl, withPage } from './page-helpers.js';
+import { captureDownloads } from './harness/downloads.js';
 
 afterAll(disconnect);
 
@@ -102,52 +100,6 @@ function readPngZip(bytes) {
   const files = unzipSync(bytes);
   const names = Object.keys(files).sort();
   return names.map((name) => ({ name, ...PNG.sync.read(Buffer.from(files[name])) }));
-}
-
-/** Saves the page's downloads in a fresh folder; `next()` waits for the next finished file. */
-async function captureDownloads(page) {
-  const dir = fs.mkdtempSync(path.join(os.tmpdir(), 'raytracer-recordings-'));
-  const session = await page.browser().target().createCDPSession();
-  await session.send('Browser.setDownloadBehavior', { behavior: 'allow', downloadPath: dir });
-  const seen = new Set();
-  // Chromium may put an empty file of the final name beside the .crdownload it writes into, and
-  // move the data over when done (a full run under load read such a file: "unrecognizable
-  // format"): a file is finished when no .crdownload is left and its size, not 0, holds still
-  // over two looks.
-  /** @type {Map<string, number>} */
-  const sizes = new Map();
-  const finished = () => {
-    const names = fs.readdirSync(dir);
-    if (names.some((f) => f.endsWith('.crdownload'))) return [];
-    return names.filter((f) => {
-      if (seen.has(f)) return false;
-      const size = fs.statSync(path.join(dir, f)).size;
-      const still = size > 0 && sizes.get(f) === size;
-      sizes.set(f, size);
-      return still;
-    });
-  };
-  return {
-    async next(timeoutMs = 60_000) {
-      const end = Date.now() + timeoutMs;
-      while (Date.now() < end) {
-        const done = finished();
-        if (done.length) {
-          seen.add(done[0]);
-          return { name: done[0], bytes: new Uint8Array(fs.readFileSync(path.join(dir, done[0]))) };
-        }
-        await new Promise((r) => setTimeout(r, 50));
-      }
-      throw new Error(`no download arrived in ${timeoutMs} ms`);
-    },
-    /** Files downloaded (or under way) that next() has not handed out. */
-    pending: () => fs.readdirSync(dir).filter((f) => !seen.has(f)),
-    async close() {
-      await session.send('Browser.setDownloadBehavior', { behavior: 'default' }).catch(() => {});
-      await session.detach().catch(() => {});
-      fs.rmSync(dir, { recursive: true, force: true });
-    },
-  };
 }
 
 /**
