@@ -1080,7 +1080,8 @@ void recordPathEnd(int bounces) {
 
 #if EDGE_TESTS
 // What the tests read of the centre ray's first surface: the shadow ray's and the reflected
-// ray's cones start there as radiance would start them.
+// ray's cones start there as radiance would start them (from the point as traced, not
+// re-projected: the cones are far wider than its rounding).
 struct FirstHit {
     float t;            // the eye ray's hit (T_INFINITY for the sky)
     int id;
@@ -1111,6 +1112,7 @@ FirstHit firstHitOf(Scene s, vec3 dir, Hit hit, float pixelSpread) {
     f.reflects = all(bvec3(!sky, BOUNCES > 0, s.reflectivity[clamp(hit.id, 0, 3)] >= 1.0 / 255.0));
     return f;
 }
+
 // Whether the cone passes near an outline of the scene: every object but `skipId` (the convex
 // solid a secondary ray leaves, whose own outline is not in its way).
 bool nearOutline(Scene s, RayCone c, int skipId) {
