@@ -101,7 +101,7 @@ beforeAll(async () => {
 }, 180_000);
 
 describe('shaderproof, installed from its tarball', () => {
-  test('npx finds it, and each verb has a --help; a bad flag prints the usage and exits 2', async () => {
+  test('npx finds it, and each verb has a --help; a bad flag is one line that points to it, exit 2', async () => {
     const { stdout } = await run('npx', ['--no-install', 'shaderproof', '--help'], { cwd: folder });
     for (const verb of ['open', 'render', 'record', 'test']) expect(stdout).toContain(verb);
     for (const verb of ['open', 'render', 'record', 'test']) {
@@ -111,10 +111,12 @@ describe('shaderproof, installed from its tarball', () => {
     }
     const bad = await shaderproof(['render', 'x.glsl', '--sise', '64x36']);
     expect(bad.code).toBe(2);
-    expect(bad.stderr).toMatch(/Unknown option '--sise'[\s\S]*shaderproof render SHADER/);
+    expect(bad.stderr.trim()).toBe('shaderproof render: no flag --sise (shaderproof render --help lists the flags)');
     const value = await shaderproof(['render', 'x.glsl', '-o', 'x.png', '--size', '64by36']);
     expect(value.code).toBe(2);
-    expect(value.stderr.split('\n')[0]).toBe('shaderproof render: --size 64by36: expected WIDTHxHEIGHT in pixels, such as 640x360');
+    expect(value.stderr.trim()).toBe(
+      'shaderproof render: --size 64by36: expected WIDTHxHEIGHT in pixels, such as 640x360 (shaderproof render --help lists the flags)',
+    );
   });
 
   test("render draws what Shadertoy's header draws, pixel for pixel, and says which renderer drew it", async () => {

@@ -108,6 +108,13 @@ export interface RaytracerHook {
   /** A tile, from the bottom left, of the last frame drawn at fullWidth × fullHeight. */
   captureTile(tile: { x: number; y: number; width: number; height: number; fullWidth: number; fullHeight: number }): Promise<Base64Frame>;
   record(request?: import('../src/page/io/recorder.js').RecordRequest): Promise<RecordingResult>;
+  /** Frame `frame` as record() would draw it, and no file (recorder.js frameAt); `data` is base64 RGBA8. */
+  frameAt(request: {
+    frame: number;
+    fps?: number;
+    width?: number;
+    height?: number;
+  }): Promise<{ width: number; height: number; data: string }>;
   /** Stops the recording under way: its record() rejects, nothing is made. */
   cancelRecording(): void;
   recording(): { busy: boolean; done: number; total: number };

@@ -16,6 +16,9 @@ describe('parseUrlParams reads good values', () => {
     ['scale', '?scale=0.5', { scale: 0.5 }],
     ['cap', '?cap=1280', { cap: 1280 }],
     ['speed', '?speed=2', { speed: 2 }],
+    ['date, UTC', '?date=2024-01-15T12:00:00Z', { date: Date.UTC(2024, 0, 15, 12) }],
+    ['date alone (UTC midnight)', '?date=2025-06-01', { date: Date.UTC(2025, 5, 1) }],
+    ['fps', '?fps=30', { fps: 30 }],
     ['relative shader URL', '?shader=examples/pattern.glsl', { shader: 'examples/pattern.glsl' }],
     ['same-origin absolute shader URL', `?shader=${BASE}x.glsl`, { shader: `${BASE}x.glsl` }],
     ['a channel', '?iChannel2=img/noise.png', { channels: [undefined, undefined, 'img/noise.png'] }],
@@ -38,6 +41,8 @@ describe('parseUrlParams warns about bad values and never throws', () => {
     scale: [['9', { scale: 1 }], ['NaN']],
     cap: [['3', { cap: 16 }]],
     speed: [['-1', { speed: 0 }]],
+    date: [['yesterday'], ['12'], ['2024-13-45']],
+    fps: [['0', { fps: 1 }], ['1000', { fps: 240 }], ['fast']],
     shader: [['https://example.com/x.glsl'], ['javascript:alert(1)'], ['']],
     iChannel0: [['https://example.com/a.png']],
     'a b': [['1']], // a name that is no control name
@@ -122,16 +127,26 @@ test('formatUrlParams writes what parseUrlParams reads', () => {
     time: 3.3,
     mouse: [40, 59, -40, -59],
     speed: 2,
+    date: Date.UTC(2024, 0, 15, 12),
+    fps: 30,
     channels: [null, 'img/a.png'],
     controls: { TWIST: 2.2, ALBEDO: [0.5, 0.25, 1], MAX_STEPS: 64, FLAG: true },
   };
   const query = formatUrlParams(state);
   expect(query).toBe(
-    '?shader=examples/raymarch.glsl&size=160x90&time=3.3&mouse=40,59,-40,-59&speed=2&iChannel1=img/a.png&TWIST=2.2&ALBEDO=0.5,0.25,1&MAX_STEPS=64&FLAG=true',
+    '?shader=examples/raymarch.glsl&size=160x90&time=3.3&mouse=40,59,-40,-59&speed=2&date=2024-01-15T12%3A00%3A00.000Z&fps=30&iChannel1=img/a.png&TWIST=2.2&ALBEDO=0.5,0.25,1&MAX_STEPS=64&FLAG=true',
   );
   const back = parseUrlParams(query, BASE);
   expect(back.warnings).toEqual([]);
-  expect(back).toMatchObject({ shader: state.shader, size: state.size, time: 3.3, mouse: state.mouse, speed: 2 });
+  expect(back).toMatchObject({
+    shader: state.shader,
+    size: state.size,
+    time: 3.3,
+    mouse: state.mouse,
+    speed: 2,
+    date: state.date,
+    fps: 30,
+  });
   expect(back.channels[1]).toBe('img/a.png');
   expect(back.controls).toEqual({ TWIST: '2.2', ALBEDO: '0.5,0.25,1', MAX_STEPS: '64', FLAG: 'true' });
   // the built-in shader, no mouse, real time: only size and time

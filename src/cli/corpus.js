@@ -15,7 +15,7 @@ import { findCases, readManifest, REFERENCE_DIR } from './manifest.js';
 import { junitXml } from './junit.js';
 import { renderShader } from './render.js';
 import { CliError, startSession } from './session.js';
-import { UsageError } from './view-options.js';
+import { DEFAULT_DATE, UsageError, dateLabel, readDate } from './view-options.js';
 
 /** "i/n" → {index (0-based), count}. @param {string | undefined} text */
 function readShard(text) {
@@ -143,7 +143,8 @@ export async function runTest({ values, positionals }) {
   const out = path.resolve(values.out ?? 'shaderproof-output');
   const update = Boolean(values.update);
   const manifest = readManifest(dir);
-  const all = findCases(dir, manifest);
+  const runDate = dateLabel(readDate(values.date ?? DEFAULT_DATE)); // checked before any browser starts
+  const all = findCases(dir, manifest, { date: values.date });
   if (!all.length) throw new CliError(`${positionals[0]}: no .glsl or .json shaders in it`);
   const cases = all.filter((_, i) => i % shard.count === shard.index);
   fs.mkdirSync(out, { recursive: true });
@@ -154,7 +155,7 @@ export async function runTest({ values, positionals }) {
   try {
     environment = await session.environment();
     io.err(
-      `${cases.length} of ${all.length} cases${shard.count > 1 ? ` (shard ${shard.index + 1}/${shard.count})` : ''}, drawn by ${environment.label}`,
+      `${cases.length} of ${all.length} cases${shard.count > 1 ? ` (shard ${shard.index + 1}/${shard.count})` : ''}, drawn by ${environment.label}; iDate at iTime 0: ${runDate}`,
     );
     for (const testCase of cases) {
       if (testCase.skip !== null) {
@@ -180,7 +181,10 @@ export async function runTest({ values, positionals }) {
   }
   const failed = results.filter((r) => !r.ok);
   const seconds = (Date.now() - started) / 1000;
-  fs.writeFileSync(path.join(out, 'junit.xml'), junitXml(results, { seconds, renderer: environment?.renderer ?? 'unknown' }));
+  fs.writeFileSync(
+    path.join(out, 'junit.xml'),
+    junitXml(results, { seconds, renderer: environment?.renderer ?? 'unknown', date: runDate }),
+  );
   io.out(
     `${results.length - failed.length} passed, ${failed.length} failed, in ${seconds.toFixed(1)} s` +
       (failed.length ? `; images and junit.xml in ${path.relative(process.cwd(), out) || '.'}` : ''),

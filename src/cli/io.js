@@ -12,6 +12,41 @@ export const io = {
 };
 
 /**
+ * The page's notes on a view, one warning line each on stderr: what the shader went without,
+ * and values that were not used as given (a control clamped into range), as the page shows them.
+ * @param {string} file
+ * @param {import('../engine/view.js').PageNote[]} notes
+ */
+export function sayNotes(file, notes) {
+  for (const { title, lines } of notes) for (const line of lines) io.err(`warning: ${file}: ${title}: ${line}`);
+}
+
+/**
+ * A progress bar on stderr, on a terminal only (a log or CI gets the one result line): `update`
+ * after each step, `end` once, whatever the outcome.
+ * @param {string} unit what is counted ("frames", "samples")
+ */
+export function progressBar(unit) {
+  let shown = '';
+  const line = (done, total) => {
+    const width = 30;
+    const filled = total ? Math.round((Math.min(done, total) / total) * width) : 0;
+    return `[${'#'.repeat(filled)}${'.'.repeat(width - filled)}] ${done}/${total} ${unit}`;
+  };
+  return {
+    /** @param {number} done @param {number} total */
+    update(done, total) {
+      const next = line(done, total);
+      if (io.isTerminal() && next !== shown) process.stderr.write(`\r${next}`);
+      shown = next;
+    },
+    end() {
+      if (io.isTerminal() && shown) process.stderr.write('\n');
+    },
+  };
+}
+
+/**
  * The page's watchdog from --watchdog S: without it, the page's own (5 s for a band of a frame,
  * 30 s for a program's first draw, in which SwiftShader compiles it); with it, S for both.
  * @param {string | undefined} text

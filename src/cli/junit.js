@@ -7,9 +7,9 @@ const escape = (text) =>
 
 /**
  * @param {{name: string, ok: boolean, skipped?: boolean, failures: string[], notes: string[], ms: number}[]} results
- * @param {{seconds: number, renderer: string}} run
+ * @param {{seconds: number, renderer: string, date: string}} run date: the run's iDate at iTime 0
  */
-export function junitXml(results, { seconds, renderer }) {
+export function junitXml(results, { seconds, renderer, date }) {
   const failures = results.filter((r) => !r.ok).length;
   const skipped = results.filter((r) => r.skipped).length;
   const cases = results.map((r) => {
@@ -23,7 +23,7 @@ export function junitXml(results, { seconds, renderer }) {
   return `<?xml version="1.0" encoding="UTF-8"?>
 <testsuites tests="${results.length}" failures="${failures}" time="${seconds.toFixed(3)}">
   <testsuite name="shaderproof" tests="${results.length}" failures="${failures}" skipped="${skipped}" time="${seconds.toFixed(3)}">
-    <properties><property name="renderer" value="${escape(renderer)}"/></properties>
+    <properties><property name="renderer" value="${escape(renderer)}"/><property name="iDate" value="${escape(date)}"/></properties>
 ${cases.join('\n')}
   </testsuite>
 </testsuites>

@@ -2,7 +2,9 @@
 // flags (node:util parseArgs, strict: an unknown flag is a usage error), starts a session
 // (session.js: the built page, a loopback server, headless Chromium on SwiftShader) and says in
 // one line what it made and which renderer drew it. Exit codes: 0 done, 1 a case or a shader
-// failed, 2 a bad flag or value (with the verb's usage).
+// failed, 2 a bad flag or value. Every error is one line in the project's words (a stack only
+// with --verbose), and an output file is written whole after a render that succeeded, or not at
+// all (png.js writeWhole).
 
 import fs from 'node:fs';
 import path from 'node:path';
@@ -12,8 +14,10 @@ import { runRecord } from './record.js';
 import { outputFormat, renderShader, renderTiled, writeFloatImage, writeImage } from './render.js';
 import { CliError, shaderKind, startSession } from './session.js';
 import { runTest } from './corpus.js';
-import { UsageError, VIEW_FLAGS, readNumber, readViewOptions } from './view-options.js';
-import { io, oneShader, watchdog } from './io.js';
+import { UsageError, VIEW_FLAGS, dateLabel, readNumber, readViewOptions } from './view-options.js';
+import { io, oneShader, sayNotes, watchdog } from './io.js';
+import { argumentError, joinDashValues } from './arguments.js';
+import { MAX_PIXELS, MAX_SIZE } from '../shared/canvas-limits.js';
 
 const NAME = 'shaderproof';
 
@@ -21,18 +25,25 @@ const COMMON_FLAGS = /** @type {const} */ ({
   help: { type: 'boolean', short: 'h' },
   gpu: { type: 'boolean' },
   watchdog: { type: 'string' },
+  verbose: { type: 'boolean' },
 });
+
+/** A tiled still's largest size: its RGBA bytes are held in memory whole (1 GiB). */
+const MAX_TILED_PIXELS = 2 ** 28;
 
 const VIEW_HELP = `  --size WxH            canvas size in pixels (default 640x360)
   --time T              iTime in seconds, paused (default 0)
   --frame N             draw frames 0..N (iTime = i/60, iFrame = i) and keep frame N
   --mouse x,y[,z,w]     iMouse in pixels, Shadertoy's signs
   --set NAME=VALUE      a control of the shader (repeatable), as the page's panel has it
-  --channel0..3 IMAGE   an image file for iChannel0..3`;
+  --channel0..3 IMAGE   an image file for iChannel0..3
+  --date ISO|now        iDate at iTime 0 (default 2024-01-15T12:00:00Z, so that a clock draws
+                        the same on every run; "now" for the real date)`;
 
 const COMMON_HELP = `  --gpu                 draw on this machine's GPU instead of SwiftShader
   --watchdog S          a frame unfinished after S seconds fails (default: 5 s a band of
                         a frame, 30 s for the first frame, which SwiftShader compiles)
+  --verbose             an internal error's stack too
   -h, --help            this help`;
 
 const VERBS = {
@@ -43,6 +54,8 @@ const VERBS = {
 Draws SHADER (a .glsl Image tab, or a Shadertoy JSON export) as the page does, and writes it.
 
 ${VIEW_HELP}
+  --fps F               the frame schedule: iTimeDelta = 1/F, iFrameRate = F, and --frame N
+                        at iTime N/F (default 60)
   --tile PX             draw in tiles of PX pixels (even): a still larger than the browser
                         draws at once, the same pixels as one draw where both fit
   --converge N          the raytracer only: N progressive samples a pixel (its "Converge
@@ -54,6 +67,7 @@ ${COMMON_HELP}`,
       ...COMMON_FLAGS,
       ...VIEW_FLAGS,
       output: { type: 'string', short: 'o' },
+      fps: { type: 'string' },
       converge: { type: 'string' },
       tile: { type: 'string' },
     },
@@ -66,12 +80,13 @@ ${COMMON_HELP}`,
 Records SHADER frame by frame as the page's Record button does: frame i has iTime = i/fps and
 iFrame = i, whatever a frame costs to draw.
 
-  --frames N            how many frames (default 60)
-  --fps F               frames a second (default 30)
+  --frames N            how many frames (default 60, at most 36000)
+  --fps F               frames a second (default 30, at most 120)
   --size WxH            the frames' size in pixels (default 640x360)
   --mouse x,y[,z,w]     iMouse in pixels
   --set NAME=VALUE      a control of the shader (repeatable)
   --channel0..3 IMAGE   an image file for iChannel0..3
+  --date ISO|now        iDate at iTime 0 (default 2024-01-15T12:00:00Z; "now": the real date)
   -o, --output FILE     OUT.webm (VP9 or VP8) or OUT.zip (frame-0000.png, ...) (required)
 ${COMMON_HELP}`,
     flags: {
@@ -115,9 +130,12 @@ and exits 1 when a case fails.
   --update              write the references (and pass)
   --shard i/n           run the i-th of n shares of the cases (1-based)
   --out DIR             output folder (default ./shaderproof-output)
+  --date ISO|now        iDate at iTime 0 for cases whose manifest gives none (default
+                        2024-01-15T12:00:00Z; "now" makes a clock's reference go stale)
 ${COMMON_HELP}`,
     flags: {
       ...COMMON_FLAGS,
+      date: { type: 'string' },
       update: { type: 'boolean' },
       shard: { type: 'string' },
       out: { type: 'string' },
@@ -152,19 +170,51 @@ async function runRender({ values, positionals }) {
     throw new UsageError(`--tile ${tile}: the tile size must be even (the GPU shades 2x2 quads; an odd size would split them)`);
   if (tile !== null && (view.frame !== null || converge !== null || format === 'pfm'))
     throw new UsageError('--tile: a tiled still is a .png at --time');
+  checkSize(view.size, tile !== null);
   shaderKind(file); // a file that is not a shader is said before any browser starts
+  const text = fs.readFileSync(file, 'utf8');
   const started = Date.now();
   const session = await startSession({ gpu: values.gpu, ...watchdog(values.watchdog), say: io.err });
   try {
-    const image = tile !== null ? await renderTiled(session, file, view, tile) : await renderShader(session, file, view, { converge });
+    const image =
+      tile !== null ? await renderTiled(session, file, view, tile) : await renderShader(session, file, view, { converge, progress: true });
+    const { width, height } = view.size;
+    if (image.width !== width || image.height !== height)
+      throw new CliError(
+        `--size ${width}x${height}: this GPU draws at most ${image.width}x${image.height} at once; use --tile 512 for a larger still`,
+        2,
+      );
+    sayNotes(file, image.notes);
     if (format === 'pfm') writeFloatImage(values.output, await session.drawFloat());
     else writeImage(values.output, image);
     const { label: renderer } = await session.environment();
-    io.out(`${values.output}: ${image.width}x${image.height}, ${renderer}, ${((Date.now() - started) / 1000).toFixed(1)} s`);
+    const date = /\biDate\b/.test(text) ? `, iDate ${dateLabel(view.date)}` : '';
+    io.out(`${values.output}: ${image.width}x${image.height}, ${renderer}${date}, ${((Date.now() - started) / 1000).toFixed(1)} s`);
   } finally {
     await session.close();
   }
   return 0;
+}
+
+/**
+ * A size the page draws at once (the page's limits, src/shared/canvas-limits.js), or with
+ * `tiled` one whose pixels fit in memory; else a UsageError that says the limit and why.
+ * @param {{width: number, height: number}} size
+ * @param {boolean} tiled
+ */
+function checkSize({ width, height }, tiled) {
+  const asked = `--size ${width}x${height}`;
+  if (tiled) {
+    if (width * height > MAX_TILED_PIXELS)
+      throw new UsageError(
+        `${asked}: a tiled still is at most ${MAX_TILED_PIXELS / 2 ** 20} megapixels (its bytes are held in memory whole)`,
+      );
+    return;
+  }
+  if (width > MAX_SIZE || height > MAX_SIZE || width * height > MAX_PIXELS)
+    throw new UsageError(
+      `${asked}: one draw is at most ${MAX_SIZE} px a side and ${(MAX_PIXELS / 1e6).toFixed(1)} megapixels (8K UHD, the page's limit); use --tile 512 for a larger still`,
+    );
 }
 
 /**
@@ -187,12 +237,14 @@ export async function main(argv) {
     io.err(`${NAME}: no verb "${verb}"\n\n${MAIN_USAGE}`);
     return 2;
   }
+  const seeHelp = `(${NAME} ${verb} --help lists the flags)`;
   /** @type {{values: Record<string, any>, positionals: string[]}} */
   let args;
   try {
-    args = parseArgs({ args: rest, options: /** @type {any} */ (spec.flags), allowPositionals: true, strict: true });
+    const flags = /** @type {Record<string, {type: string}>} */ (spec.flags);
+    args = parseArgs({ args: joinDashValues(rest, flags), options: /** @type {any} */ (flags), allowPositionals: true, strict: true });
   } catch (error) {
-    io.err(`${NAME} ${verb}: ${error.message}\n\n${spec.usage}`);
+    io.err(`${NAME} ${verb}: ${argumentError(error)} ${seeHelp}`);
     return 2;
   }
   if (args.values.help) {
@@ -203,13 +255,17 @@ export async function main(argv) {
     return await spec.run(/** @type {any} */ (args));
   } catch (error) {
     if (error instanceof UsageError) {
-      io.err(`${NAME} ${verb}: ${error.message}\n\n${spec.usage}`);
+      io.err(`${NAME} ${verb}: ${error.message} ${seeHelp}`);
       return 2;
     }
     if (error instanceof CliError) {
       io.err(`${NAME} ${verb}: ${error.message}`);
       return error.exitCode;
     }
-    throw error;
+    // not one of ours: still one line, and the stack for a report with --verbose
+    const message = String(error?.message ?? error).split('\n')[0];
+    io.err(`${NAME} ${verb}: internal error: ${message} (run again with --verbose for its stack, and report it)`);
+    if (args.values.verbose) io.err(String(error?.stack ?? error));
+    return 1;
   }
 }

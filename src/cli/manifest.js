@@ -4,6 +4,7 @@
 //   { "defaults": { …any case key… },
 //     "cases": { "RELATIVE/PATH.glsl": {
 //         "size": "WxH", "time": T | "frame": N, "mouse": [x, y, z, w],
+//         "date": "ISO" | "now", "fps": F,                       (iDate at iTime 0; the schedule)
 //         "set": { "NAME": value }, "channels": ["image.png", …],     (paths relative to DIR)
 //         "tolerance": { "threshold": 0..1, "maxDiffPixels": N },
 //         "checks": { "noNaN": true, "deterministic": true,
@@ -30,7 +31,7 @@ const DEFAULT_TOLERANCE = Object.freeze({ threshold: 0, maxDiffPixels: 0 });
 const DEFAULT_HALF_SIZE = Object.freeze({ threshold: 0.1, maxDiffFraction: 0.05 });
 const DEFAULT_SIZE = { width: 320, height: 180 };
 
-const CASE_KEYS = ['size', 'time', 'frame', 'mouse', 'set', 'channels', 'tolerance', 'checks', 'skip'];
+const CASE_KEYS = ['size', 'time', 'frame', 'mouse', 'date', 'fps', 'set', 'channels', 'tolerance', 'checks', 'skip'];
 const CHECK_KEYS = ['noNaN', 'deterministic', 'halfSize', 'maxFrameMs'];
 
 /**
@@ -89,6 +90,8 @@ function readCase(where, entry, dir) {
     time: entry.time === undefined ? undefined : String(entry.time),
     frame: entry.frame === undefined ? undefined : String(entry.frame),
     mouse: Array.isArray(entry.mouse) ? entry.mouse.join(',') : entry.mouse,
+    date: entry.date === undefined ? undefined : String(entry.date),
+    fps: entry.fps === undefined ? undefined : String(entry.fps),
     set: Object.entries(entry.set ?? {}).map(([name, value]) => `${name}=${Array.isArray(value) ? value.join(',') : value}`),
   };
   /** @type {(string | undefined)[]} */
@@ -134,9 +137,10 @@ function readCase(where, entry, dir) {
  * The cases under `dir`, sorted by name, each with the manifest's defaults and its own entry.
  * @param {string} dir
  * @param {{defaults: Record<string, any>, cases: Record<string, any>}} manifest
+ * @param {{date?: string}} [run] the run's --date: a case's own "date" (or the defaults') wins
  * @returns {TestCase[]}
  */
-export function findCases(dir, manifest) {
+export function findCases(dir, manifest, { date } = {}) {
   const names = shaderFiles(dir)
     .map((f) => f.split(path.sep).join('/'))
     .sort();
@@ -145,6 +149,7 @@ export function findCases(dir, manifest) {
   return names.map((name) => {
     const own = manifest.cases[name] ?? {};
     const merged = {
+      ...(date === undefined ? {} : { date }),
       ...manifest.defaults,
       ...own,
       checks: { ...(manifest.defaults.checks ?? {}), ...(own.checks ?? {}) },

@@ -1,29 +1,29 @@
 // `shaderproof render SHADER -o OUT.png`: one still of a shader, as the page draws it. The view
 // goes into the page's URL (view-options.js) and is drawn by drawView, as the render tests' views
-// are; --frame N draws frames 0 … N in turn (as the recorder does: iTime = i / 60, iFrame = i)
-// and keeps the last.
+// are; --frame N is frame N as the recorder draws it (iTime = N / fps, iFrame = N), every frame
+// before it drawn first for a shader with buffers; --converge N and --frame N are long work
+// (long-work.js: no limit but the page's watchdog, progress on a terminal).
 
 import fs from 'node:fs';
 import path from 'node:path';
-import { unzipSync } from 'fflate';
-import { PNG } from 'pngjs';
-import { writePng } from '../engine/png.js';
+import { runLong } from '../engine/long-work.js';
+import { writePng, writeWhole } from '../engine/png.js';
 import { fromBase64 } from '../shared/pixels.js';
+import { progressBar } from './io.js';
 import { CliError, shaderKind } from './session.js';
 import { UsageError, viewQuery } from './view-options.js';
-
-/** Shadertoy's nominal frame rate: frame N is drawn at iTime N / 60. */
-const FRAME_RATE = 60;
 
 /**
  * Draws the shader `file` at `view` and returns the image and what the page said.
  * @param {import('./session.js').Session} session
  * @param {string} file
  * @param {import('./view-options.js').ViewOptions} view
- * @param {{converge?: number | null}} [options] converge: N progressive samples of the raytracer
- * @returns {Promise<{width: number, height: number, data: Uint8Array, info: any}>}
+ * @param {{converge?: number | null, progress?: boolean}} [options] converge: N progressive
+ *   samples of the raytracer; progress: a bar on a terminal for long work
+ * @returns {Promise<{width: number, height: number, data: Uint8Array, info: any,
+ *   notes: import('../engine/view.js').PageNote[]}>}
  */
-export async function renderShader(session, file, view, { converge = null } = {}) {
+export async function renderShader(session, file, view, { converge = null, progress = false } = {}) {
   shaderKind(file);
   const mount = (f) => {
     if (!fs.existsSync(f)) throw new CliError(`${f}: no such file`);
@@ -35,7 +35,8 @@ export async function renderShader(session, file, view, { converge = null } = {}
   try {
     image = await session.draw(query);
   } catch (error) {
-    if (error instanceof CliError) error.message = error.hung ? `${file}: ${error.message}` : userMessage(error.message, file);
+    if (error instanceof CliError)
+      error.message = error.hung ? `${file}: ${error.message}` : userMessage(error.message.replaceAll(shaderUrl, file), file);
     throw error;
   }
   const missing = view.controls.filter(([name]) => !(name in (image.info.controls ?? {}))).map(([name]) => name);
@@ -46,16 +47,26 @@ export async function renderShader(session, file, view, { converge = null } = {}
     );
   }
   const page = /** @type {import('puppeteer-core').Page} */ (session.page());
-  if (converge) return { ...(await converged(page, converge, file)), info: image.info };
-  if (view.frame === null) return image;
-  const recorded = await page.evaluate(
-    (request) => window.raytracer.record(request).then((r) => r.data),
-    /** @type {any} */ ({ format: 'png', frames: view.frame + 1, fps: FRAME_RATE, width: view.size.width, height: view.size.height }),
-  );
-  const files = unzipSync(Buffer.from(recorded, 'base64'));
-  const last = Object.keys(files).sort().at(-1);
-  const png = PNG.sync.read(Buffer.from(files[/** @type {string} */ (last)]));
-  return { width: png.width, height: png.height, data: png.data, info: image.info };
+  if (converge === null && view.frame === null) return image;
+  const bar = progressBar(converge !== null ? 'samples' : 'frames');
+  try {
+    const work =
+      converge !== null
+        ? { method: /** @type {const} */ ('converge'), request: null, total: converge }
+        : {
+            method: /** @type {const} */ ('frameAt'),
+            request: { frame: view.frame, fps: view.fps, width: view.size.width, height: view.size.height },
+            total: /** @type {number} */ (view.frame) + 1,
+          };
+    const value = await runLong(page, { ...work, progress: progress ? bar.update : undefined });
+    const shot = converge !== null ? await page.evaluate(() => window.raytracer.capture()) : value;
+    return { width: shot.width, height: shot.height, data: fromBase64(shot.data), info: image.info, notes: image.notes };
+  } catch (error) {
+    const what = converge !== null ? `--converge ${converge}` : `--frame ${view.frame}`;
+    throw Object.assign(new CliError(`${what}: ${file}: ${error.message.split('\n')[0]}`), { hung: Boolean(error.hung) });
+  } finally {
+    bar.end();
+  }
 }
 
 /** The largest side the CLI opens the page at for a tiled still; the tiles make the rest. */
@@ -97,34 +108,7 @@ export async function renderTiled(session, file, view, tile) {
         data.set(pixels.subarray(row * w * 4, (row + 1) * w * 4), to);
       }
     }
-  return { width, height, data, info: first.info };
-}
-
-/**
- * The raytracer's still converged over `samples` progressive frames ("Converge when still",
- * src/page/app/converge.js: one jittered sample per pixel a frame, the mean shown), without the
- * sample count drawn over it, as the page's Screenshot saves it.
- * @param {import('puppeteer-core').Page} page
- * @param {number} samples
- * @param {string} file
- */
-async function converged(page, samples, file) {
-  const outcome = await page.evaluate(async (frames) => {
-    try {
-      await window.raytracer.setConverging(true, { frames });
-    } catch (error) {
-      return { error: error.message };
-    }
-    await window.raytracer.setControls({ SHOW_SAMPLE_COUNT: 0 });
-    return null;
-  }, samples);
-  if (outcome) throw new CliError(`--converge: ${file}: ${outcome.error}`);
-  // the live controls settle into constants (a compile), then a restart clears the sum
-  await page.waitForFunction(() => window.raytracer.info().liveControls === 'constants', { polling: 50, timeout: 60_000 });
-  await page.evaluate(() => window.raytracer.restart());
-  await page.waitForFunction((n) => window.raytracer.info().stillFrames >= n, { polling: 50, timeout: 0 }, samples);
-  const shot = await page.evaluate(() => window.raytracer.capture());
-  return { width: shot.width, height: shot.height, data: fromBase64(shot.data) };
+  return { width, height, data, info: first.info, notes: first.notes };
 }
 
 /**
@@ -168,6 +152,5 @@ export function writeImage(file, image) {
 
 /** @param {string} file @param {{width: number, height: number, data: Float32Array}} image */
 export function writeFloatImage(file, image) {
-  fs.mkdirSync(path.dirname(path.resolve(file)), { recursive: true });
-  fs.writeFileSync(file, pfmBytes(image));
+  writeWhole(file, pfmBytes(image));
 }

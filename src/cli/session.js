@@ -87,7 +87,7 @@ export async function startSession({ gpu = false, hangMs = 5_000, compileHangMs 
     const started = await drawView(opened, { baseUrl: server.baseUrl, query: `/?shader=${starter}&size=2x2&time=0`, fresh: true });
     if (started.error !== undefined) throw new CliError(`the page did not start: ${started.error}`);
     try {
-      const { renderer, version } = started.info;
+      const { renderer, version } = /** @type {Extract<import('../engine/view.js').DrawnView, {pixels: unknown}>} */ (started).info;
       (await browser()).verify(renderer ? { renderer, version } : null);
     } catch (error) {
       throw new CliError(error.message);
@@ -132,23 +132,25 @@ export async function startSession({ gpu = false, hangMs = 5_000, compileHangMs 
         throw new CliError(error.message.split('\n')[0]);
       }
       if (result.error !== undefined) {
-        if (result.hung) await dropBrowser();
+        // (the tests' type check runs without null checks, where `error?: undefined` does not narrow)
+        const failed = /** @type {Extract<import('../engine/view.js').DrawnView, {hung?: boolean}>} */ (result);
+        if (failed.hung) await dropBrowser();
         else {
           await current.close().catch(() => {});
           page = null;
         }
         const seconds = (ms) => `${ms / 1000} s`;
         const error = new CliError(
-          result.hung
+          failed.hung
             ? `did not finish drawing a frame within the watchdog's ${seconds(hangMs)} (${seconds(compileHangMs)} for a first frame): it may never finish (an endless loop, or far too much work per pixel)`
-            : result.error,
+            : failed.error,
         );
-        Object.assign(error, { hung: Boolean(result.hung), compile: Boolean(result.compile) });
+        Object.assign(error, { hung: Boolean(failed.hung), compile: Boolean(failed.compile) });
         throw error;
       }
-      const { pixels, info } = result;
+      const { pixels, info, notes } = /** @type {Extract<import('../engine/view.js').DrawnView, {pixels: unknown}>} */ (result);
       mark('view drawn');
-      return { width: pixels.width, height: pixels.height, data: fromBase64(pixels.data), info };
+      return { width: pixels.width, height: pixels.height, data: fromBase64(pixels.data), info, notes };
     },
     /**
      * The last view's frame again in RGBA32F, as the shader wrote its colours (unclamped, NaN
@@ -194,7 +196,13 @@ export function shaderKind(file) {
   try {
     text = fs.readFileSync(file, 'utf8');
   } catch (error) {
-    throw new CliError(`${file}: ${error.code === 'ENOENT' ? 'no such file' : error.message}`);
+    /** @type {Record<string, string>} */
+    const why = {
+      ENOENT: 'no such file',
+      EISDIR: 'a folder, not a shader file (shaderproof test DIR runs every shader in a folder)',
+      EACCES: 'cannot be read: permission denied',
+    };
+    throw new CliError(`${file}: ${why[error.code] ?? `cannot be read (${error.code ?? error.message})`}`);
   }
   if (/\.json$/i.test(file) || /^\s*[[{]/.test(text)) {
     try {

@@ -2,8 +2,15 @@
 // into the page's own URL contract (src/page/io/url-params.js), so that a render from the command
 // line is the page's render of that link. A value that cannot be read is a UsageError (exit 2);
 // the page's own ranges are the page's (a control out of range is clamped there, and said).
+//
+// Every view is deterministic unless asked otherwise: iDate is DEFAULT_DATE at iTime 0 (or
+// --date ISO; --date now for the real date), and iTimeDelta and iFrameRate are those of the frame
+// schedule (--fps, 60 unless given), never measured: the page's ?date= and ?fps=.
 
 import path from 'node:path';
+
+/** The page's frame schedule's largest rate (src/page/io/url-params.js MAX_FPS). */
+const MAX_FPS = 240;
 
 /** A flag or value the command cannot use: said with the verb's usage, exit 2. */
 export class UsageError extends Error {}
@@ -18,7 +25,32 @@ export const VIEW_FLAGS = /** @type {const} */ ({
   channel1: { type: 'string' },
   channel2: { type: 'string' },
   channel3: { type: 'string' },
+  date: { type: 'string' },
 });
+
+/**
+ * iDate at iTime 0 in every command-line view unless --date says otherwise: the moment the test
+ * harness freezes Date at too (tests/harness/deterministic-injection.js), in UTC, the zone the
+ * browser runs in (src/engine/browser.js).
+ */
+export const DEFAULT_DATE = '2024-01-15T12:00:00Z';
+/** Shadertoy's nominal frame rate: frame N is drawn at iTime N / 60 unless --fps says otherwise. */
+const DEFAULT_FPS = 60;
+
+/**
+ * --date ISO (or "now": the real date, not reproducible) → ms since 1970, or null for now.
+ * @param {string | undefined} text
+ */
+export function readDate(text = DEFAULT_DATE) {
+  if (text.trim().toLowerCase() === 'now') return null;
+  const ms = /^\d{4}-\d{2}-\d{2}/.test(text.trim()) ? Date.parse(text.trim()) : NaN;
+  if (!Number.isFinite(ms))
+    throw new UsageError(`--date ${text}: expected an ISO 8601 date such as 2024-01-15T12:00:00Z (a zone, else UTC), or "now"`);
+  return ms;
+}
+
+/** How a view's date is said in a report: the ISO moment, or "now". @param {number | null} date */
+export const dateLabel = (date) => (date === null ? 'the real date (--date now)' : new Date(date).toISOString());
 
 /** "WxH" → {width, height}, whole and positive. @param {string} text @param {string} flag */
 function readSize(text, flag = '--size') {
@@ -28,13 +60,19 @@ function readSize(text, flag = '--size') {
   return { width, height };
 }
 
-/** @param {string} text @param {string} flag @param {{min?: number, whole?: boolean}} [range] */
-export function readNumber(text, flag, { min = -Infinity, whole = false } = {}) {
+/** @param {string} text @param {string} flag @param {{min?: number, max?: number, whole?: boolean}} [range] */
+export function readNumber(text, flag, { min = -Infinity, max = Infinity, whole = false } = {}) {
   const value = text.trim() === '' ? NaN : Number(text);
-  if (!Number.isFinite(value) || value < min || (whole && !Number.isInteger(value))) {
-    throw new UsageError(
-      `${flag} ${text}: expected ${whole ? 'a whole number' : 'a number'}${min > -Infinity ? ` of at least ${min}` : ''}`,
-    );
+  if (!Number.isFinite(value) || value < min || value > max || (whole && !Number.isInteger(value))) {
+    const range =
+      min > -Infinity && max < Infinity
+        ? ` from ${min} to ${max}`
+        : min > -Infinity
+          ? ` of at least ${min}`
+          : max < Infinity
+            ? ` of at most ${max}`
+            : '';
+    throw new UsageError(`${flag} ${text}: expected ${whole ? 'a whole number' : 'a number'}${range}`);
   }
   return value;
 }
@@ -48,14 +86,17 @@ export function readNumber(text, flag, { min = -Infinity, whole = false } = {}) 
  * @property {number[] | null} mouse
  * @property {[string, string][]} controls NAME, VALUE as given
  * @property {(string | null)[]} channels image files for iChannel0..3
+ * @property {number | null} date iDate at iTime 0, ms since 1970 (null: the real date)
+ * @property {number} fps the frame schedule: iTimeDelta = 1 / fps, iFrameRate = fps, frame N at N / fps
  */
 
 /**
  * @param {Record<string, any>} values parseArgs's values
  * @param {{width: number, height: number}} defaultSize
+ * @param {{fps?: number, maxFps?: number}} [schedule] the verb's default rate and its largest
  * @returns {ViewOptions}
  */
-export function readViewOptions(values, defaultSize) {
+export function readViewOptions(values, defaultSize, { fps: defaultFps = DEFAULT_FPS, maxFps = MAX_FPS } = {}) {
   const size = values.size ? readSize(values.size) : defaultSize;
   if (values.time !== undefined && values.frame !== undefined)
     throw new UsageError('--time and --frame: give one (frame N is drawn at iTime N / 60)');
@@ -75,7 +116,9 @@ export function readViewOptions(values, defaultSize) {
     return [name, pair.slice(at + 1).trim()];
   });
   const channels = [0, 1, 2, 3].map((i) => values[`channel${i}`] ?? null);
-  return { size, time, frame, mouse, controls, channels };
+  const date = readDate(values.date);
+  const fps = values.fps === undefined ? defaultFps : readNumber(values.fps, '--fps', { min: 1, max: maxFps });
+  return { size, time, frame, mouse, controls, channels, date, fps };
 }
 
 /**
@@ -91,6 +134,8 @@ export function viewQuery(shaderUrl, view, mount) {
   params.set('size', `${view.size.width}x${view.size.height}`);
   if (view.time !== null) params.set('time', String(view.time));
   else params.set('time', '0');
+  if (view.date !== null) params.set('date', new Date(view.date).toISOString());
+  params.set('fps', String(view.fps));
   if (view.mouse) params.set('mouse', view.mouse.join(','));
   view.channels.forEach((file, i) => {
     if (file) params.set(`iChannel${i}`, mount(path.resolve(file)));

@@ -20,6 +20,23 @@ function pngBytes({ width, height, data }) {
 
 /** Writes an image as a PNG file, making its folder. @param {string} file @param {{width: number, height: number, data: Uint8Array}} image */
 export function writePng(file, image) {
-  fs.mkdirSync(path.dirname(file), { recursive: true });
-  fs.writeFileSync(file, pngBytes(image));
+  writeWhole(file, pngBytes(image));
+}
+
+/**
+ * Writes `bytes` to `file` whole or not at all: into a temporary file beside it, then renamed
+ * over it (a rename within a folder is atomic on POSIX file systems), so that a file already
+ * there is never left half-written or replaced by a failed run's output.
+ * @param {string} file
+ * @param {Uint8Array} bytes
+ */
+export function writeWhole(file, bytes) {
+  fs.mkdirSync(path.dirname(path.resolve(file)), { recursive: true });
+  const temporary = path.join(path.dirname(path.resolve(file)), `.${path.basename(file)}.${process.pid}.partial`);
+  try {
+    fs.writeFileSync(temporary, bytes);
+    fs.renameSync(temporary, file);
+  } finally {
+    fs.rmSync(temporary, { force: true });
+  }
 }

@@ -6,12 +6,19 @@
 // load gives (tests/page-open.test.js).
 
 /**
- * What drawView found: the frame's pixels (base64 RGBA8, rows top to bottom) and what the page
- * said of itself, or `error` (why there is no frame) with `hung` when the watchdog gave up on the
- * shader (it may never finish) and `compile` when it did not compile.
+ * What drawView found: the frame's pixels (base64 RGBA8, rows top to bottom), what the page said
+ * of itself and its notes (PageNote), or `error` (why there is no frame) with `hung` when the
+ * watchdog gave up on the shader (it may never finish) and `compile` when it did not compile.
  * @typedef {{pixels: {width: number, height: number, data: string}, frame: number, info: any,
- *   datasetError: string | undefined, error?: undefined}
+ *   notes: {title: string, lines: string[]}[], datasetError: string | undefined, error?: undefined}
  *   | {error: string, hung?: boolean, compile?: boolean}} DrawnView
+ */
+
+/**
+ * A note the page shows beside the picture, a title and its lines: what a shader went without
+ * (load-notes: media, passes), or values not used as given (value-notes: a control clamped into
+ * range), which a person sees on the page and the command line prints.
+ * @typedef {{title: string, lines: string[]}} PageNote
  */
 
 /**
@@ -59,7 +66,13 @@ export async function drawView(page, { baseUrl, query, fresh }) {
       const canvas = /** @type {HTMLCanvasElement | null} */ (document.querySelector('canvas[data-frame]'));
       const frame = canvas ? Number(canvas.dataset.frame) : NaN;
       const info = window.raytracer.info();
-      return { pixels, frame, info: JSON.parse(JSON.stringify(info)), datasetError: datasetError() };
+      const notes = ['load-notes', 'value-notes'].flatMap((id) => {
+        const note = document.getElementById(id);
+        if (!note) return [];
+        const text = (/** @type {Element | null} */ element) => element?.textContent?.trim().replace(/\s+/g, ' ') ?? '';
+        return [{ title: text(note.querySelector('strong')), lines: [...note.querySelectorAll('li')].map(text) }];
+      });
+      return { pixels, frame, info: JSON.parse(JSON.stringify(info)), notes, datasetError: datasetError() };
     },
     fresh ? null : query,
   );

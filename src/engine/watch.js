@@ -35,18 +35,35 @@ const CRASH_NOTICE_MS = 500;
 
 const TIMED_OUT = Symbol('timed out');
 
-/** Resolves with TIMED_OUT after `ms` (unless cancelled). */
+/** Resolves with TIMED_OUT after `ms` (unless cancelled); never with an infinite `ms`. */
 function timer(ms) {
   let id;
-  const promise = new Promise((resolve) => (id = setTimeout(() => resolve(TIMED_OUT), ms)));
+  const promise = new Promise((resolve) => {
+    if (Number.isFinite(ms)) id = setTimeout(() => resolve(TIMED_OUT), ms);
+  });
   return { promise, cancel: () => clearTimeout(id) };
+}
+
+/**
+ * The timeout a caller gave a wait in its own options, in ms (0: none, the caller bounds it),
+ * or undefined: waitForFunction(fn, options), waitForSelector(selector, options), goto(url,
+ * options) and reload(options) take one; evaluate does not.
+ * @param {string} name
+ * @param {unknown[]} args
+ * @returns {number | undefined}
+ */
+function callersTimeout(name, args) {
+  const at = { waitForFunction: 1, waitForSelector: 1, goto: 1, reload: 0 }[name];
+  const options = at === undefined ? undefined : /** @type {{timeout?: unknown} | undefined} */ (args[at]);
+  return options && typeof options === 'object' && typeof options.timeout === 'number' ? options.timeout : undefined;
 }
 
 /** Seconds for messages: "2 s", "0.5 s". */
 const seconds = (ms) => `${ms / 1000} s`;
 
 /**
- * Watches `page` of `browser`: its waiting methods (WAITS) time out after `waitTimeoutMs` and fail
+ * Watches `page` of `browser`: its waiting methods (WAITS) time out after `waitTimeoutMs` (or
+ * after the timeout the caller gave one in its options: 0 for none) and fail
  * at once on a crash; `close()` gives up after CLOSE_TIMEOUT_MS. Changes the page object in place.
  * @param {import('puppeteer-core').Page} page
  * @param {import('puppeteer-core').Browser} browser
@@ -156,7 +173,10 @@ export function watchPage(page, browser, { waitTimeoutMs = WAIT_TIMEOUT_MS } = {
     target[name] = (...args) => {
       const subject = (typeof args[0] === 'function' ? args[0].toString() : String(args[0])).replace(/\s+/g, ' ');
       const what = `page.${name}(${subject.length > 80 ? `${subject.slice(0, 77)}...` : subject})`;
-      return within(what, () => original[name](...args), waitTimeoutMs);
+      // a caller's own timeout stands, and its 0 means no limit but a crash (a converge of many
+      // samples, a long recording: their own loops watch the page's watchdog)
+      const own = callersTimeout(name, args);
+      return within(what, () => original[name](...args), own === undefined ? waitTimeoutMs : own === 0 ? Infinity : own);
     };
   }
   page.setDefaultTimeout(waitTimeoutMs);

@@ -6,7 +6,8 @@
 //                         &NAME=value", and a "#source=…" fragment) would give it, without a
 //                         reload (open-view.js): its shader, controls, size, clock, mouse,
 //                         channels, kept edits and notes; the inspector off. Resolves once its
-//                         first frame is drawn; rejects with the compile error.
+//                         first frame is drawn; rejects with the compile error, or with why
+//                         its shader could not be loaded (never the built-in in its place).
 //   readPixels()          Promise<{width, height, data}>: draws one frame and reads it back (the
 //                         render worker keeps each frame in a render target). `data` is base64
 //                         of RGBA8 pixels, rows top to bottom, alpha 255 (as the canvas shows).
@@ -50,9 +51,14 @@
 //                         frame as the Record button does (recorder.js: 'webm' or 'png', a .zip
 //                         of PNGs); `data` is the file as base64. Rejects with RecordingCancelled
 //                         after cancelRecording().
+//   frameAt({frame, fps, width, height})  Promise<{width, height, data}>: frame `frame` as
+//                         record() would draw it (iTime = frame / fps, iFrame = frame), and no
+//                         file: a shader with buffers has every frame before it drawn first
+//                         (recorder.js frameAt); no cap on `frame`. `data` is base64 RGBA8, rows
+//                         top to bottom. Its progress is recording()'s.
 //   cancelRecording()     stops the recording under way (this one or the Record button's).
 //   recording()           {busy, done, total}: whether a recording is under way, and how many
-//                         frames of the last record() are done, of how many.
+//                         frames of the last record() or frameAt() are done, of how many.
 //   inspect(x, y)         Promise<Readout>: Inspect on, pixel (x, y) pinned (y from the bottom:
 //                         fragCoord - 0.5) and read: its float colour, the canvas's byte, each
 //                         buffer, and for the raytracer its ray path and the float64 reference's
@@ -273,6 +279,12 @@ export function installAutomation(app, ready, ui, { open }) {
       const { bytes, ...result } = await ui.recording.recorder.record(request, (done, total) => (recorded = { done, total }));
       return { ...result, data: toBase64(bytes) };
     },
+    async frameAt(request) {
+      await settled();
+      recorded = { done: 0, total: 0 };
+      const { data, ...size } = await ui.recording.recorder.frameAt(request, (done, total) => (recorded = { done, total }));
+      return { ...size, data: toBase64(data) };
+    },
     cancelRecording: () => ui.recording.recorder.cancel(),
     recording: () => ({ busy: ui.recording.recorder.busy, ...recorded }),
 
@@ -334,6 +346,7 @@ export function installFailedAutomation(error) {
     compareWithFloat64: fail,
     comparison: () => null,
     record: fail,
+    frameAt: fail,
     cancelRecording() {},
     recording: () => ({ busy: false, done: 0, total: 0 }),
     play() {},

@@ -39,8 +39,18 @@ export function useBuiltinSource(text) {
   builtinSource = text;
 }
 
-/** The built-in raytracer, with a notice when the page was asked for another shader. @param {Notice} [notice] @returns {FirstSource} */
-const builtin = (notice) => ({ project: singlePass(builtinSource), from: { name: BUILTIN_NAME, origin: 'builtin' }, notice });
+/**
+ * The built-in raytracer, with a notice when the page was asked for another shader (and then
+ * `failed`: why that shader could not be had, in one line).
+ * @param {Notice} [notice]
+ * @returns {FirstSource & {failed?: string}}
+ */
+const builtin = (notice) => ({
+  project: singlePass(builtinSource),
+  from: { name: BUILTIN_NAME, origin: 'builtin' },
+  notice,
+  ...(notice ? { failed: `${notice.title}: ${notice.detail.split('\n')[0]}` } : {}),
+});
 
 /**
  * The shader a link carries in its fragment (#source=), or the built-in raytracer with a notice
@@ -141,7 +151,9 @@ function runAgain(app, version) {
  * (window.raytracer.open) with the page as it was left: then what the last view left behind (an
  * inspected pixel, a comparison, notes, the controls' values, the clock, the channels) goes first.
  * Resolves once the view's first frame is drawn; rejects with the compile error when its shader
- * does not compile.
+ * does not compile. A page's own load runs the built-in raytracer, with a note, when the shader
+ * asked for cannot be had; window.raytracer.open() (`again`) rejects with why instead: a render
+ * of the built-in in its place would claim what did not happen.
  * @param {RaytracerApp} app
  * @param {PageUi} ui
  * @param {UrlParams} params
@@ -155,6 +167,7 @@ export async function openView(app, ui, params, { hash, noticeAfterCompile, agai
   if (again) await leaveView(app, ui, params);
   if (params.time !== undefined) app.inputs.setTime(params.time);
   if (params.speed !== undefined) app.inputs.setSpeed(params.speed);
+  app.inputs.setSchedule({ date: params.date ?? null, fps: params.fps ?? null }); // none given: real and measured
   if (params.mouse) app.inputs.setMouse(params.mouse, { start: true });
   params.channels.forEach((url, i) => {
     if (!url) return;
@@ -164,6 +177,7 @@ export async function openView(app, ui, params, { hash, noticeAfterCompile, agai
     });
   });
   const opened = first.then((loaded) => {
+    if (again && 'failed' in loaded && typeof loaded.failed === 'string') throw new Error(loaded.failed);
     if (loaded.notice) noticeAfterCompile(loaded.notice);
     app.loadProject(loaded.project, loaded.from);
     const standIn = ui.kept.open(params.shader ?? BUILTIN_NAME, loaded); // kept-work.js

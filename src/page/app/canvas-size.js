@@ -5,15 +5,15 @@
 // panel's cap and by the largest size the GPU draws). A fixed size (?size=WxH) is the drawing
 // buffer itself: its CSS size is that over devicePixelRatio, shrunk to fit the window.
 
+import { MAX_PIXELS, MAX_SIZE } from '../../shared/canvas-limits.js';
+
+export { MAX_PIXELS, MAX_SIZE };
+
 /** @typedef {{width: number, height: number}} Size */
 
 /** The resolution scale's range (of the device pixels; the panel's slider, ?scale=). */
 export const MIN_SCALE = 0.25;
 export const MAX_SCALE = 1;
-/** The largest side the page asks for, in device pixels. */
-export const MAX_SIZE = 16384;
-/** Beyond 8K UHD a drawing buffer is not a view but a way to exhaust memory. */
-export const MAX_PIXELS = 7680 * 4320;
 /** Scales a size down (keeping its aspect) so that it fits MAX_SIZE and MAX_PIXELS. */
 export function clampSize({ width, height }, maxSide = MAX_SIZE, maxPixels = MAX_PIXELS) {
   let k = Math.min(1, maxSide / width, maxSide / height, Math.sqrt(maxPixels / (width * height)));

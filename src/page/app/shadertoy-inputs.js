@@ -11,6 +11,10 @@
 // is the real rate at which frames are drawn. iFrame counts drawn frames from 0 (restart() sets
 // it and iTime back to 0, and starts a new run of the clock: a frame begun in the run before is
 // not counted when it lands, so the next frame drawn is the new run's iFrame 0).
+//
+// A fixed schedule (setSchedule: ?date=, ?fps=, the command line's defaults) makes a frame depend
+// on nothing the page measures: iDate is a given moment at iTime 0 moving on with iTime, and each
+// frame advances iTime by speed / fps, with iTimeDelta and iFrameRate those of that schedule.
 
 import { FIRST_FRAME_UNIFORMS } from '../../shadertoy/header.js';
 
@@ -42,6 +46,10 @@ export class ShadertoyInputs {
     this.delta = NOMINAL_DELTA;
     this.frameRate = NOMINAL_RATE;
     this._lastNow = null;
+    /** iDate at iTime 0, ms since 1970 (null: iDate is the real date). @type {number | null} */
+    this.fixedDate = null;
+    /** The frame schedule, frames a second (null: iTimeDelta and iFrameRate are measured). @type {number | null} */
+    this.fixedFps = null;
     this._mouse = { x: 0, y: 0, clickX: 0, clickY: 0, down: false, clicked: false, pointerId: null };
     this._fixedMouse = null; // from the URL: used as given until the user clicks
     /** @type {number[] | null} the mouse the page opened with (resetMouse) */
@@ -73,6 +81,26 @@ export class ShadertoyInputs {
 
   setSpeed(speed) {
     this.speed = speed;
+  }
+
+  /**
+   * The clock's schedule: iDate fixed at `date` (ms since 1970) at iTime 0, and `fps` frames a
+   * second; null for either: the real date, the measured rate.
+   * @param {{date?: number | null, fps?: number | null}} schedule
+   */
+  setSchedule({ date = null, fps = null }) {
+    this.fixedDate = date;
+    this.fixedFps = fps;
+  }
+
+  /**
+   * iDate at iTime `time`: the fixed moment moved on by `time`, or the real date (`now`, ms since
+   * 1970, for a recording's frames: its start moved on by their iTime).
+   * @param {number} time
+   * @param {number} [now]
+   */
+  dateAt(time, now = Date.now()) {
+    return shadertoyDate(new Date(this.fixedDate !== null ? this.fixedDate + time * 1000 : now));
   }
 
   /**
@@ -164,7 +192,14 @@ export class ShadertoyInputs {
    * @returns {FrameInputs}
    */
   beginFrame(width, height, now) {
-    if (this.playing) {
+    const scheduled = this.fixedFps;
+    if (scheduled !== null) {
+      // the schedule's step, whatever the frame cost: the same frames on every machine
+      this.delta = this.playing ? this.speed / scheduled : 1 / scheduled;
+      this.frameRate = scheduled;
+      if (this.playing && this._lastNow !== null) this.time += this.delta;
+      this._lastNow = now;
+    } else if (this.playing) {
       if (this._lastNow !== null) {
         const real = Math.max(0, (now - this._lastNow) / 1000);
         this.delta = real * this.speed;
@@ -188,7 +223,7 @@ export class ShadertoyInputs {
       frameRate: this.frameRate,
       frame: this.frame,
       mouse: this.mouse(),
-      date: shadertoyDate(new Date()),
+      date: this.dateAt(this.time),
     };
   }
 

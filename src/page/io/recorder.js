@@ -6,7 +6,6 @@
 // again after, if it was playing); iMouse is the page's, scaled to the recording's size.
 
 import { fitGpu } from '../app/canvas-size.js';
-import { shadertoyDate } from '../app/shadertoy-inputs.js';
 
 /** @typedef {import('../app/app.js').RaytracerApp} RaytracerApp */
 /** @typedef {import('../gpu/protocol.js').FrameInputs} FrameInputs */
@@ -202,6 +201,63 @@ export class Recorder {
    * @returns {Promise<Recording>}
    */
   async record(request, onProgress = () => {}) {
+    return this._frames(request, async (app, settings) => {
+      const multipass = app.isMultipass;
+      const writer = settings.format === 'webm' ? await webmWriter(settings) : pngWriter(settings);
+      try {
+        const frame = frameInputs(app, settings.fps);
+        for (let i = 0; i < settings.frames; i++) {
+          // RGBA8 with alpha 1, as the page shows it (the worker reads it back so)
+          const rgba = await this._draw(frame(i), settings, multipass);
+          await writer.add(rgba, i);
+          onProgress(i + 1, settings.frames);
+          await nextTask();
+        }
+        this._check();
+        const bytes = await writer.finish();
+        this._check();
+        return { ...settings, codec: writer.codec, mimeType: writer.mimeType, bytes };
+      } catch (error) {
+        await writer.cancel();
+        throw error;
+      }
+    });
+  }
+
+  /**
+   * Frame `frame` of the running shader as a recording would have it (iTime = frame / fps,
+   * iFrame = frame), with no file made: a shader with buffers has frames 0 … frame-1 drawn first
+   * and dropped (its state is what they left); a shader without any has no state a frame could
+   * leave, so only that frame is drawn, with the same pixels. No frame cap but the clock's.
+   * @param {{frame: number, fps?: number, width?: number, height?: number}} request
+   * @param {(done: number, total: number) => void} [onProgress] after each frame drawn
+   * @returns {Promise<{width: number, height: number, data: Uint8Array}>}
+   */
+  async frameAt({ frame: last, ...request }, onProgress = () => {}) {
+    return this._frames({ ...request, frames: 1 }, async (app, settings) => {
+      const multipass = app.isMultipass;
+      const frame = frameInputs(app, settings.fps);
+      const first = multipass ? 0 : last;
+      /** @type {Uint8Array} */
+      let rgba = new Uint8Array(0);
+      for (let i = first; i <= last; i++) {
+        rgba = await this._draw(frame(i), settings, multipass);
+        onProgress(i - first + 1, last - first + 1);
+        if ((i - first) % 16 === 15) await nextTask(); // Cancel and the progress poll get their turn
+      }
+      this._check();
+      return { width: settings.width, height: settings.height, data: rgba };
+    });
+  }
+
+  /**
+   * Runs `work` with the live loop paused and this recorder busy, then puts the page back.
+   * @template T
+   * @param {RecordRequest} request
+   * @param {(app: RaytracerApp, settings: ReturnType<typeof recordSettings>) => Promise<T>} work
+   * @returns {Promise<T>}
+   */
+  async _frames(request, work) {
     if (this.busy) throw new Error('a recording is already under way');
     const abort = new AbortController();
     this._abort = abort;
@@ -213,45 +269,37 @@ export class Recorder {
       const canvas = app.frames.size;
       // a multipass shader's buffers are the canvas's size: its frames are recorded at that size,
       // every pass drawn each frame, from cleared buffers (as iFrame starts at 0)
-      const multipass = app.isMultipass;
-      const settings = recordSettings(multipass ? { ...request, ...canvas } : request, canvas, app.gpu.maxSize);
+      const settings = recordSettings(app.isMultipass ? { ...request, ...canvas } : request, canvas, app.gpu.maxSize);
       if (wasPlaying) app.pause();
-      if (multipass) app.gpu.tell('clearBuffers', {});
-      const writer = settings.format === 'webm' ? await webmWriter(settings) : pngWriter(settings);
-      try {
-        const frame = frameInputs(app, settings.fps);
-        for (let i = 0; i < settings.frames; i++) {
-          if (abort.signal.aborted) throw new RecordingCancelled();
-          if (app.gpu.contextLost) throw new Error('the GPU context was lost while recording');
-          // RGBA8 with alpha 1, as the page shows it (the worker reads it back so)
-          const rgba = await app.gpu.ask('capture', {
-            inputs: frame(i),
-            width: settings.width,
-            height: settings.height,
-            allPasses: multipass,
-          });
-          await writer.add(rgba, i);
-          onProgress(i + 1, settings.frames);
-          await nextTask();
-        }
-        if (abort.signal.aborted) throw new RecordingCancelled();
-        const bytes = await writer.finish();
-        if (abort.signal.aborted) throw new RecordingCancelled();
-        return { ...settings, codec: writer.codec, mimeType: writer.mimeType, bytes };
-      } catch (error) {
-        await writer.cancel();
-        throw error;
-      }
+      if (app.isMultipass) app.gpu.tell('clearBuffers', {});
+      return await work(app, settings);
     } finally {
       this._abort = null;
       if (wasPlaying && !app.inputs.playing) app.play();
     }
   }
+
+  /** Throws when the recording was cancelled. */
+  _check() {
+    if (this._abort?.signal.aborted) throw new RecordingCancelled();
+  }
+
+  /**
+   * One frame drawn off screen and read back (RGBA8, rows top to bottom).
+   * @param {FrameInputs} inputs
+   * @param {{width: number, height: number}} size
+   * @param {boolean} allPasses
+   */
+  async _draw(inputs, { width, height }, allPasses) {
+    this._check();
+    if (this.app.gpu.contextLost) throw new Error('the GPU context was lost while recording');
+    return this.app.gpu.ask('capture', { inputs, width, height, allPasses });
+  }
 }
 
 /**
  * The inputs of recorded frame i: time from the frame number, the page's mouse, the date moving
- * on with iTime from the start.
+ * on with iTime from the start (the page's fixed date, else the real one when the recording began).
  * @param {RaytracerApp} app
  * @param {number} fps
  * @returns {(i: number) => FrameInputs}
@@ -260,6 +308,7 @@ function frameInputs(app, fps) {
   const mouse = app.inputs.mouse();
   const { width, height } = app.frames.size;
   const start = Date.now();
+  const inputs = app.inputs;
   return (i) => ({
     width,
     height,
@@ -268,6 +317,6 @@ function frameInputs(app, fps) {
     frameRate: fps,
     frame: i,
     mouse,
-    date: shadertoyDate(new Date(start + (i * 1000) / fps)),
+    date: inputs.dateAt(i / fps, start + (i * 1000) / fps),
   });
 }

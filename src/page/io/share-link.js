@@ -158,6 +158,8 @@ export async function shareLink(app, shipped = null) {
     time: app.inputs.playing ? null : app.inputs.time,
     mouse: app.inputs.mouse(),
     speed: app.inputs.speed,
+    date: app.inputs.fixedDate,
+    fps: app.inputs.fixedFps,
     channels: app.channels.urls,
     controls: linkValues(app.controls, app.values),
   });

@@ -10,6 +10,12 @@
 //   &cap=N           cap on the drawing buffer's longer side, in device pixels; 0: no cap (ignored
 //                    with size)
 //   &speed=s         time speed, 0 .. 16 (1 is real time)
+//   &date=ISO        iDate fixed: this moment at iTime 0, moving on with iTime (not the real
+//                    date), so that a clock draws the same frame on every run (the command line's
+//                    default; the date is read in the browser's time zone)
+//   &fps=F           the clock's frame schedule: each frame advances iTime by speed / F, and
+//                    iTimeDelta and iFrameRate are those of F frames a second, not measured ones
+//                    (1 .. 240)
 //   &iChannel0=URL   an image for iChannel0 (likewise iChannel1..3), same origin as the page
 //   &NAME=value      any shader control; vectors as comma lists (LIGHT_POSITION=1,2,3)
 //
@@ -26,6 +32,9 @@ const MIN_CAP = 16;
 const MAX_SPEED = 16;
 const MAX_TIME = 1e6;
 const MAX_MOUSE = 1e6;
+/** The frame schedule's range (?fps=), frames a second. */
+const MIN_FPS = 1;
+const MAX_FPS = 240;
 export const CHANNEL_PARAMS = ['iChannel0', 'iChannel1', 'iChannel2', 'iChannel3'];
 
 function finiteNumbers(text) {
@@ -59,6 +68,8 @@ const INSTEAD = {
   scale: 'the scale is 1',
   cap: 'no cap',
   speed: 'the speed is 1',
+  date: 'iDate is the real date',
+  fps: 'iTimeDelta and iFrameRate are measured',
   shader: 'the built-in raytracer runs',
 };
 
@@ -71,7 +82,7 @@ const RESERVED_NAME = /^gl_|__/;
 
 /**
  * @typedef {{shader?: string, time?: number, mouse?: number[], size?: {width:number, height:number},
- *   scale?: number, cap?: number, speed?: number, channels: (string|undefined)[],
+ *   scale?: number, cap?: number, speed?: number, date?: number, fps?: number, channels: (string|undefined)[],
  *   controls: Record<string, string>, warnings: string[], refusedShader?: {url: string, why: string}}} UrlParams
  */
 
@@ -139,6 +150,14 @@ export function parseUrlParams(search, base = 'http://localhost/') {
     } else if (key === 'speed') {
       const s = number(key, value, 0, MAX_SPEED, `a number in 0 .. ${MAX_SPEED}`);
       if (s !== undefined) out.speed = s;
+    } else if (key === 'date') {
+      // ISO 8601 (what Date.parse reads everywhere): a date alone, or with a time and a zone
+      const ms = /^\d{4}-\d{2}-\d{2}/.test(value.trim()) ? Date.parse(value.trim()) : NaN;
+      if (Number.isFinite(ms)) out.date = ms;
+      else warn(key, value, 'expected an ISO 8601 date, such as 2024-01-15T12:00:00Z');
+    } else if (key === 'fps') {
+      const f = number(key, value, MIN_FPS, MAX_FPS, `frames a second, ${MIN_FPS} .. ${MAX_FPS}`);
+      if (f !== undefined) out.fps = f;
     } else if (key === 'shader' || CHANNEL_PARAMS.includes(key)) {
       const checked = value.trim() ? sameOriginUrl(value.trim(), base) : { url: null, why: 'empty' };
       if (checked.url === null) {
@@ -171,17 +190,21 @@ function formatNumber(v) {
  * @param {number | null} [state.time] a fixed time (omitted: the link plays, from 0)
  * @param {number[]} [state.mouse] iMouse; omitted when all zero
  * @param {number} [state.speed] omitted when 1
+ * @param {number | null} [state.date] a fixed iDate at iTime 0, ms since 1970 (omitted: the real date)
+ * @param {number | null} [state.fps] a fixed frame schedule (omitted: measured)
  * @param {(string | null | undefined)[]} [state.channels] image URLs
  * @param {Record<string, unknown>} [state.controls] control values to write (vectors as arrays, a
  *   choice by its name as a string)
  */
-export function formatUrlParams({ shader, size, time, mouse, speed = 1, channels = [], controls = {} }) {
+export function formatUrlParams({ shader, size, time, mouse, speed = 1, date = null, fps = null, channels = [], controls = {} }) {
   const query = new URLSearchParams();
   if (shader) query.set('shader', shader);
   if (size) query.set('size', `${size.width}x${size.height}`);
   if (time !== undefined && time !== null) query.set('time', formatNumber(time));
   if (mouse && mouse.some((v) => v !== 0)) query.set('mouse', mouse.map(formatNumber).join(','));
   if (speed !== 1) query.set('speed', formatNumber(speed));
+  if (date !== null) query.set('date', new Date(date).toISOString());
+  if (fps !== null) query.set('fps', formatNumber(fps));
   channels.forEach((url, i) => url && query.set(CHANNEL_PARAMS[i], url));
   for (const [name, value] of Object.entries(controls)) {
     const text = Array.isArray(value)
