@@ -17,8 +17,8 @@ import './inspect.css';
 
 /** @typedef {import('../app/app.js').RaytracerApp} RaytracerApp */
 
-/** The page's notes over the canvas (ui/notices.js: the notes column, the view's note; the overlay), which the boxes keep clear of where they can. */
-const notes = () => [...document.querySelectorAll('#notes, .view-note, #overlay')];
+/** The page's notes over the canvas (ui/notices.js: the column of the toast and the notes, the view's note; the overlay), which the boxes keep clear of where they can. */
+const notes = () => [...document.querySelectorAll('#messages, .view-note, #overlay')];
 
 /**
  * @param {RaytracerApp} app

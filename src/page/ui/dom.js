@@ -21,6 +21,19 @@ export function element(tag, attributes = {}, ...children) {
   return node;
 }
 
+/**
+ * Puts a popover (position: fixed) just above `anchor` (the toolbar), no taller than the room
+ * there: it covers none of the toolbar, the shader's name among it.
+ * @param {HTMLElement} popover
+ * @param {HTMLElement} anchor
+ */
+export function placeAbove(popover, anchor) {
+  const top = anchor.getBoundingClientRect().top;
+  const gap = 6;
+  popover.style.bottom = `${Math.max(0, window.innerHeight - top) + gap}px`;
+  popover.style.maxHeight = `${Math.max(0, top - 2 * gap)}px`;
+}
+
 /** Saves a Blob as a file, as a link with `download` does. @param {Blob} blob @param {string} fileName */
 export function saveBlob(blob, fileName) {
   const url = URL.createObjectURL(blob);

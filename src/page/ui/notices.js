@@ -26,12 +26,16 @@ function closeButton(note, label) {
   return close;
 }
 
-/** The column of notes at the top right of the stage (made on first use): they stack, none over another. @param {HTMLElement} stage */
+/**
+ * The notes, at the top right of the stage under the toast (index.html's #messages, one column:
+ * they stack, none over another); made on first use where the page has no such column.
+ * @param {HTMLElement} stage
+ */
 function notesColumn(stage) {
   let column = document.getElementById('notes');
   if (!column) {
     column = element('div', { id: 'notes' });
-    stage.append(column);
+    (document.getElementById('messages') ?? stage).append(column);
   }
   return column;
 }

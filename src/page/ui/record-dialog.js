@@ -4,7 +4,7 @@
 
 import { MAX_FPS, MAX_FRAMES, Recorder, RecordingCancelled } from '../io/recorder.js';
 import { recordingFileName } from '../io/file-names.js';
-import { element, saveBlob } from './dom.js';
+import { element, placeAbove, saveBlob } from './dom.js';
 
 /** @typedef {import('../app/app.js').RaytracerApp} RaytracerApp */
 
@@ -98,6 +98,7 @@ export function installRecordDialog(app, toolbarRoot, toast) {
       status.textContent = '';
     }
     dialog.hidden = false;
+    placeAbove(dialog, toolbarRoot); // above the toolbar: off the shader's name and the buttons
     openButton.setAttribute('aria-expanded', 'true');
     (recorder.busy ? cancel : start).focus();
   };
@@ -106,6 +107,7 @@ export function installRecordDialog(app, toolbarRoot, toast) {
     openButton.setAttribute('aria-expanded', 'false');
   };
 
+  window.addEventListener('resize', () => dialog.hidden || placeAbove(dialog, toolbarRoot));
   openButton.addEventListener('click', () => (dialog.hidden ? open() : !recorder.busy && close()));
   cancel.addEventListener('click', () => (recorder.busy ? recorder.cancel() : close()));
   dialog.addEventListener('keydown', (event) => {

@@ -5,6 +5,8 @@
 
 import { element } from './dom.js';
 import { FrameReadout } from './frame-readout.js';
+import { ToolbarFit } from './toolbar-fit.js';
+import './toolbar.css';
 
 const SPEEDS = [0, 0.1, 0.25, 0.5, 1, 2, 4, 8];
 const GRAPH_FRAMES = 90; // frame times kept in the graph
@@ -142,44 +144,47 @@ export class Toolbar {
       actions.toggleInspect,
     );
 
+    const outputs = element(
+      'div',
+      { class: 'group outputs' },
+      editButton,
+      button(
+        'Copy for Shadertoy',
+        "Copies the shader's text (the editor's tab of a multipass shader), ready to paste into that tab on Shadertoy",
+        'copy',
+        actions.copyForShadertoy,
+      ),
+      button('Download .glsl', "Saves the shader as a .glsl file (the editor's tab of a multipass shader)", 'download', actions.download),
+      button(
+        'Export JSON',
+        "Saves the whole shader, every tab and channel, in Shadertoy's JSON format (drop it on the page to load it back)",
+        'json',
+        actions.exportJson,
+      ),
+      button('Screenshot', 'Saves the current frame as a PNG (size: Controls → View)', 'camera', actions.screenshot),
+      this.inspectButton,
+      button(
+        'Compare with float64',
+        'The frame against the float64 reference with the same rays (the built-in raytracer): an error heat map, its RMSE, maximum and pixels over 2/255',
+        'compare',
+        actions.compare,
+      ),
+      this.fullscreenButton,
+      button('Copy link', 'Copies a link that reproduces this view: shader URL, controls, mouse, time and size', 'link', actions.copyLink),
+    );
     root.append(
-      element('div', { class: 'group' }, this.playButton, restart, resetView, this.timeSlider, this.timeText, this.speedSelect),
+      element('div', { class: 'group transport' }, this.playButton, restart, resetView, this.timeSlider, this.timeText, this.speedSelect),
       element('div', { class: 'group meter' }, this.graph, this.fpsText),
       element('div', { class: 'group grow' }, this.nameText),
-      element(
-        'div',
-        { class: 'group' },
-        editButton,
-        button(
-          'Copy for Shadertoy',
-          "Copies the shader's text (the editor's tab of a multipass shader), ready to paste into that tab on Shadertoy",
-          'copy',
-          actions.copyForShadertoy,
-        ),
-        button('Download .glsl', "Saves the shader as a .glsl file (the editor's tab of a multipass shader)", 'download', actions.download),
-        button(
-          'Export JSON',
-          "Saves the whole shader, every tab and channel, in Shadertoy's JSON format (drop it on the page to load it back)",
-          'json',
-          actions.exportJson,
-        ),
-        button('Screenshot', 'Saves the current frame as a PNG (size: Controls → View)', 'camera', actions.screenshot),
-        this.inspectButton,
-        button(
-          'Compare with float64',
-          'The frame against the float64 reference with the same rays (the built-in raytracer): an error heat map, its RMSE, maximum and pixels over 2/255',
-          'compare',
-          actions.compare,
-        ),
-        this.fullscreenButton,
-        button(
-          'Copy link',
-          'Copies a link that reproduces this view: shader URL, controls, mouse, time and size',
-          'link',
-          actions.copyLink,
-        ),
-      ),
+      outputs,
     );
+    /** Two rows at most: labels, else icons, else a "More" menu (toolbar-fit.js). */
+    this.layout = new ToolbarFit(root, outputs); // fitted once every button is in (ui.js)
+  }
+
+  /** Fits the toolbar again (after a button is added to it). */
+  fit() {
+    this.layout.fit();
   }
 
   /** Play state, time, speed and shader name from the app. */
@@ -209,6 +214,7 @@ export class Toolbar {
       const cut = name.lastIndexOf('/') + 1;
       this.nameText.title = name;
       this.nameText.replaceChildren(element('span', { class: 'folder' }, name.slice(0, cut)), name.slice(cut));
+      this.layout.fit(); // a phone's toolbar gives the name its own width
     }
     this.readout.refresh();
   }

@@ -74,6 +74,7 @@ export function installUi(app, { builtinSource }) {
   );
   inspection.inspector.on('mode', () => toolbar.setInspecting(inspection.inspector.active));
   const recording = installRecordDialog(app, toolbar.root, toast);
+  toolbar.fit(); // with "Record" in it
   installViewNote(app, stage);
   const panel = new Panel({
     onConverge: (on) =>
