@@ -97,7 +97,7 @@ describe('one pass composed in Shadertoy’s header', () => {
     const plain = composePassShader(MAIN, { hostBlock: '#define X 1\n' });
     const tiled = composePassShader(MAIN, { hostBlock: '#define X 1\n', tiled: true });
     const expected = plain.code
-      .replace('#define X 1\n', `uniform vec2 ${TILE_OFFSET_UNIFORM};\n#define X 1\n`)
+      .replace('void main(void) {', `uniform vec2 ${TILE_OFFSET_UNIFORM};\nvoid main(void) {`)
       .replace('mainImage(color, gl_FragCoord.xy);', `mainImage(color, gl_FragCoord.xy + ${TILE_OFFSET_UNIFORM});`);
     expect(tiled.code).toBe(expected);
     expect(tiled.firstSourceLine).toBe(plain.firstSourceLine + 1);

@@ -2,8 +2,8 @@ import { describe, expect, test } from 'vitest';
 import { parseControls } from '../src/shadertoy/controls.js';
 import {
   HOST_CONTROLS_MACRO,
-  SHADERTOY_FOOTER,
   SHADERTOY_HEADER,
+  SHADERTOY_IMAGE_MAIN,
   SHADERTOY_UNIFORMS,
   composeImageShader,
   hostControlBlock,
@@ -11,7 +11,7 @@ import {
 
 const SOURCE = 'void mainImage(out vec4 c, in vec2 f) {\n    c = vec4(f / iResolution.xy, 0.0, 1.0);\n}\n';
 
-describe('Shadertoy header and footer', () => {
+describe('Shadertoy header and its main', () => {
   test('the header is a WebGL2 (GLSL ES 3.00) header: #version on the very first line', () => {
     expect(SHADERTOY_HEADER.startsWith('#version 300 es\n')).toBe(true);
   });
@@ -22,15 +22,25 @@ describe('Shadertoy header and footer', () => {
     expect(SHADERTOY_HEADER.split('\n')).toContain(declaration);
   });
 
-  test('the footer starts the colour at 1e20 and forces alpha to 1', () => {
-    expect(SHADERTOY_FOOTER).toMatch(/vec4 color = vec4\(1e20\);/);
-    expect(SHADERTOY_FOOTER).toMatch(/mainImage\(color, gl_FragCoord\.xy\);/);
-    expect(SHADERTOY_FOOTER).toMatch(/vec4\(color\.xyz, 1\.0\)/);
+  test('main starts the colour at 1e20 and forces alpha to 1', () => {
+    expect(SHADERTOY_IMAGE_MAIN).toMatch(/vec4 color = vec4\(1e20\);/);
+    expect(SHADERTOY_IMAGE_MAIN).toMatch(/mainImage\(color, gl_FragCoord\.xy\);/);
+    expect(SHADERTOY_IMAGE_MAIN).toMatch(/vec4\(color\.xyz, 1\.0\)/);
+  });
+
+  test('main follows the forward declaration of mainImage, before any user text (as the site places it)', () => {
+    const { code, firstSourceLine } = composeImageShader(SOURCE);
+    const lines = code.split('\n');
+    const declaration = lines.indexOf('void mainImage(out vec4 c, in vec2 f);');
+    const main = lines.indexOf('void main(void) {');
+    expect(declaration).toBeGreaterThanOrEqual(0);
+    expect(main).toBeGreaterThan(declaration);
+    expect(main).toBeLessThan(firstSourceLine - 1);
   });
 });
 
 describe('composeImageShader', () => {
-  const headerLines = SHADERTOY_HEADER.split('\n').length - 1;
+  const headerLines = (SHADERTOY_HEADER + SHADERTOY_IMAGE_MAIN).split('\n').length - 1;
   const hostBlock = hostControlBlock(parseControls('#ifndef HOST_CONTROLS\n#define A 1 // ui: A\nconst float B = 2.0; // ui: B\n#endif\n'));
 
   test.each([
@@ -48,12 +58,12 @@ describe('composeImageShader', () => {
       .filter(Boolean)
       .forEach((line, i) => expect(lines[firstSourceLine - 1 + i]).toBe(line));
     expect(firstSourceLine).toBe(headerLines + (block ? block.split('\n').length - 1 : 0) + 1);
-    expect(code.startsWith(SHADERTOY_HEADER)).toBe(true);
-    expect(code.endsWith(SHADERTOY_FOOTER)).toBe(true);
+    expect(code.startsWith(SHADERTOY_HEADER + SHADERTOY_IMAGE_MAIN)).toBe(true);
+    expect(code.endsWith(source)).toBe(true);
   });
 
-  test('without a host block the code is exactly header + file + main (what Shadertoy compiles)', () => {
-    expect(composeImageShader(SOURCE).code).toBe(SHADERTOY_HEADER + SOURCE + SHADERTOY_FOOTER);
+  test('without a host block the code is exactly header + main + file (what Shadertoy compiles)', () => {
+    expect(composeImageShader(SOURCE).code).toBe(SHADERTOY_HEADER + SHADERTOY_IMAGE_MAIN + SOURCE);
   });
 });
 

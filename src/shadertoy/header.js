@@ -1,10 +1,19 @@
 // Shadertoy's Image-tab contract, in one place: the exact header the site puts before a WebGL2
-// Image pass, the `main` it puts after it, and how a host (our page, the test harness, the
-// benchmark) slots its own control uniforms between the header and the user's file.
+// Image pass, with its `main` at the header's end, and how a host (our page, the test harness,
+// the benchmark) slots its own control uniforms between the header and the user's file.
 //
 // Shadertoy joins header + Common + Image as plain strings and never parses the user's code, so
 // a shader that compiles in `composeImageShader(source)` (no host controls) is a shader that
 // pastes into Shadertoy unchanged.
+//
+// Where `main` goes (issue 37), read in the site's own player (effect.js and piLibs.js, as
+// copied in github.com/DustinBrett/daedalOS, public/System/ShaderToy/CoastalLandscape/):
+// EffectPass.MakeHeader_Image and MakeHeader_Buffer end the header with the forward declaration
+// of mainImage, the output variable and `main` itself, and NewShader_Image appends each Common
+// tab and "\n", then the pass's tab, with no footer (piRenderer puts `#version 300 es` and the
+// precision lines first). So `main` and its call of mainImage are compiled before any user text,
+// and a macro the user defines (e.g. one renaming mainImage to supersample it) never reaches
+// them. The Image pass's `main` writes alpha 1; a buffer's stores the colour as it is.
 
 /** Shadertoy's header for a WebGL2 Image pass, line for line. */
 export const SHADERTOY_HEADER = `#version 300 es
@@ -31,11 +40,10 @@ out vec4 shadertoy_out_color;
 `;
 
 /**
- * Shadertoy's `main`: the colour starts at vec4(1e20) (a shader that never writes it renders
- * white), and alpha is forced to 1.
+ * Shadertoy's `main` for the Image pass, the header's last lines: the colour starts at
+ * vec4(1e20) (a shader that never writes it renders white), and alpha is forced to 1.
  */
-export const SHADERTOY_FOOTER = `
-void main(void) {
+export const SHADERTOY_IMAGE_MAIN = `void main(void) {
     vec4 color = vec4(1e20);
     mainImage(color, gl_FragCoord.xy);
     shadertoy_out_color = vec4(color.xyz, 1.0);
@@ -153,24 +161,20 @@ export function hostControlBlock(controls, defineValues = {}, liveValues = null)
  *   which the user's first line lands (to map compiler messages back to the user's file)
  */
 export function composeImageShader(source, { hostBlock = '' } = {}) {
-  const before = SHADERTOY_HEADER + hostBlock;
-  return {
-    code: before + source + (source.endsWith('\n') ? '' : '\n') + SHADERTOY_FOOTER,
-    firstSourceLine: countNewlines(before) + 1,
-  };
+  const before = SHADERTOY_HEADER + SHADERTOY_IMAGE_MAIN + hostBlock;
+  return { code: before + source, firstSourceLine: countNewlines(before) + 1 };
 }
 
 // ---- multipass (issue 13) -------------------------------------------------------------------
-// The site compiles every pass as header + Common + "\n" + the pass's tab + main, joined as
-// plain strings (https://www.shadertoy.com/js/effect.js, EffectPass.NewShader: `fsSource +=
-// commonShaderCodes[i] + '\n'`). A buffer pass's main stores the colour as it is, alpha
+// The site compiles every pass as header (its `main` included) + Common + "\n" + the pass's
+// tab, joined as plain strings (https://www.shadertoy.com/js/effect.js, EffectPass.NewShader:
+// `fsSource += commonShaderCodes[i] + '\n'`). A buffer pass's main stores the colour as it is, alpha
 // included (EffectPass.MakeHeader_Buffer: `outColor = color`, no `color.w = 1.0`): buffers hold
 // data. A channel bound to a cubemap is declared `samplerCube`, a volume `sampler3D`
 // (MakeHeader_Image/Buffer).
 
 /** Shadertoy's `main` for a buffer pass: the colour stored as mainImage left it, alpha included. */
-const SHADERTOY_BUFFER_FOOTER = `
-void main(void) {
+const SHADERTOY_BUFFER_MAIN = `void main(void) {
     vec4 color = vec4(1e20);
     mainImage(color, gl_FragCoord.xy);
     shadertoy_out_color = color;
@@ -189,7 +193,7 @@ const SAMPLER_DECLARATIONS = Object.freeze({ '2D': 'sampler2D', Cube: 'samplerCu
 export const TILE_OFFSET_UNIFORM = 'shadertoy_tileOffset';
 
 /** The Image pass's `main` for a tile: Shadertoy's, with fragCoord moved by the tile's offset. */
-const TILED_IMAGE_FOOTER = SHADERTOY_FOOTER.replace('gl_FragCoord.xy', `gl_FragCoord.xy + ${TILE_OFFSET_UNIFORM}`);
+const TILED_IMAGE_MAIN = SHADERTOY_IMAGE_MAIN.replace('gl_FragCoord.xy', `gl_FragCoord.xy + ${TILE_OFFSET_UNIFORM}`);
 
 /**
  * One part of a composed pass, in lines counted from the first line of user text (1 = the
@@ -199,8 +203,8 @@ const TILED_IMAGE_FOOTER = SHADERTOY_FOOTER.replace('gl_FragCoord.xy', `gl_FragC
 
 /**
  * The full fragment shader of one pass of a multipass shader: Shadertoy's header (with each
- * channel's sampler type), the host block, the Common tab, a line break, the pass's tab, and the
- * Image or buffer `main`. With no Common, no channel types and kind 'image' it is exactly
+ * channel's sampler type) ending in the Image or buffer `main`, the host block, the Common tab, a
+ * line break, and the pass's tab. With no Common, no channel types and kind 'image' it is exactly
  * composeImageShader(code, {hostBlock}).
  * @param {string} code the pass's tab text
  * @param {{common?: string | null, hostBlock?: string, kind?: 'image' | 'buffer', name?: string,
@@ -219,16 +223,17 @@ export function composePassShader(code, { common = null, hostBlock = '', kind = 
     if (!declaration) throw new Error(`composePassShader: unknown sampler type ${JSON.stringify(type)} for iChannel${i}`);
     header = header.replace(`uniform sampler2D iChannel${i};`, `uniform ${declaration} iChannel${i};`);
   });
-  const before = header + (tiled ? `uniform vec2 ${TILE_OFFSET_UNIFORM};\n` : '') + hostBlock;
+  const main = kind === 'buffer' ? SHADERTOY_BUFFER_MAIN : tiled ? TILED_IMAGE_MAIN : SHADERTOY_IMAGE_MAIN;
+  // the tile's uniform is declared before the `main` that reads it
+  const before = header + (tiled ? `uniform vec2 ${TILE_OFFSET_UNIFORM};\n` : '') + main + hostBlock;
   const commonText = common === null ? '' : common + '\n';
-  const footer = kind === 'buffer' ? SHADERTOY_BUFFER_FOOTER : tiled ? TILED_IMAGE_FOOTER : SHADERTOY_FOOTER;
   const passName = name ?? (kind === 'buffer' ? 'Buffer' : 'Image');
   /** @type {PassSection[]} */
   const sections = [];
   if (common !== null) sections.push({ name: 'Common', firstLine: 1, lineCount: countNewlines(common) + 1 });
   sections.push({ name: passName, firstLine: countNewlines(commonText) + 1, lineCount: countNewlines(code) + 1 });
   return {
-    code: before + commonText + code + (code.endsWith('\n') ? '' : '\n') + footer,
+    code: before + commonText + code,
     firstSourceLine: countNewlines(before) + 1,
     sections,
   };

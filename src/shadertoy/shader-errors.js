@@ -1,9 +1,9 @@
 // Compiler messages, mapped back to the user's shader file.
 //
-// The GPU compiles more than the user wrote: three.js puts `#version` and a few `#define`s
-// first, then comes Shadertoy's header, the host control block, the file and Shadertoy's `main`.
-// A log line such as `ERROR: 0:57: 'x' : undeclared identifier` counts lines of all of that, so
-// we find where the file starts in the source the GPU actually received and subtract.
+// The GPU compiles more than the user wrote: Shadertoy's header and its `main`, the host control
+// block, then the file. A log line such as `ERROR: 0:57: 'x' : undeclared identifier` counts
+// lines of all of that, so we find where the file starts in the source the GPU actually received
+// and subtract.
 
 import { countNewlines } from './header.js';
 
@@ -11,7 +11,7 @@ import { countNewlines } from './header.js';
  * How many lines come before the user's first line in `compiledSource` (what
  * gl.getShaderSource returns), so that `userLine = logLine - offset`.
  * @param {string} compiledSource the full text given to the GPU
- * @param {string} body the text we handed to three.js (composed shader minus its #version line)
+ * @param {string} body the composed text (or a part of it that the compiled source holds whole)
  * @param {number} firstBodyLine 1-based line of `body` on which the user's file starts
  * @param {string} userSource the user's file, the fallback anchor
  */

@@ -2,9 +2,10 @@
 // (renderer.js), off to the side: each material is compiled on a staging scene of its own, so a
 // shader that fails to compile never replaces the last one that worked. A failure's driver log is
 // mapped back to the user's tabs and lines (three.js's onShaderError hook → ShaderCompileError).
-// Compiled materials are kept by their code (the material cache): the page switches between a
-// shader's uniform form and its constant form (app.js), and switching back must not wait for a
-// compile.
+// Each pass's text reaches WebGL as composed, none of three.js's preprocessing applied to it
+// (verbatim-source.js). Compiled materials are kept by their code (the material cache): the page
+// switches between a shader's uniform form and its constant form (app.js), and switching back
+// must not wait for a compile.
 
 import * as THREE from 'three';
 import { composePassShader } from '../../shadertoy/header.js';
@@ -12,15 +13,16 @@ import { formatShaderMessages, parseShaderLog, userLineOffset } from '../../shad
 import { formatPassMessages, parsePassShaderLog } from '../../shadertoy/pass-errors.js';
 import { channelTypes, frameSchedule } from '../../shadertoy/multipass.js';
 import { ShaderCompileError } from './errors.js';
+import { verbatimStandIn } from './verbatim-source.js';
 
 /** Compiled materials kept for switching back without a compile: a uniform form, a constant form, and one spare, for each of up to five passes. */
 const MATERIALS_KEPT = 15;
 
 /** @typedef {ReturnType<typeof frameSchedule>[number] & {material: THREE.RawShaderMaterial}} Step */
 /**
- * A program three.js is checking: the pass's text and where it sits in the program, and the
- * error _onShaderError found in it.
- * @typedef {{userText: string, sections: PassSection[] | null, body: string, firstBodyLine: number, error: ShaderCompileError | null}} ProgramCheck
+ * A program three.js is checking: the user's text, the composed code WebGL compiled and the line
+ * of it where the user's text starts, and the error _onShaderError found in it.
+ * @typedef {{userText: string, sections: PassSection[] | null, code: string, firstSourceLine: number, error: ShaderCompileError | null}} ProgramCheck
  * @typedef {import('../../shadertoy/header.js').PassSection} PassSection
  */
 
@@ -121,14 +123,15 @@ export class PassCompiler {
    * @param {() => Record<string, {value: any}>} passUniforms
    */
   async _compileMaterial({ code, firstSourceLine }, { userText, sections }, passUniforms) {
-    // three.js writes `#version` itself (glslVersion), ahead of its own #defines
-    const body = code.slice(code.indexOf('\n') + 1);
-    const cached = this._compiled.get(body);
+    // the stand-in of the code (verbatim-source.js): one per code, so also the cache's key
+    const fragmentShader = verbatimStandIn(code);
+    const cached = this._compiled.get(fragmentShader);
     if (cached) return cached;
     const material = new THREE.RawShaderMaterial({
+      // the vertex shader's #version; the fragment shader's is the code's own
       glslVersion: THREE.GLSL3,
       vertexShader: VERTEX_SHADER,
-      fragmentShader: body,
+      fragmentShader,
       uniforms: passUniforms(),
       depthTest: false,
       depthWrite: false,
@@ -146,7 +149,7 @@ export class PassCompiler {
     // Asking for the uniforms makes three.js check the program, calling onShaderError on failure.
     const program = /** @type {{currentProgram: {getUniforms: () => unknown}}} */ (this.three.properties.get(material)).currentProgram;
     /** @type {ProgramCheck} */
-    const check = { userText, sections, body, firstBodyLine: firstSourceLine - 1, error: null };
+    const check = { userText, sections, code, firstSourceLine, error: null };
     this._compiling = check;
     try {
       program.getUniforms();
@@ -161,9 +164,9 @@ export class PassCompiler {
   }
 
   /** Keeps the most recent compiled materials (MATERIALS_KEPT); disposes the ones that fall out. */
-  _remember(body, material) {
-    this._compiled.delete(body);
-    this._compiled.set(body, material);
+  _remember(fragmentShader, material) {
+    this._compiled.delete(fragmentShader);
+    this._compiled.set(fragmentShader, material);
     for (const [key, old] of this._compiled) {
       if (this._compiled.size <= MATERIALS_KEPT) break;
       this._compiled.delete(key);
@@ -181,7 +184,7 @@ export class PassCompiler {
   _onShaderError(gl, program, vertexShader, fragmentShader) {
     const check = this._compiling;
     if (!check) return;
-    const offset = userLineOffset(gl.getShaderSource(fragmentShader) ?? '', check.body, check.firstBodyLine, check.userText);
+    const offset = userLineOffset(gl.getShaderSource(fragmentShader) ?? '', check.code, check.firstSourceLine, check.userText);
     const log = gl.getShaderInfoLog(fragmentShader) ?? '';
     const fragment = check.sections
       ? parsePassShaderLog(log, offset, check.sections)

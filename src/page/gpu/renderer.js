@@ -20,6 +20,7 @@ import { WebGL2UnavailableError } from './errors.js';
 import { PassCompiler, VERTEX_SHADER } from './pass-compiler.js';
 import { ChannelSamplers, bindChannels, imageTexture, ownChannelUniforms } from './channel-bindings.js';
 import { PixelProbe } from './probe.js';
+import { sendVerbatimSources } from './verbatim-source.js';
 import { TILE_OFFSET_UNIFORM } from '../../shadertoy/header.js';
 
 /** @typedef {import('./pass-compiler.js').Step} Step */
@@ -55,6 +56,8 @@ export class ShaderRenderer {
     };
     const gl = canvas.getContext('webgl2', attributes);
     if (!gl) throw new WebGL2UnavailableError();
+    // each pass's text compiles as composed, not as three.js would rewrite it (verbatim-source.js)
+    sendVerbatimSources(gl);
     this.gl = gl;
     /** The GPU time of each frame drawn, where the browser measures it (gpu-timer.js). */
     this.gpuTimer = new GpuTimer(gl);
