@@ -158,3 +158,73 @@ test('a control out of range is said as the page says it, and drawn clamped (iss
   expect(out.stderr.trim()).toBe('warning: sized.glsl: Some values were not used as given: SIZE=-5 is out of range (0.1 .. 2): using 0.1.');
   expect(readPng(path.join(folder, 'sized.png')).data[0]).toBe(byte(0.1 / 2));
 });
+
+describe('never a silent half-render (issue 37, item 4)', () => {
+  /** An Image pass that reads a video it cannot have here, and a Sound tab. */
+  const HALF = JSON.stringify({
+    Shader: {
+      info: { name: 'half' },
+      renderpass: [
+        {
+          type: 'image',
+          name: 'Image',
+          code: 'void mainImage(out vec4 c, in vec2 f) { c = vec4(texture(iChannel1, f / iResolution.xy).rgb + 0.25, 1.0); }',
+          inputs: [
+            {
+              id: 'XsfGRr',
+              filepath: '/media/a/video.webm',
+              type: 'video',
+              channel: 1,
+              sampler: { filter: 'linear', wrap: 'clamp', vflip: 'true', srgb: 'false', internal: 'byte' },
+            },
+          ],
+          outputs: [{ id: '4dfGRr', channel: 0 }],
+        },
+        {
+          type: 'sound',
+          name: 'Sound',
+          code: 'vec2 mainSound(int s, float t) { return vec2(sin(6.2831 * 440.0 * t)); }',
+          inputs: [],
+          outputs: [],
+        },
+      ],
+    },
+  });
+  const VIDEO_LINE = /Image, iChannel1: a video input is not available here; the channel is black/;
+
+  test('render and record say each missing input and pass as a warning; --strict fails and writes nothing', async () => {
+    write('half.json', HALF);
+    const out = await shaderproof('render', 'half.json', '-o', 'half.png', '--size', '8x8');
+    expect(out.code, out.stderr).toBe(0);
+    const warnings = out.stderr.split('\n').filter(Boolean);
+    expect(warnings.length, out.stderr).toBe(2);
+    expect(warnings.every((w) => w.startsWith('warning: half.json: half.json runs without some of what it asks for: '))).toBe(true);
+    expect(out.stderr).toMatch(VIDEO_LINE);
+    expect(out.stderr).toMatch(/Sound: sound passes are not played here/);
+
+    fs.rmSync(path.join(folder, 'strict.png'), { force: true });
+    const strict = await shaderproof('render', 'half.json', '-o', 'strict.png', '--size', '8x8', '--strict');
+    expect(strict.code).toBe(1);
+    expect(strict.stderr.trim()).toMatch(/^shaderproof render: half\.json: --strict: it went without 2 things, the first: /);
+    expect(fs.existsSync(path.join(folder, 'strict.png'))).toBe(false);
+
+    const recorded = await shaderproof('record', 'half.json', '-o', 'half.zip', '--size', '8x8', '--frames', '2');
+    expect(recorded.code, recorded.stderr).toBe(0);
+    expect(recorded.stderr).toMatch(VIDEO_LINE);
+  });
+
+  test('test fails a case that went without an input and writes no reference from it, unless its manifest allows it', async () => {
+    write('half/half.json', HALF);
+    const refused = await shaderproof('test', 'half', '--update', '--out', 'half-report');
+    expect(refused.code).toBe(1);
+    expect(refused.stdout).toMatch(/^FAIL {2}half\.json .*went without: Image, iChannel1: a video input/m);
+    expect(refused.stdout).toMatch(/no reference written from a render that went without/);
+    expect(fs.existsSync(path.join(folder, 'half/__references__/half.json.png'))).toBe(false);
+
+    write('half/shaderproof.json', JSON.stringify({ cases: { 'half.json': { size: '8x8', allowMissing: ['iChannel1', 'Sound'] } } }));
+    const allowed = await shaderproof('test', 'half', '--update', '--out', 'half-report');
+    expect(allowed.code, allowed.stdout).toBe(0);
+    expect(allowed.stdout).toMatch(/^pass {2}half\.json .*went without \(allowed\): Image, iChannel1/m);
+    expect(fs.existsSync(path.join(folder, 'half/__references__/half.json.png'))).toBe(true);
+  });
+});

@@ -10,7 +10,7 @@ import fs from 'node:fs';
 import path from 'node:path';
 import pixelmatch from 'pixelmatch';
 import { readPng, writePng } from '../engine/png.js';
-import { io, watchdog } from './io.js';
+import { allowedMissing, io, watchdog } from './io.js';
 import { findCases, readManifest, REFERENCE_DIR } from './manifest.js';
 import { junitXml } from './junit.js';
 import { renderShader } from './render.js';
@@ -68,6 +68,20 @@ async function runCase(session, testCase, { update, out }) {
     if (!(error instanceof CliError || error instanceof UsageError)) throw error;
     return { name: testCase.name, ok: false, failures: [error.message], notes, ms: Date.now() - started, diffPixels: null };
   }
+  // a render that went without an input or a pass is no reference, nor a pass, unless allowed
+  const missing = image.notes.filter((n) => n.kind === 'missing').flatMap((n) => n.lines);
+  const unallowed = missing.filter((line) => !allowedMissing(line, testCase.allowMissing));
+  for (const line of missing) notes.push(`went without (allowed): ${line}`);
+  if (unallowed.length) {
+    notes.splice(0);
+    failures.push(
+      ...unallowed.map((line) => `went without: ${line} (allow it with "allowMissing" in shaderproof.json, or give the input)`),
+    );
+    if (update) failures.push('no reference written from a render that went without what the shader asks for');
+    writePng(outFile('actual'), image);
+    return { name: testCase.name, ok: false, failures, notes, ms: Date.now() - started, diffPixels: null };
+  }
+  for (const { lines } of image.notes.filter((n) => n.kind === 'values')) notes.push(...lines);
   let diffPixels = null;
   if (update) {
     writePng(testCase.reference, image);

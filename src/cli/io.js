@@ -1,6 +1,7 @@
 // What every verb shares besides its session: where it prints (stdout for results, stderr for
 // progress and errors), its one SHADER argument, and the watchdog's flag.
 
+import { CliError } from './session.js';
 import { UsageError, readNumber } from './view-options.js';
 
 export const io = {
@@ -14,11 +15,33 @@ export const io = {
 /**
  * The page's notes on a view, one warning line each on stderr: what the shader went without,
  * and values that were not used as given (a control clamped into range), as the page shows them.
+ * With `strict`, a view that went without an input or a pass is an error instead (nothing is
+ * written): a render never claims what did not happen.
  * @param {string} file
  * @param {import('../engine/view.js').PageNote[]} notes
+ * @param {{strict?: boolean}} [options]
  */
-export function sayNotes(file, notes) {
+export function sayNotes(file, notes, { strict = false } = {}) {
+  const missing = notes.filter((note) => note.kind === 'missing').flatMap((note) => note.lines);
+  if (strict && missing.length)
+    throw new CliError(
+      `${file}: --strict: it went without ${missing.length === 1 ? 'this' : `${missing.length} things, the first`}: ${missing[0]}`,
+    );
   for (const { title, lines } of notes) for (const line of lines) io.err(`warning: ${file}: ${title}: ${line}`);
+}
+
+/**
+ * Whether a line of the page's "went without" note is one a test case allows: an entry of its
+ * manifest's allowMissing names the pass ("Sound", "Cube A"), the channel ("iChannel2", in any
+ * pass) or both ("Image/iChannel2"). A line reads "PASS, iChannelN: …" or "PASS: …".
+ * @param {string} line
+ * @param {string[]} allowed
+ */
+export function allowedMissing(line, allowed) {
+  const match = /^([^,:]+?)(?:, (iChannel\d))?:/.exec(line);
+  if (!match) return false;
+  const [, pass, channel] = match;
+  return allowed.some((entry) => entry === pass || (channel !== undefined && (entry === channel || entry === `${pass}/${channel}`)));
 }
 
 /**

@@ -62,11 +62,14 @@ ${VIEW_HELP}
                         when still"), a print-quality still
   -o, --output FILE     OUT.png, or OUT.pfm: the colours in float as the shader wrote them
                         (Portable FloatMap, unclamped) (required)
+  --strict              a shader that went without an input or a pass it asks for is an
+                        error, and nothing is written (else a warning line for each)
 ${COMMON_HELP}`,
     flags: {
       ...COMMON_FLAGS,
       ...VIEW_FLAGS,
       output: { type: 'string', short: 'o' },
+      strict: { type: 'boolean' },
       fps: { type: 'string' },
       converge: { type: 'string' },
       tile: { type: 'string' },
@@ -88,10 +91,12 @@ iFrame = i, whatever a frame costs to draw.
   --channel0..3 IMAGE   an image file for iChannel0..3
   --date ISO|now        iDate at iTime 0 (default 2024-01-15T12:00:00Z; "now": the real date)
   -o, --output FILE     OUT.webm (VP9 or VP8) or OUT.zip (frame-0000.png, ...) (required)
+  --strict              a shader that went without an input or a pass is an error
 ${COMMON_HELP}`,
     flags: {
       ...COMMON_FLAGS,
       ...VIEW_FLAGS,
+      strict: { type: 'boolean' },
       frames: { type: 'string' },
       fps: { type: 'string' },
       output: { type: 'string', short: 'o' },
@@ -184,7 +189,7 @@ async function runRender({ values, positionals }) {
         `--size ${width}x${height}: this GPU draws at most ${image.width}x${image.height} at once; use --tile 512 for a larger still`,
         2,
       );
-    sayNotes(file, image.notes);
+    sayNotes(file, image.notes, { strict: values.strict });
     if (format === 'pfm') writeFloatImage(values.output, await session.drawFloat());
     else writeImage(values.output, image);
     const { label: renderer } = await session.environment();

@@ -10,6 +10,8 @@
 //         "checks": { "noNaN": true, "deterministic": true,
 //                     "halfSize": true | { "threshold": t, "maxDiffFraction": f },
 //                     "maxFrameMs": ms },
+//         "allowMissing": ["iChannel2", "Sound", "Image/iChannel1"],  (inputs or passes the
+//                                                case may go without: else it fails)
 //         "skip": "why" } } }
 //
 // An unknown key or a value of the wrong kind is a usage error naming it (a typo must not turn
@@ -31,7 +33,7 @@ const DEFAULT_TOLERANCE = Object.freeze({ threshold: 0, maxDiffPixels: 0 });
 const DEFAULT_HALF_SIZE = Object.freeze({ threshold: 0.1, maxDiffFraction: 0.05 });
 const DEFAULT_SIZE = { width: 320, height: 180 };
 
-const CASE_KEYS = ['size', 'time', 'frame', 'mouse', 'date', 'fps', 'set', 'channels', 'tolerance', 'checks', 'skip'];
+const CASE_KEYS = ['size', 'time', 'frame', 'mouse', 'date', 'fps', 'set', 'channels', 'tolerance', 'checks', 'allowMissing', 'skip'];
 const CHECK_KEYS = ['noNaN', 'deterministic', 'halfSize', 'maxFrameMs'];
 
 /**
@@ -43,6 +45,7 @@ const CHECK_KEYS = ['noNaN', 'deterministic', 'halfSize', 'maxFrameMs'];
  * @property {import('./view-options.js').ViewOptions} view
  * @property {{threshold: number, maxDiffPixels: number}} tolerance
  * @property {{noNaN?: boolean, deterministic?: boolean, halfSize?: {threshold: number, maxDiffFraction: number}, maxFrameMs?: number}} checks
+ * @property {string[]} allowMissing what the case may go without (io.js allowedMissing)
  * @property {string | null} skip
  */
 
@@ -130,7 +133,10 @@ function readCase(where, entry, dir) {
     checks.maxFrameMs = given.maxFrameMs;
   }
   const skip = entry.skip === undefined ? null : String(entry.skip);
-  return { view: /** @type {import('./view-options.js').ViewOptions} */ (view), tolerance, checks, skip };
+  const allowMissing = entry.allowMissing ?? [];
+  if (!Array.isArray(allowMissing) || !allowMissing.every((a) => typeof a === 'string' && a))
+    fail('"allowMissing" is a list of pass names and channels, such as ["iChannel2", "Sound", "Image/iChannel1"]');
+  return { view: /** @type {import('./view-options.js').ViewOptions} */ (view), tolerance, checks, allowMissing, skip };
 }
 
 /**

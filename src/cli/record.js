@@ -4,7 +4,7 @@
 
 import { runLong } from '../engine/long-work.js';
 import { writeWhole } from '../engine/png.js';
-import { io, oneShader, progressBar, watchdog } from './io.js';
+import { io, oneShader, progressBar, sayNotes, watchdog } from './io.js';
 import { renderShader } from './render.js';
 import { CliError, shaderKind, startSession } from './session.js';
 import { UsageError, readNumber, readViewOptions } from './view-options.js';
@@ -31,7 +31,8 @@ export async function runRecord({ values, positionals }) {
   const started = Date.now();
   const session = await startSession({ gpu: values.gpu, ...watchdog(values.watchdog), say: io.err });
   try {
-    await renderShader(session, file, view); // compiles it and draws its first frame (errors said as a render's)
+    const first = await renderShader(session, file, view); // compiles it and draws its first frame (errors said as a render's)
+    sayNotes(file, first.notes, { strict: values.strict });
     const page = /** @type {import('puppeteer-core').Page} */ (session.page());
     const request = { format, frames, fps, width: view.size.width, height: view.size.height };
     const bar = progressBar('frames');

@@ -10,15 +10,15 @@
  * of itself and its notes (PageNote), or `error` (why there is no frame) with `hung` when the
  * watchdog gave up on the shader (it may never finish) and `compile` when it did not compile.
  * @typedef {{pixels: {width: number, height: number, data: string}, frame: number, info: any,
- *   notes: {title: string, lines: string[]}[], datasetError: string | undefined, error?: undefined}
+ *   notes: {kind: 'missing' | 'values', title: string, lines: string[]}[], datasetError: string | undefined, error?: undefined}
  *   | {error: string, hung?: boolean, compile?: boolean}} DrawnView
  */
 
 /**
  * A note the page shows beside the picture, a title and its lines: what a shader went without
- * (load-notes: media, passes), or values not used as given (value-notes: a control clamped into
- * range), which a person sees on the page and the command line prints.
- * @typedef {{title: string, lines: string[]}} PageNote
+ * (kind 'missing', the page's load-notes: media, passes), or values not used as given ('values':
+ * a control clamped into range), which a person sees on the page and the command line prints.
+ * @typedef {{kind: 'missing' | 'values', title: string, lines: string[]}} PageNote
  */
 
 /**
@@ -66,11 +66,14 @@ export async function drawView(page, { baseUrl, query, fresh }) {
       const canvas = /** @type {HTMLCanvasElement | null} */ (document.querySelector('canvas[data-frame]'));
       const frame = canvas ? Number(canvas.dataset.frame) : NaN;
       const info = window.raytracer.info();
-      const notes = ['load-notes', 'value-notes'].flatMap((id) => {
+      const notes = /** @type {const} */ ([
+        ['load-notes', 'missing'],
+        ['value-notes', 'values'],
+      ]).flatMap(([id, kind]) => {
         const note = document.getElementById(id);
         if (!note) return [];
         const text = (/** @type {Element | null} */ element) => element?.textContent?.trim().replace(/\s+/g, ' ') ?? '';
-        return [{ title: text(note.querySelector('strong')), lines: [...note.querySelectorAll('li')].map(text) }];
+        return [{ kind, title: text(note.querySelector('strong')), lines: [...note.querySelectorAll('li')].map(text) }];
       });
       return { pixels, frame, info: JSON.parse(JSON.stringify(info)), notes, datasetError: datasetError() };
     },
