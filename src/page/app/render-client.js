@@ -130,24 +130,30 @@ export class RenderClient extends Emitter {
   }
 
   /**
-   * The worker holds a new program's first draw until the page has painted the bitmaps it was
-   * sent (gpu/paint-gate.js: painting a bitmap waits for the GPU process, which an
-   * endless draw holds for good). What the page has received by now has been given to the canvas
-   * (shown, or closed); at the second animation frame from now it has been painted. A hidden
-   * page paints nothing and gets no animation frames (a background tab): it answers at once.
+   * The worker holds a new program's first draws until the page has painted the bitmaps it was
+   * sent (gpu/paint-gate.js: painting a bitmap waits for the GPU process, which an endless draw
+   * holds for good), and waits as long as it takes: the page always answers. What the page has
+   * received by now has been given to the canvas (shown, or closed); at the second animation
+   * frame from now it has been painted. A hidden page paints nothing and gets no animation
+   * frames (a background tab): it answers at once, or as soon as it is hidden.
    */
   _settleAfterPaint() {
     const worker = this.worker;
     const count = this._bitmaps;
-    if (document.visibilityState === 'hidden') {
-      this.tell('settled', { bitmaps: count });
-      return;
-    }
-    requestAnimationFrame(() =>
-      requestAnimationFrame(() => {
-        if (this.worker === worker) this.tell('settled', { bitmaps: count });
-      }),
-    );
+    let answered = false;
+    const answer = () => {
+      if (answered) return;
+      answered = true;
+      document.removeEventListener('visibilitychange', answerIfHidden);
+      if (this.worker === worker) this.tell('settled', { bitmaps: count });
+    };
+    const answerIfHidden = () => {
+      if (document.visibilityState === 'hidden') answer();
+    };
+    answerIfHidden();
+    if (answered) return;
+    document.addEventListener('visibilitychange', answerIfHidden);
+    requestAnimationFrame(() => requestAnimationFrame(answer));
   }
 
   /** @param {Message} message */
@@ -236,6 +242,16 @@ export class RenderClient extends Emitter {
     const phase = this._bandCompiling && quiet < TIMEOUTS.compileHangMs ? 'compiling' : 'drawing';
     this._hung = phase;
     this.emit('hang', quiet / 1000, phase);
+  }
+
+  /**
+   * The band the GPU is on now: how long it has been on it, and whether it is a program's first
+   * draw (a compile); null when it is on none, or the context is lost.
+   * @returns {{seconds: number, compiling: boolean} | null}
+   */
+  get band() {
+    if (this._bandSince === null || this.contextLost) return null;
+    return { seconds: (performance.now() - this._bandSince) / 1000, compiling: this._bandCompiling };
   }
 
   /** Whether a band has gone TIMEOUTS.hangMs unfinished, and what it is doing then (null: none has). */

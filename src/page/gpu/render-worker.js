@@ -60,7 +60,7 @@ let job = null;
 let probeWarming = false;
 /** Jobs waiting for the one under way. @type {Job[]} */
 const waiting = [];
-/** The band the GPU is drawing (`warmUp`: a new program's first quad, see pump; `compiling`: the
+/** The band the GPU is drawing (`warmUp`: a new program's first draw, see pump; `compiling`: the
  * watchdog is told that it includes a compile). @type {{sync: WebGLSync, rows: number, started: number, warmUp: boolean} | null} */
 let band = null;
 /** The programs (materials) drawn at least once since they compiled. @type {WeakSet<object>} */
@@ -155,15 +155,16 @@ function pump() {
   if (tile) drawn.material.uniforms[TILE_OFFSET_UNIFORM].value = [tile.x, tile.y];
   const target = renderer().beginStep(drawn, job.width, job.height) ?? job.target;
   // SwiftShader turns a program into machine code on its first draw, not when it links (the
-  // raytracer's torus scene: 22 ms to link, 3.5 s for its first 2×2 quad, 2 ms for the next).
-  // So a program's first draw is one quad of the band about to be drawn, a band of its own that
-  // the watchdog knows as compiling (render-client.js) and the planner does not time: the
-  // compile is neither the shader's cost per pixel nor a draw that hangs. The band drawn next
-  // covers the quad again with the same inputs, so the frame's pixels are the same.
+  // raytracer's torus scene: 22 ms to link, 2.4 s for its first draw, 17 ms for the next band).
+  // So a program's first draw is scissored to no pixel: SwiftShader compiles for it and runs the
+  // shader nowhere. That band, the compile alone, the watchdog knows as compiling
+  // (render-client.js) and the planner does not time; a loop that never ends runs only in the
+  // bands after it, which the watchdog knows as drawing (a first quad of real pixels ran it
+  // inside the compile's band, called compiling until TIMEOUTS.compileHangMs).
   if (!drawnPrograms.has(drawn.material)) {
     if (!paints.mayDraw()) return;
     drawnPrograms.add(drawn.material);
-    renderer().drawRegion(target, 0, job.y, Math.min(2, job.width), Math.min(2, job.height - job.y));
+    renderer().drawRegion(target, 0, job.y, 0, 0);
     startBand(0, { warmUp: true, compiling: true });
     return;
   }
@@ -177,7 +178,7 @@ function pump() {
  * The GPU has the band's draws: watch for its end.
  * @param {number} rows rows of the job it draws (0 for a warm-up)
  * @param {{warmUp?: boolean, compiling?: boolean}} [options] warmUp: a new program's first
- *   quad (pump); compiling: the band includes a program's first draw
+ *   draw, of no pixel (pump); compiling: the band includes a program's first draw
  */
 function startBand(rows, { warmUp = false, compiling = false } = {}) {
   const gl = renderer().gl;

@@ -11,7 +11,11 @@
 //   time between frames (the first frames of a new shader carry its compile, and would say "GPU
 //   480 ms" beside "2.7 fps").
 // - The line says what is happening: drawing the first frame (how far it has got), playing,
-//   paused, converging (the samples so far), or time standing still at speed 0.
+//   paused, converging (the samples so far), or time standing still at speed 0; compiling, and
+//   for how long, once a compile has taken a second; "no frame for N s · may never finish" once
+//   a band has outlasted the watchdog (app/render-client.js). Figures are of frames drawn: once
+//   the next frame is late (twice the time between the last ones, and at least LATE_MS), the
+//   line says a frame is being drawn, and for how long, instead of the rate it no longer has.
 
 import { median } from '../../shared/stats.js';
 
@@ -19,6 +23,8 @@ const RATE_WINDOW_MS = 2000;
 const GRAPH_MAX_MS = 50; // the graph's top (20 fps); slower frames are clipped there
 /** How often the line is written again (a heavy first frame's progress moves between frames). */
 const REFRESH_MS = 250;
+/** A frame this late (or twice the time between the last ones, when longer) ends the figures. */
+const LATE_MS = 500;
 
 /**
  * What the page is doing, as the readout tells it.
@@ -26,7 +32,9 @@ const REFRESH_MS = 250;
  *   | {phase: 'playing'}
  *   | {phase: 'still'}
  *   | {phase: 'paused', progress: number | null}
- *   | {phase: 'converging', samples: number, of: number}} Activity
+ *   | {phase: 'converging', samples: number, of: number}
+ *   | {phase: 'compiling', seconds: number}
+ *   | {phase: 'stalled', seconds: number}} Activity
  */
 
 /** Frames drawn per second of the page's clock, over the last RATE_WINDOW_MS. */
@@ -50,6 +58,19 @@ class FrameRate {
   get fps() {
     const t = this._times;
     return t.length < 2 ? null : ((t.length - 1) * 1000) / (t[t.length - 1] - t[0]);
+  }
+
+  /**
+   * How long the next frame is overdue at `now`, in ms (0: it is not late): past twice the time
+   * between the last frames, and at least LATE_MS, after the last one.
+   * @param {number} now
+   */
+  late(now) {
+    const t = this._times;
+    if (!t.length) return 0;
+    const since = now - t[t.length - 1];
+    const fps = this.fps;
+    return since > Math.max(LATE_MS, fps ? 2000 / fps : 0) ? since : 0;
   }
 }
 
@@ -115,7 +136,10 @@ export class FrameReadout {
     const now = this.activity();
     const percent = (/** @type {number | null} */ p) => (p === null ? '' : ` · ${Math.floor(p * 100)}%`);
     let line;
-    if (now.phase === 'first') line = `Drawing the first frame${percent(now.progress)}`;
+    const s = (/** @type {number} */ seconds) => `${Math.floor(seconds)} s`;
+    if (now.phase === 'compiling') line = `Compiling · ${s(now.seconds)}`;
+    else if (now.phase === 'stalled') line = `No frame for ${s(now.seconds)} · may never finish`;
+    else if (now.phase === 'first') line = `Drawing the first frame${percent(now.progress)}`;
     else if (now.phase === 'paused') line = now.progress === null ? 'Paused' : `Paused · drawing a frame${percent(now.progress)}`;
     else if (now.phase === 'still') line = 'Speed 0× · time stands still';
     else if (now.phase === 'converging')
@@ -128,6 +152,9 @@ export class FrameReadout {
   _speed(lead) {
     const fps = this._rate.fps;
     if (fps === null || !this.intervals.length) return '';
+    // no figure from frames that were not drawn: a late frame is said as late
+    const late = this._rate.late(performance.now());
+    if (late) return `${lead}${lead ? 'drawing' : 'Drawing'} a frame · ${Math.floor(late / 1000)} s`;
     const between = 1000 / fps;
     const gpu = this._gpu.length ? median(this._gpu.slice(-10)) : null;
     // a GPU time longer than the time between frames is not this run's (a compile, a first frame)

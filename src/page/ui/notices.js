@@ -250,25 +250,16 @@ function showWatchdog(app, overlay) {
       shown = null;
       return;
     }
-    if (shown === phase) return; // the message stays as it is; the seconds are in its text from the start
-    shown = phase;
     const back = app.frames.lastFinished;
-    const s = Math.round(seconds);
-    const detail = [
-      phase === 'compiling'
-        ? `SwiftShader (the CPU renderer) turns a shader into machine code when it first draws it, and ${app.fileName} has been compiling for ${s} s. A large shader takes a while; the first frame follows.`
-        : `${app.fileName} has been drawing one frame for ${s} s without finishing a band of it: it may never finish (an endless loop, or far too much work per pixel).`,
-      phase === 'compiling'
-        ? ''
-        : 'On a real GPU the browser resets the GPU after several seconds of this, and the page comes back with the last shader that finished a frame. SwiftShader (the CPU renderer) has no such reset: the draw goes on until the browser is closed.',
-      back ? `Going back runs ${back.name} again; the text of ${app.fileName} stays in the editor's undo history (Ctrl+Z).` : '',
-    ]
-      .filter(Boolean)
-      .join('\n');
+    const detail = watchdogDetail(app.fileName, Math.floor(seconds), phase, back?.name ?? null);
+    // the same phase: only the seconds move (the buttons, and a focus on one, stay)
+    if (shown === phase) return overlay.setDetail(detail);
+    shown = phase;
+    const label = back ? goBackLabel(back.name, app.fileName) : '';
     const actions = back
       ? [
           {
-            label: `Go back to ${back.name}`,
+            label,
             run: () => {
               overlay.show(`Going back to ${back.name}…`, 'Starting the renderer again.');
               goBack(app).catch((error) => {
@@ -285,3 +276,32 @@ function showWatchdog(app, overlay) {
     overlay.showActions(phase === 'compiling' ? `Compiling ${app.fileName}…` : `${app.fileName} may never finish`, detail, actions);
   });
 }
+
+/**
+ * The watchdog message's text, with the seconds as they are now.
+ * @param {string} name the shader on the GPU
+ * @param {number} seconds how long its band has gone unfinished, whole seconds
+ * @param {string} phase 'compiling' or 'drawing'
+ * @param {string | null} back the shader "Go back" runs
+ */
+function watchdogDetail(name, seconds, phase, back) {
+  return [
+    phase === 'compiling'
+      ? `SwiftShader (the CPU renderer) turns a shader into machine code when it first draws it, and ${name} has been compiling for ${seconds} s. A large shader takes a while; the first frame follows.`
+      : `${name} has been drawing one frame for ${seconds} s without finishing a band of it: it may never finish (an endless loop, or far too much work per pixel).`,
+    phase === 'compiling'
+      ? ''
+      : 'On a real GPU the browser resets the GPU after several seconds of this, and the page comes back with the last shader that finished a frame. SwiftShader (the CPU renderer) has no such reset: the draw goes on until the browser is closed.',
+    back ? `Going back runs ${back} again; the text of ${name} stays in the editor's undo history (Ctrl+Z).` : '',
+  ]
+    .filter(Boolean)
+    .join('\n');
+}
+
+/**
+ * "Go back to NAME", or, when the shader on the GPU goes by the same name (two pastes are both
+ * "untitled"), "Go back to the previous NAME", so that the two can be told apart.
+ * @param {string} back the last shader that finished a frame
+ * @param {string} current the shader that may never finish
+ */
+const goBackLabel = (back, current) => (back === current ? `Go back to the previous ${back}` : `Go back to ${back}`);

@@ -28,6 +28,12 @@ export class Overlay {
     this.element.hidden = false;
   }
 
+  /** Writes the shown message's detail again (its buttons and focus stay). @param {string} detail */
+  setDetail(detail) {
+    const pre = this.element.querySelector('pre');
+    if (pre && pre.textContent !== detail) pre.textContent = detail;
+  }
+
   /**
    * A message with buttons under it.
    * @param {string} title

@@ -20,6 +20,9 @@ import { installInspection } from '../inspect/inspection.js';
 /** @typedef {import('../app/app.js').RaytracerApp} RaytracerApp */
 /** @typedef {import('./frame-readout.js').Activity} Activity */
 
+/** A compile is said in the readout once it has taken this long (a quick one never shows). */
+const COMPILE_SAID_AFTER_S = 1;
+
 /**
  * What the page is doing, for the frame-time readout.
  * @param {RaytracerApp} app
@@ -28,6 +31,10 @@ import { installInspection } from '../inspect/inspection.js';
 function activity(app) {
   const { progress, count, stillFrames } = app.frames;
   const fraction = progress ? progress.y / Math.max(1, progress.height) : null;
+  // the watchdog's view first: a compile that takes a while, a band past its limit
+  const band = app.gpu.band;
+  if (band && app.gpu.hung === 'drawing') return { phase: 'stalled', seconds: band.seconds };
+  if (band && band.compiling && band.seconds >= COMPILE_SAID_AFTER_S) return { phase: 'compiling', seconds: band.seconds };
   if (count === 0) return { phase: 'first', progress: fraction };
   if (app.converge.on) return { phase: 'converging', samples: stillFrames, of: app.converge.frames };
   // a frame drawn while paused is said only when it takes more than a band (a heavy one): a
