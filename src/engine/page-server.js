@@ -44,21 +44,50 @@ const TYPES = {
 
 const typeOf = (file) => TYPES[path.extname(file).toLowerCase()] ?? 'application/octet-stream';
 
-/** The folders the built page is made from, in a clone: a build older than any of them is stale. */
-const PAGE_SOURCES = ['src/page', 'src/shadertoy', 'src/shared', 'shaders', 'public', 'vite.config.js'];
+/**
+ * The build's own list of the files it was made from (vite.config.js pageSources: the page's and
+ * its workers' module graphs, the static files, the config), paths relative to the package.
+ */
+const SOURCES_FILE = 'page-sources.json';
 
-/** The newest modification time under `file` (a file or a folder), in ms. */
+/**
+ * What the tests write into public/ while they run (git ignores them): never a source of the
+ * page, so never a reason to build it again under a running suite.
+ */
+const TEST_FILES = /^(test-|hmr-test-)/;
+
+/**
+ * The newest modification time of the files under `file` (a file or a folder), in ms; a file
+ * gone since the build counts as changed now.
+ */
 function newestMtime(file) {
   let stat;
   try {
     stat = fs.statSync(file);
   } catch {
-    return 0;
+    return Date.now();
   }
   if (!stat.isDirectory()) return stat.mtimeMs;
-  let newest = stat.mtimeMs;
-  for (const entry of fs.readdirSync(file)) newest = Math.max(newest, newestMtime(path.join(file, entry)));
+  let newest = 0;
+  for (const entry of fs.readdirSync(file)) if (!TEST_FILES.test(entry)) newest = Math.max(newest, newestMtime(path.join(file, entry)));
   return newest;
+}
+
+/**
+ * The sources of the build in `dir` changed since it was made (newer than its index.html), by the
+ * build's own list of them; every source when the list is missing (a build from before it).
+ * @param {string} dir a built page
+ * @returns {string[]} paths relative to the package
+ */
+export function staleSources(dir) {
+  const built = fs.statSync(path.join(dir, 'index.html')).mtimeMs;
+  let listed;
+  try {
+    listed = JSON.parse(fs.readFileSync(path.join(dir, SOURCES_FILE), 'utf8'));
+  } catch {
+    return [`(${SOURCES_FILE} is missing: the build is from before the list)`];
+  }
+  return listed.filter((/** @type {string} */ file) => newestMtime(path.join(PACKAGE_ROOT, file)) > built);
 }
 
 /**
@@ -70,10 +99,9 @@ function newestMtime(file) {
  */
 export async function builtPage({ say = () => {} } = {}) {
   const index = path.join(BUILT_PAGE_DIR, 'index.html');
-  const built = fs.existsSync(index) ? fs.statSync(index).mtimeMs : 0;
   const inClone = fs.existsSync(path.join(PACKAGE_ROOT, 'vite.config.js'));
-  const sources = inClone ? Math.max(...PAGE_SOURCES.map((s) => newestMtime(path.join(PACKAGE_ROOT, s)))) : 0;
-  if (built && built >= sources) return BUILT_PAGE_DIR;
+  const built = fs.existsSync(index) ? fs.statSync(index).mtimeMs : 0;
+  if (built && !(inClone && staleSources(BUILT_PAGE_DIR).length)) return BUILT_PAGE_DIR;
   let vite;
   try {
     vite = await import('vite');
