@@ -12,6 +12,7 @@ import { builtPage, startPageServer } from '../engine/page-server.js';
 import { drawView } from '../engine/view.js';
 import { CLOSE_TIMEOUT_MS, watchPage, withTimeout } from '../engine/watch.js';
 import { fromBase64 } from '../shared/pixels.js';
+import { PRODUCTION_TIMEOUTS } from '../shared/timeouts.js';
 
 /** An error the person can act on: said in one line, without a stack. */
 export class CliError extends Error {
@@ -39,10 +40,15 @@ const STARTER = 'void mainImage(out vec4 c, in vec2 f) { c = vec4(0.0, 0.0, 0.0,
 
 /**
  * @param {{gpu?: boolean, hangMs?: number, compileHangMs?: number, say?: (line: string) => void}} [options]
- *   hangMs: a band of a frame unfinished this long fails (the page's watchdog: timeouts.js);
+ *   hangMs: a band of a frame unfinished this long fails (the page's watchdog: src/shared/timeouts.js);
  *   compileHangMs: the same for a program's first draw, in which SwiftShader compiles it
  */
-export async function startSession({ gpu = false, hangMs = 5_000, compileHangMs = 30_000, say = () => {} } = {}) {
+export async function startSession({
+  gpu = false,
+  hangMs = PRODUCTION_TIMEOUTS.hangMs,
+  compileHangMs = PRODUCTION_TIMEOUTS.compileHangMs,
+  say = () => {},
+} = {}) {
   mark('node started, modules loaded');
   let executablePath;
   try {

@@ -8,7 +8,7 @@ import { installAutomation, installFailedAutomation } from './automation.js';
 import { Overlay } from './ui/overlay.js';
 import { installUi } from './ui/ui.js';
 import { showAppOnPage, showStartupFailure } from './ui/notices.js';
-import { parseUrlParams } from './io/url-params.js';
+import { parseUrlParams } from '../shared/url-params.js';
 import { fetchShader, loadImage, shaderName } from './io/shader-loader.js';
 import { HangGuard, watchHangs } from './io/hang-guard.js';
 import { openShader } from './io/open-shader.js';

@@ -77,12 +77,12 @@ export async function disconnect() {
 
 /**
  * A fresh page with the deterministic injection (unless `deterministic: false`), and the page's
- * `timeouts` (src/page/timeouts.js) set as given (e.g. config.js's SHORT_TIMEOUTS), collecting
+ * `timeouts` (src/shared/timeouts.js) set as given (e.g. config.js's SHORT_TIMEOUTS), collecting
  * console errors and page errors. Every wait on it (evaluate, waitForFunction, goto, ...) ends
  * within `waitTimeoutMs` (WAIT_TIMEOUT_MS in tests, SCRIPT_WAIT_TIMEOUT_MS in scripts), and at
  * once when the page or the browser crashes, with what the page was doing in the message; its
  * close() gives up after a while (watch.js).
- * @param {{deterministic?: boolean, waitTimeoutMs?: number, timeouts?: Partial<import('../../src/page/timeouts.js').Timeouts>}} [options]
+ * @param {{deterministic?: boolean, waitTimeoutMs?: number, timeouts?: Partial<import('../../src/shared/timeouts.js').Timeouts>}} [options]
  * @returns {Promise<{page: import('puppeteer-core').Page, errors: string[], context: object}>}
  */
 export async function openPage({
