@@ -102,6 +102,8 @@ export default defineConfig({
     fs: { allow: [repo] },
   },
   build: {
+    // two pages: the interactive one, and the engine page the command line drives (only what draws)
+    rollupOptions: { input: { main: `${repo}src/page/index.html`, engine: `${repo}src/page/engine.html` } },
     outDir: `${repo}dist`,
     emptyOutDir: true,
     chunkSizeWarningLimit: 800, // three.js's WebGLRenderer is most of the bundle (~600 kB)

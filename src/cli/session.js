@@ -27,6 +27,12 @@ export class CliError extends Error {
   }
 }
 
+/**
+ * The page every view is drawn on: the engine page (src/page/engine.html), only what draws, not
+ * the interactive page with its editor, panel and inspector, whose code it never loads.
+ */
+export const ENGINE_PAGE = '/engine.html';
+
 /** How long one wait on the page may take (a load, a compile, a frame): SwiftShader is slow. */
 const WAIT_MS = 120_000;
 
@@ -90,7 +96,11 @@ export async function startSession({
       /** @type {any} */ (window).__raytracerTimeouts = chosen;
     }, /** @type {any} */ ({ hangMs, compileHangMs }));
     await opened.setViewport({ width: 800, height: 600, deviceScaleFactor: 1 });
-    const started = await drawView(opened, { baseUrl: server.baseUrl, query: `/?shader=${starter}&size=2x2&time=0`, fresh: true });
+    const started = await drawView(opened, {
+      baseUrl: server.baseUrl,
+      query: `${ENGINE_PAGE}?shader=${starter}&size=2x2&time=0`,
+      fresh: true,
+    });
     if (started.error !== undefined) throw new CliError(`the page did not start: ${started.error}`);
     try {
       const { renderer, version } = /** @type {Extract<import('../engine/view.js').DrawnView, {pixels: unknown}>} */ (started).info;

@@ -9,6 +9,7 @@
 
 import path from 'node:path';
 import { MAX_FPS, MIN_FPS, formatUrlParams } from '../shared/url-params.js';
+import { ENGINE_PAGE } from './session.js';
 
 /** A flag or value the command cannot use: said with the verb's usage, exit 2. */
 export class UsageError extends Error {}
@@ -120,14 +121,14 @@ export function readViewOptions(values, defaultSize, { fps: defaultFps = DEFAULT
 }
 
 /**
- * The page's query for a view of a mounted shader: `mount(file)` serves a file and returns its
+ * The engine page's address for a view of a mounted shader: `mount(file)` serves a file and returns its
  * URL path (page-server.js).
  * @param {string} shaderUrl
  * @param {ViewOptions} view
  * @param {(file: string) => string} mount
  */
 export function viewQuery(shaderUrl, view, mount) {
-  return `/${formatUrlParams({
+  return `${ENGINE_PAGE}${formatUrlParams({
     shader: shaderUrl,
     size: view.size,
     time: view.time ?? 0,

@@ -100,13 +100,27 @@ import { markApp, markStartupFailure } from './page-marks.js';
 const hooked = window;
 
 /**
+ * What an entry page gives the hook: open() (open-view.js), the recorder it owns, and on the
+ * interactive page (main.js) its widgets; the engine page (engine-main.js) has none, and the
+ * methods that need them (the inspector, the comparison, the link, the editor) reject there.
+ * @typedef {object} HookHost
+ * @property {(query: string) => Promise<void>} open
+ * @property {import('./io/recorder.js').Recorder} recorder
+ * @property {ReturnType<typeof import('./ui/ui.js').installUi>} [ui]
+ */
+
+/**
  * @param {import('./app/app.js').RaytracerApp} app (a page that could not start has installFailedAutomation)
  * @param {Promise<void>} ready
- * @param {ReturnType<typeof import('./ui/ui.js').installUi>} ui
- * @param {{open: (query: string) => Promise<void>}} page what the page does for open()
+ * @param {HookHost} host
  */
-export function installAutomation(app, ready, ui, { open }) {
+export function installAutomation(app, ready, { open, recorder, ui: pageUi }) {
   markApp(app);
+  /** The page's widgets, for the methods that need them; the engine page has none. */
+  const widgets = () => {
+    if (!pageUi) throw new Error('not on the engine page (engine.html), which only draws: open the full page (index.html)');
+    return pageUi;
+  };
   // the first source may still be on its way (?shader= is fetched): calls wait for it
   const loaded = () => (app.loading ?? Promise.resolve()).catch(() => {});
   // A first compile that failed rejects `ready` for good; once another shader has compiled,
@@ -246,12 +260,13 @@ export function installAutomation(app, ready, ui, { open }) {
 
     async inspect(x, y) {
       await settled();
+      const ui = widgets();
       const { inspector } = ui.inspection;
       ui.inspection.pin(x, y);
       return structuredClone(await inspector.complete());
     },
     inspection() {
-      const { inspector } = ui.inspection;
+      const { inspector } = widgets().inspection;
       return structuredClone({
         active: inspector.active,
         pinned: inspector.pinned,
@@ -259,34 +274,34 @@ export function installAutomation(app, ready, ui, { open }) {
         readout: inspector.readout,
       });
     },
-    unpin: () => ui.inspection.inspector.unpin(),
+    unpin: () => widgets().inspection.inspector.unpin(),
     async compareWithFloat64() {
       await settled();
-      const { figures, width, height, extraSampleShare, frame, ms, caveat } = await ui.inspection.comparison.run();
+      const { figures, width, height, extraSampleShare, frame, ms, caveat } = await widgets().inspection.comparison.run();
       return { figures, width, height, extraSampleShare, frame, ms, caveat };
     },
     comparison() {
-      const { running, error, stale, result } = ui.inspection.comparison;
+      const { running, error, stale, result } = widgets().inspection.comparison;
       return structuredClone({ running, error, stale, shown: result ? { width: result.width, height: result.height } : null });
     },
 
-    shareUrl: () => ui.shareUrl(),
-    editorSource: () => ui.editor.text,
+    shareUrl: () => widgets().shareUrl(),
+    editorSource: () => widgets().editor.text,
 
     async record(request = {}) {
       await settled();
       recorded = { done: 0, total: 0 };
-      const { bytes, ...result } = await ui.recording.recorder.record(request, (done, total) => (recorded = { done, total }));
+      const { bytes, ...result } = await recorder.record(request, (done, total) => (recorded = { done, total }));
       return { ...result, data: toBase64(bytes) };
     },
     async frameAt(request) {
       await settled();
       recorded = { done: 0, total: 0 };
-      const { data, ...size } = await ui.recording.recorder.frameAt(request, (done, total) => (recorded = { done, total }));
+      const { data, ...size } = await recorder.frameAt(request, (done, total) => (recorded = { done, total }));
       return { ...size, data: toBase64(data) };
     },
-    cancelRecording: () => ui.recording.recorder.cancel(),
-    recording: () => ({ busy: ui.recording.recorder.busy, ...recorded }),
+    cancelRecording: () => recorder.cancel(),
+    recording: () => ({ busy: recorder.busy, ...recorded }),
 
     info() {
       return {

@@ -14,7 +14,15 @@ import { singlePass } from '../shadertoy/multipass.js';
 
 /** @typedef {import('./app/app.js').RaytracerApp} RaytracerApp */
 /** @typedef {import('./io/hang-guard.js').HangGuard} HangGuard */
-/** @typedef {ReturnType<typeof import('./ui/ui.js').installUi>} PageUi */
+/**
+ * What a view needs of the page's widgets: the interactive page's (ui/ui.js installUi), or the
+ * engine page's stand-ins (engine-main.js: no toast, no kept work, no inspector, no panel).
+ * @typedef {object} PageUi
+ * @property {(text: string) => void} toast
+ * @property {{open: (pageKey: string, first: FirstSource) => (() => ShaderVersion) | null}} kept
+ * @property {{reset: () => void}} inspection
+ * @property {{setView: (view: {scale: number, cap: number, sizeFixed: boolean}) => void}} panel
+ */
 /** @typedef {ReturnType<typeof import('../shared/url-params.js').parseUrlParams>} UrlParams */
 
 export const BUILTIN_NAME = 'shaders/raytrace.glsl';
