@@ -10,7 +10,8 @@ import { rendererLabel, startBrowser } from '../engine/browser.js';
 import { findChrome } from '../engine/chrome-path.js';
 import { builtPage, startPageServer } from '../engine/page-server.js';
 import { drawView } from '../engine/view.js';
-import { CLOSE_TIMEOUT_MS, watchPage, withTimeout } from '../engine/watch.js';
+import { openPage } from '../engine/page-open.js';
+import { CLOSE_TIMEOUT_MS, withTimeout } from '../engine/watch.js';
 import { fromBase64 } from '../shared/pixels.js';
 import { PRODUCTION_TIMEOUTS } from '../shared/timeouts.js';
 
@@ -73,7 +74,8 @@ export async function startSession({
   let chromium = null;
   /** @type {import('puppeteer-core').Page | null} */
   let page = null;
-  const logged = [];
+  /** What the current page logged as errors (page-open.js). @type {string[]} */
+  let pageErrors = [];
 
   async function browser() {
     if (chromium) return chromium;
@@ -86,16 +88,8 @@ export async function startSession({
 
   async function freshPage() {
     const { browser: b } = await browser();
-    const opened = await withTimeout('opening a page', b.newPage(), WAIT_MS);
-    watchPage(opened, b, { waitTimeoutMs: WAIT_MS });
-    opened.on('console', (message) => {
-      if (message.type() === 'error') logged.push(message.text());
-    });
-    opened.on('pageerror', (error) => logged.push(String(/** @type {Error} */ (error)?.message ?? error)));
-    await opened.evaluateOnNewDocument((chosen) => {
-      /** @type {any} */ (window).__raytracerTimeouts = chosen;
-    }, /** @type {any} */ ({ hangMs, compileHangMs }));
-    await opened.setViewport({ width: 800, height: 600, deviceScaleFactor: 1 });
+    const { page: opened, errors } = await openPage(b, { waitTimeoutMs: WAIT_MS, timeouts: { hangMs, compileHangMs } });
+    pageErrors = errors;
     const started = await drawView(opened, {
       baseUrl: server.baseUrl,
       query: `${ENGINE_PAGE}?shader=${starter}&size=2x2&time=0`,
@@ -180,8 +174,8 @@ export async function startSession({
     },
     /** The page the last view was drawn on (for what only it can do: record, frame steps). */
     page: () => page,
-    /** Console errors the pages logged since the last call. */
-    takeLogged: () => logged.splice(0),
+    /** Console errors and page errors the current page logged since the last call. */
+    takeLogged: () => pageErrors.splice(0),
     async close() {
       mark('output written');
       if (page && !page.isClosed()) await withTimeout('closing the page', page.close(), CLOSE_TIMEOUT_MS).catch(() => {});

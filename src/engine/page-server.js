@@ -11,8 +11,9 @@
 //                          changes (watch()); the page reloads that shader in place (main.js)
 //   anything else          the built page's files; an unknown path answers 404
 //
-// index.html gets one <meta name="raytracer-file-events"> so the page knows to listen. Nothing
-// here writes to disk.
+// With fileEvents (`open`), index.html gets one <meta name="raytracer-file-events"> so the page
+// knows to listen. A test run serves the same page through it, with the harness's routes first
+// (tests/harness/page-server.js). Nothing here writes to disk.
 
 import fs from 'node:fs';
 import http from 'node:http';
@@ -118,10 +119,18 @@ export async function builtPage({ say = () => {} } = {}) {
 }
 
 /**
- * Starts the server on a free loopback port (or `port`).
- * @param {{root: string, port?: number}} options root: the built page's folder
+ * A handler that runs before the server's own, connect-style: it answers, or calls `next`.
+ * @typedef {(req: import('node:http').IncomingMessage, res: import('node:http').ServerResponse, next: () => void) => void} Routes
  */
-export async function startPageServer({ root, port = 0 }) {
+
+/**
+ * Starts the server on a free loopback port (or `port`): the one server of the built page, for
+ * the command line and the test run alike (tests/harness/page-server.js adds its routes).
+ * @param {{root: string, port?: number, fileEvents?: boolean, routes?: Routes}} options root: the
+ *   built page's folder; fileEvents: index.html says where to hear of saved files (`open`);
+ *   routes: answered first
+ */
+export async function startPageServer({ root, port = 0, fileEvents = false, routes = (_req, _res, next) => next() }) {
   /** @type {Map<string, string>} url path → file */
   const mounts = new Map();
   /** @type {Map<string, string>} url path → text */
@@ -132,11 +141,14 @@ export async function startPageServer({ root, port = 0 }) {
   const watchers = [];
   let nextId = 0;
 
-  const index = fs
-    .readFileSync(path.join(root, 'index.html'), 'utf8')
-    .replace(/<meta charset[^>]*>|<head>/i, (tag) => `${tag}\n    <meta name="raytracer-file-events" content="${EVENTS_ROUTE}" />`);
+  const page = fs.readFileSync(path.join(root, 'index.html'), 'utf8');
+  const index = fileEvents
+    ? page.replace(/<meta charset[^>]*>|<head>/i, (tag) => `${tag}\n    <meta name="raytracer-file-events" content="${EVENTS_ROUTE}" />`)
+    : page;
 
-  const server = http.createServer((req, res) => {
+  const server = http.createServer((req, res) => routes(req, res, () => answer(req, res)));
+  /** @param {import('node:http').IncomingMessage} req @param {import('node:http').ServerResponse} res */
+  function answer(req, res) {
     const url = new URL(req.url ?? '/', 'http://page');
     if (req.method !== 'GET' && req.method !== 'HEAD') {
       res.writeHead(405).end();
@@ -189,7 +201,7 @@ export async function startPageServer({ root, port = 0 }) {
     res.writeHead(200, { 'content-type': typeOf(file), 'cache-control': immutable ? 'max-age=31536000, immutable' : 'no-cache' });
     if (req.method === 'HEAD') res.end();
     else fs.createReadStream(file).pipe(res);
-  });
+  }
   await new Promise((resolve, reject) => {
     server.once('error', reject);
     server.listen(port, '127.0.0.1', () => resolve(undefined));
