@@ -4,145 +4,14 @@
 // file, not a .d.ts, so that skipLibCheck (jsconfig.json) does not skip it: a broken import()
 // here is an error. JSDoc reaches its types as import('./globals.js').
 
-/** Base64 RGBA8 pixels, rows top to bottom, as the page hands them over page.evaluate(). */
-interface Base64Frame {
-  width: number;
-  height: number;
-  data: string;
-}
-
 /** window.raytracer.info(): see src/page/automation.js. */
-export interface RaytracerInfo {
-  /** UNMASKED_RENDERER_WEBGL (or RENDERER) */
-  renderer: string;
-  vendor: string;
-  version: string;
-  shadingLanguage: string;
-  /** the drawing buffer's size, device pixels */
-  width: number;
-  height: number;
-  /** frames drawn so far */
-  frame: number;
-  /** the next frame's iFrame (0 after a restart or a newly loaded shader) */
-  iFrame: number;
-  time: number;
-  playing: boolean;
-  speed: number;
-  /** iMouse: [x, y, z, w] */
-  mouse: number[];
-  /** the controls' current values, by name: a number, a boolean or an array of numbers */
-  controls: Record<string, any>;
-  fileName: string;
-  shaderUrl: string | null;
-  origin: import('../src/page/app/app.js').RaytracerApp['origin'];
-  contextLost: boolean;
-  /** successful compiles so far */
-  compiled: number;
-  liveControls: 'constants' | 'uniforms';
-  /** the watchdog's verdict: a frame has gone HANG_AFTER_MS without finishing a band */
-  hung: boolean;
-  /** how far the frame being drawn has got (rows done, bands drawn); null when none is */
-  progress: { y: number; height: number; bands: number } | null;
-  /** "Converge when still" is on */
-  converging: boolean;
-  /** frames drawn since the last change */
-  stillFrames: number;
-  /** Only on a page that could not start (installFailedAutomation), which reports nothing else. */
-  error?: string;
-}
+export type RaytracerInfo = ReturnType<RaytracerHook['info']>;
 
-/** What setSource() and loadShader() resolve with. */
-interface CompileOutcome {
-  ok: boolean;
-  /** the compile error's report (or message) when !ok */
-  error?: string;
-}
-
-/** What record() resolves with: the recording's settings and the file as base64. */
-type RecordingResult = Omit<import('../src/page/io/recorder.js').Recording, 'bytes'> & { data: string };
-
-/** window.raytracer: the page's automation hook, installed by src/page/automation.js (see its header). */
-export interface RaytracerHook {
-  /** Resolves after the first frame has been drawn; rejects when WebGL2 is missing or the first compile fails. */
-  ready: Promise<void>;
-  /** The page as a fresh load of `query` ("?…" and "#…") gives it, without a reload (src/page/open-view.js). */
-  open(query: string): Promise<void>;
-  /** Draws one frame and reads it back. */
-  readPixels(): Promise<Base64Frame>;
-  /** Draws n frames back to back: per-frame times in ms and their median. */
-  renderFrames(n?: number): Promise<{ median: number; times: number[] }>;
-  /** Sets shader controls as the URL does; resolves once compiled. */
-  setControls(changes: Record<string, unknown>): Promise<void>;
-  setSource(source: string): Promise<CompileOutcome>;
-  /** Runs a multipass shader given as Shadertoy's JSON export. */
-  setProject(json: object | string): Promise<CompileOutcome & { notes: string[] }>;
-  /** "Converge when still" on or off; `frames`: still frames to draw. */
-  setConverging(on: boolean, options?: { frames?: number }): Promise<void>;
-  play(): void;
-  pause(): void;
-  togglePlay(): void;
-  restart(): void;
-  setTime(seconds: number): void;
-  setSpeed(speed: number): void;
-  /** iMouse [x, y, z, w] in device pixels, until the next click */
-  setMouse(mouse: number[]): void;
-  resetView(): void;
-  /** The next frame the page draws by itself, and its iFrame. Asks for no frame. */
-  nextFrame(): Promise<Base64Frame & { iFrame: number }>;
-  /** The render worker's WebGL context lost / restored through WEBGL_lose_context. */
-  loseContext(): void;
-  restoreContext(): void;
-  /** The last frame drawn again off screen at that size (default: the canvas's). */
-  capture(size?: { width: number; height: number } | null): Promise<Base64Frame>;
-  /** An image into iChannel `index` (null: black again). */
-  setChannel(index: number, url: string | null): Promise<void>;
-  /** Fetches and runs a shader as ?shader= does. */
-  loadShader(url: string): Promise<CompileOutcome>;
-  /** The link "Copy link" copies. */
-  shareUrl(): string;
-  /** The editor's text (what it holds, compiled or not). */
-  editorSource(): string;
-  /** Records the shader frame by frame (src/page/io/recorder.js); `data` is the file as base64. */
-  /** The last frame's Image pass in RGBA32F: `data` is base64 of the floats' bytes, rows top to bottom. */
-  captureFloat(): Promise<Base64Frame>;
-  /** A tile, from the bottom left, of the last frame drawn at fullWidth × fullHeight. */
-  captureTile(tile: { x: number; y: number; width: number; height: number; fullWidth: number; fullHeight: number }): Promise<Base64Frame>;
-  record(request?: import('../src/page/io/recorder.js').RecordRequest): Promise<RecordingResult>;
-  /** Frame `frame` as record() would draw it, and no file (recorder.js frameAt); `data` is base64 RGBA8. */
-  frameAt(request: {
-    frame: number;
-    fps?: number;
-    width?: number;
-    height?: number;
-  }): Promise<{ width: number; height: number; data: string }>;
-  /** Stops the recording under way: its record() rejects, nothing is made. */
-  cancelRecording(): void;
-  recording(): { busy: boolean; done: number; total: number };
-  /** Inspect on, pixel (x, y) pinned (y from the bottom) and read, path and reference included (src/page/inspect/inspector.js). */
-  inspect(x: number, y: number): Promise<Readout>;
-  /** The inspector as it is now. */
-  inspection(): { active: boolean; pinned: { x: number; y: number } | null; problem: string | null; readout: Readout | null };
-  unpin(): void;
-  /** "Compare with float64" on the frame on the canvas (src/page/inspect/compare.js). */
-  compareWithFloat64(): Promise<ComparisonSummary>;
-  /** The comparison's state on the page. */
-  comparison(): {
-    running: { phase: string; rows: number; of: number } | null;
-    error: string | null;
-    stale: boolean;
-    shown: { width: number; height: number } | null;
-  };
-  info(): RaytracerInfo;
-}
+/** window.raytracer: the page's automation hook, its type taken from the hook itself (src/page/automation.js). */
+type RaytracerHook = import('../src/page/automation.js').RaytracerHook;
 
 /** What the pixel inspector read at a pixel. */
 export type Readout = import('../src/page/inspect/inspector.js').Readout;
-
-/** What compareWithFloat64() resolves with: a ComparisonResult without its images. */
-type ComparisonSummary = Pick<
-  import('../src/page/inspect/compare.js').ComparisonResult,
-  'figures' | 'width' | 'height' | 'extraSampleShare' | 'frame' | 'ms' | 'caveat'
->;
 
 /** window.__benchmark: the benchmark's programs, set up in its raw WebGL2 page (tests/bench/timer.js). */
 interface BenchmarkPage {

@@ -1,4 +1,7 @@
-// window.raytracer: the page's hook for the test harness and the benchmark.
+// window.raytracer: the page's API, which the command line, the test harness and the benchmark
+// drive (on the engine page, engine-main.js, or the interactive page, main.js). Documented here
+// once; its type is the hook itself (RaytracerHook below), which tests/globals.ts and the
+// engine's waits (src/engine/watch.js) take from here.
 //
 //   ready                 Promise: resolves after the first frame has been drawn; rejects with
 //                         the error when WebGL2 is missing or the first compile fails.
@@ -136,7 +139,7 @@ export function installAutomation(app, ready, { open, recorder, ui: pageUi }) {
   /** The last record()'s progress: frames done of total. */
   let recorded = { done: 0, total: 0 };
 
-  hooked.raytracer = {
+  const hook = {
     ready,
 
     async open(query) {
@@ -294,6 +297,7 @@ export function installAutomation(app, ready, { open, recorder, ui: pageUi }) {
       const { bytes, ...result } = await recorder.record(request, (done, total) => (recorded = { done, total }));
       return { ...result, data: toBase64(bytes) };
     },
+    /** @param {{frame: number, fps?: number, width?: number, height?: number}} request */
     async frameAt(request) {
       await settled();
       recorded = { done: 0, total: 0 };
@@ -328,7 +332,15 @@ export function installAutomation(app, ready, { open, recorder, ui: pageUi }) {
       };
     },
   };
+  hooked.raytracer = hook;
+  return hook;
 }
+
+/**
+ * window.raytracer's type, from the hook itself: the tests, the benchmark and the engine's waits
+ * read it (tests/globals.ts).
+ * @typedef {ReturnType<typeof installAutomation>} RaytracerHook
+ */
 
 /** The hook for a page that could not start: `ready` rejects with `error`, and so does the rest. */
 export function installFailedAutomation(error) {
