@@ -85,7 +85,7 @@ export function readNumber(text, flag, { min = -Infinity, max = Infinity, whole 
  * @property {number | null} frame iFrame to draw (frames 0 … N drawn in turn), or null
  * @property {number[] | null} mouse
  * @property {[string, string][]} controls NAME, VALUE as given
- * @property {(string | null)[]} channels image files for iChannel0..3
+ * @property {(string | null)[]} channels image, video or music files for iChannel0..3 (the page tells them apart)
  * @property {number | null} date iDate at iTime 0, ms since 1970 (null: the real date)
  * @property {number} fps the frame schedule: iTimeDelta = 1 / fps, iFrameRate = fps, frame N at N / fps
  */

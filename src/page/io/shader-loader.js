@@ -5,6 +5,7 @@
 // message rather than waiting for ever.
 
 import { TIMEOUTS } from '../timeouts.js';
+import { channelKind } from '../inputs/media-kind.js';
 
 /** The name a shader goes by in messages and downloads: its URL's last path segment. */
 export function shaderName(url) {
@@ -86,7 +87,7 @@ export async function fetchShader(url, { timeoutMs = TIMEOUTS.loadMs } = {}) {
  * @param {LoadOptions} [options]
  * @returns {Promise<ImageBitmap>} rejects with a readable reason when it cannot be had or is not an image
  */
-export async function loadImage(source, { timeoutMs = TIMEOUTS.loadMs } = {}) {
+async function loadImage(source, { timeoutMs = TIMEOUTS.loadMs } = {}) {
   const name = typeof source === 'string' ? source : 'name' in source ? source.name : 'the image';
   let blob = source;
   if (typeof source === 'string') {
@@ -99,6 +100,24 @@ export async function loadImage(source, { timeoutMs = TIMEOUTS.loadMs } = {}) {
   } catch (error) {
     throw new Error(`cannot load ${name} as an image`, { cause: error });
   }
+}
+
+/**
+ * Loads a channel's file by its kind (inputs/media-kind.js: its type, else its name): an image
+ * decoded (loadImage), or a video's or music's bytes, for src/page/inputs/ to decode. A URL as
+ * for loadImage: the page's own server, TIMEOUTS.loadMs.
+ * @param {string | Blob} source a URL, or a File or Blob
+ * @param {LoadOptions} [options]
+ * @returns {Promise<ImageBitmap | import('../app/channels.js').MediaFile>}
+ */
+export async function loadChannel(source, { timeoutMs = TIMEOUTS.loadMs } = {}) {
+  const name = typeof source === 'string' ? source : source instanceof File ? source.name : 'the file';
+  const kind = channelKind(typeof source === 'string' ? { name: source } : { name, type: source.type });
+  if (kind === 'image') return loadImage(source, { timeoutMs });
+  if (typeof source !== 'string') return { kind, blob: source, name };
+  const { response, body } = await fetchOwn(source, { accept: '*/*', timeoutMs }, (r) => r.blob());
+  if (isWebPage(response)) throw new Error(NO_SUCH_FILE);
+  return { kind, blob: body, name };
 }
 
 /** @type {ImageBitmapOptions} */
