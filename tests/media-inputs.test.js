@@ -203,4 +203,51 @@ describe('moving channels: video and music, against what the test computes', () 
       fs.rmSync(folder, { recursive: true, force: true });
     }
   }, 240_000);
+
+  // The webcam and the microphone are the page's (getUserMedia); the test's headless Chromium has
+  // neither device nor permission, so the page says so in one line and leaves the channel empty,
+  // and the command line refuses them in one line before any browser starts.
+  test.each([
+    ['webcam:', 'webcam', /^no webcam: |^this browser gives no webcam/],
+    ['mic:', 'microphone', /^no microphone: |^this browser gives no microphone/],
+  ])(
+    'setChannel(0, %s) without a %s says why in one line, and the channel stays empty',
+    async (source, _, message) => {
+      await withServedDir('test-device', async (dir, base) => {
+        fs.writeFileSync(path.join(dir, 'reader.glsl'), VIDEO_READER);
+        await withPage(async ({ page, goto }) => {
+          await goto(`?shader=/${base}/reader.glsl&size=8x8&time=0`);
+          const outcome = await page.evaluate(
+            (s) =>
+              Promise.race([
+                window.raytracer.setChannel(0, s).then(
+                  () => 'loaded',
+                  (e) => String(e.message),
+                ),
+                new Promise((resolve) => setTimeout(() => resolve('no answer in 10 s'), 10_000)),
+              ]),
+            source,
+          );
+          expect(outcome).toMatch(message);
+          expect(outcome).not.toContain('\n');
+          expect(pixel(await readPixels(page), 4, 4)).toEqual([0, 0, 0]);
+        });
+      });
+    },
+    60_000,
+  );
+
+  test.each(['mic', 'webcam'])('shaderproof render --channel0 %s: one line, exit 2', async (device) => {
+    const folder = fs.mkdtempSync(path.join(os.tmpdir(), 'shaderproof-device-'));
+    try {
+      fs.writeFileSync(path.join(folder, 'a.glsl'), VIDEO_READER);
+      const { code, stderr } = await shaderproof(folder, 'render', 'a.glsl', '--channel0', device, '-o', 'a.png');
+      expect(code).toBe(2);
+      expect(stderr.trim().split('\n')).toHaveLength(1);
+      expect(stderr).toMatch(new RegExp(`--channel0 ${device}: the command line has no (webcam|microphone) \\(the page has\\); give a`));
+      expect(fs.existsSync(path.join(folder, 'a.png'))).toBe(false);
+    } finally {
+      fs.rmSync(folder, { recursive: true, force: true });
+    }
+  });
 });

@@ -115,7 +115,15 @@ export function readViewOptions(values, defaultSize, { fps: defaultFps = DEFAULT
     if (at < 1 || !/^[A-Za-z_]\w*$/.test(name)) throw new UsageError(`--set ${pair}: expected NAME=VALUE, such as --set CONE_HEIGHT=2.5`);
     return [name, pair.slice(at + 1).trim()];
   });
-  const channels = [0, 1, 2, 3].map((i) => values[`channel${i}`] ?? null);
+  const channels = [0, 1, 2, 3].map((i) => {
+    const file = values[`channel${i}`] ?? null;
+    const device = /^(mic|microphone|webcam):?$/i.exec(file ?? '')?.[1].toLowerCase();
+    if (device)
+      throw new UsageError(
+        `--channel${i} ${file}: the command line has no ${device === 'webcam' ? 'webcam' : 'microphone'} (the page has); give a ${device === 'webcam' ? 'video' : 'music'} file instead`,
+      );
+    return file;
+  });
   const date = readDate(values.date);
   const fps = values.fps === undefined ? defaultFps : readNumber(values.fps, '--fps', { min: 1, max: maxFps });
   return { size, time, frame, mouse, controls, channels, date, fps };

@@ -127,11 +127,13 @@ const SHADER_EXTENSIONS = /\.(glsl|frag|fs|fsh|txt|shader)$/i;
 
 /**
  * What a dropped file is: 'shader', 'json' (Shadertoy's JSON export, by its name or type),
- * 'image', or null (neither).
+ * 'image', 'video' or 'music' (a channel's: inputs/media-kind.js), or null (none of them).
  * @param {{name: string, type: string}} file
  */
 export function droppedKind(file) {
   if (file.type.startsWith('image/')) return 'image';
+  const media = channelKind(file);
+  if (media !== 'image') return media;
   if (/\.json$/i.test(file.name) || file.type === 'application/json') return 'json';
   if (SHADER_EXTENSIONS.test(file.name) || file.type.startsWith('text/')) return 'shader';
   return null;
