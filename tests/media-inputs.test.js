@@ -16,6 +16,7 @@ import { PNG } from 'pngjs';
 import { describe, expect, test } from 'vitest';
 import { REPO_ROOT } from './harness/config.js';
 import { readPng } from './harness/images.js';
+import { spectrumTexture } from '../src/page/inputs/spectrum.js';
 import { pixel, readPixels, withPage, withServedDir } from './page-helpers.js';
 
 const BIN = path.join(REPO_ROOT, 'bin', 'shaderproof.js');
@@ -150,6 +151,10 @@ describe('moving channels: video and music, against what the test computes', () 
             await page.evaluate((s) => window.raytracer.setTime(s), t);
             checkMusic(await readPixels(page), samples, t, `page, iTime ${t}`);
           }
+          // playing (heard where the browser lets it start), then paused: frames go on, nothing fails
+          await goto(`?shader=/${base}/music-reader.glsl&size=512x2&iChannel0=/${base}/tone.wav`);
+          for (let i = 0; i < 3; i++) await page.evaluate(() => window.raytracer.nextFrame());
+          await page.evaluate(() => window.raytracer.pause());
           expect(errors).toEqual([]);
         });
         fs.copyFileSync(path.join(dir, 'tone.wav'), path.join(folder, 'tone.wav'));
@@ -249,5 +254,15 @@ describe('moving channels: video and music, against what the test computes', () 
     } finally {
       fs.rmSync(folder, { recursive: true, force: true });
     }
+  });
+
+  test('a music frame is a function of its iTime: drawn after frames 0..N-1 or alone, the same bytes', () => {
+    const samples = toneSamples();
+    const at = (i) => samples[i % samples.length] / 32768;
+    const step = RATE / 30; // a recording at 30 fps
+    const blocks = new Map();
+    let inTurn = spectrumTexture(at, 0, step, blocks);
+    for (let i = 0; i <= 60; i++) inTurn = spectrumTexture(at, i * step, step, blocks);
+    expect(Array.from(inTurn)).toEqual(Array.from(spectrumTexture(at, 60 * step, step)));
   });
 });

@@ -24,6 +24,8 @@ export class AudioFile {
       const data = buffer.getChannelData(c);
       for (let i = 0; i < data.length; i++) this.mono[i] += data[i] / buffer.numberOfChannels;
     }
+    /** The analyser's blocks already computed, by end sample (spectrumTexture). @type {Map<number, Float64Array>} */
+    this._blocks = new Map();
     /** @type {AudioContext | null} the page's playback, once it plays */
     this._context = null;
     /** @type {{node: AudioBufferSourceNode, startedAt: number, offset: number} | null} */
@@ -58,7 +60,7 @@ export class AudioFile {
     const mono = this.mono;
     // a still frame (no schedule: iTimeDelta 0) is smoothed as if frames came at 60 a second
     const step = (delta > 0 ? delta : 1 / 60) * DECODE_RATE;
-    const bytes = spectrumTexture((i) => mono[i % length], time * DECODE_RATE, step);
+    const bytes = spectrumTexture((i) => mono[i % length], time * DECODE_RATE, step, this._blocks);
     return { kind: /** @type {const} */ ('audio'), bytes, width: 512, height: 2, time: length ? time % this.duration : 0 };
   }
 

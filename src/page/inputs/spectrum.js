@@ -91,15 +91,22 @@ function fft(re, im) {
  * @param {(i: number) => number} sampleAt the mono signal at sample i ≥ 0
  * @param {number} end
  * @param {number} step
+ * @param {Map<number, Float64Array>} [blocks] the blocks' magnitudes by end sample, kept between
+ *   calls on one signal: frames a whole step apart (a recording) compute one new block each
  * @returns {Uint8Array} row 0 the spectrum, row 1 the waveform
  */
-export function spectrumTexture(sampleAt, end, step) {
+export function spectrumTexture(sampleAt, end, step, blocks = new Map()) {
   const smoothed = new Float64Array(TEXTURE_WIDTH);
   let weight = 1 - SMOOTHING;
   for (let j = 0; j < SMOOTHING_FRAMES; j++, weight *= SMOOTHING) {
     const at = Math.round(end - j * step);
     if (at <= 0) break; // before the first sample: silence, |X| = 0
-    const block = magnitudes(sampleAt, at);
+    let block = blocks.get(at);
+    if (!block) {
+      block = magnitudes(sampleAt, at);
+      blocks.set(at, block);
+      if (blocks.size > 2 * SMOOTHING_FRAMES) blocks.delete(blocks.keys().next().value ?? at); // the oldest
+    }
     for (let k = 0; k < TEXTURE_WIDTH; k++) smoothed[k] += weight * block[k];
   }
   const bytes = new Uint8Array(TEXTURE_WIDTH * 2);
