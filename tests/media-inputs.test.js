@@ -16,6 +16,7 @@ import { PNG } from 'pngjs';
 import { describe, expect, test } from 'vitest';
 import { REPO_ROOT } from './harness/config.js';
 import { readPng } from './harness/images.js';
+import { CHROME_ARGS, launchBrowser } from '../src/engine/browser.js';
 import { spectrumTexture } from '../src/page/inputs/spectrum.js';
 import { pixel, readPixels, withPage, withServedDir } from './page-helpers.js';
 
@@ -265,4 +266,59 @@ describe('moving channels: video and music, against what the test computes', () 
     for (let i = 0; i <= 60; i++) inTurn = spectrumTexture(at, i * step, step, blocks);
     expect(Array.from(inTurn)).toEqual(Array.from(spectrumTexture(at, 60 * step, step)));
   });
+
+  // With Chromium's fake camera and microphone (a moving picture, a beeping tone), the
+  // devices reach the shader as the site gives them: the camera's picture at its own size, the
+  // microphone's 512 × 2 texture.
+  test('the webcam and the microphone of a fake device reach iChannel0 at their sizes', async () => {
+    await withServedDir('test-fake-device', async (dir, base) => {
+      fs.writeFileSync(
+        path.join(dir, 'size.glsl'),
+        'void mainImage(out vec4 c, in vec2 p) { c = vec4(iChannelResolution[0].xy / 2048.0, texture(iChannel0, vec2(0.5)).g, 1.0); }\n',
+      );
+      await withPage(async ({ context }) => {
+        const browser = await launchBrowser({
+          args: [...CHROME_ARGS, '--use-fake-device-for-media-stream', '--use-fake-ui-for-media-stream'],
+        });
+        try {
+          const page = await browser.newPage();
+          await page.goto(`${context.baseUrl}/?shader=/${base}/size.glsl&size=8x8&time=0`, { waitUntil: 'load' });
+          await page.waitForFunction(() => window.raytracer || document.documentElement.dataset.error, { polling: 50, timeout: 20_000 });
+          expect(
+            await page.evaluate(() =>
+              window.raytracer.ready.then(
+                () => 'ok',
+                (e) => String(e?.message ?? e),
+              ),
+            ),
+          ).toBe('ok');
+          // the page asks for 1280 × 720 (ideal), which the fake camera gives
+          /** @type {Array<[string, number, number]>} */
+          const devices = [
+            ['webcam:', 1280, 720],
+            ['mic:', 512, 2],
+          ];
+          for (const [source, width, height] of devices) {
+            const outcome = await page.evaluate(
+              (s) =>
+                window.raytracer.setChannel(0, s).then(
+                  () => 'ok',
+                  (e) => e.message,
+                ),
+              source,
+            );
+            expect(outcome, source).toBe('ok');
+            const r = await page.evaluate(() => window.raytracer.readPixels());
+            const [red, green] = Buffer.from(r.data, 'base64');
+            expect([red, green], `${source}: iChannelResolution.xy / 2048`).toEqual([
+              Math.round((width / 2048) * 255),
+              Math.round((height / 2048) * 255),
+            ]);
+          }
+        } finally {
+          await browser.close();
+        }
+      });
+    });
+  }, 90_000);
 });

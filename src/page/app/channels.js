@@ -57,7 +57,7 @@ export class Channels {
     this.images[index] = image;
     this.media[index] = media;
     this._mediaSizes[index] = [0, 0];
-    this.urls[index] = typeof source === 'string' ? source : null;
+    this.urls[index] = typeof source === 'string' && !device ? source : null; // a link cannot carry a device
     await this._send(index);
   }
 

@@ -10,6 +10,8 @@ export class Webcam {
   constructor(video, stream) {
     this.video = video;
     this.stream = stream;
+    /** The pictures of the last two frames: the frame before may still be drawn again (a capture). @type {ImageBitmap[]} */
+    this._recent = [];
   }
 
   static async open() {
@@ -25,6 +27,8 @@ export class Webcam {
   /** The camera's picture now. @param {boolean} vflip */
   async frameAt(vflip) {
     const image = await createImageBitmap(this.video, { imageOrientation: vflip ? 'flipY' : 'from-image', premultiplyAlpha: 'none' });
+    this._recent.push(image);
+    if (this._recent.length > 2) this._recent.shift()?.close(); // a camera picture a frame, not kept for ever
     return { kind: /** @type {const} */ ('video'), image, width: image.width, height: image.height, time: 0 };
   }
 
