@@ -71,10 +71,15 @@ export class Channels {
    * @param {FrameInputs} frame
    * @param {boolean | null} running the live page's clock plays at 1× (music is heard), null for
    *   a frame drawn apart from it (a recording, a capture)
-   * @returns {Promise<FrameInputs>}
+   * @returns {FrameInputs | Promise<FrameInputs>} the same inputs at once when no channel moves
    */
-  async withMedia(frame, running) {
+  withMedia(frame, running) {
     if (!this.media.some(Boolean)) return frame;
+    return this._withMedia(frame, running);
+  }
+
+  /** @param {FrameInputs} frame @param {boolean | null} running @returns {Promise<FrameInputs>} */
+  async _withMedia(frame, running) {
     const media = await Promise.all(
       this.media.map(async (input, i) => {
         if (!input) return null;

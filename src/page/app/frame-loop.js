@@ -26,8 +26,8 @@ import { fitGpu } from './canvas-size.js';
  * @property {import('./canvas-size.js').CanvasSize} canvasSize the drawing buffer's size
  * @property {import('../../shadertoy/keyboard.js').KeyboardState} keyboard Shadertoy's keyboard texture
  * @property {() => boolean} readsKeyboard whether some pass reads the keyboard (RaytracerApp.readsKeyboard)
- * @property {(frame: FrameInputs, running: boolean | null) => Promise<FrameInputs>} withMedia a frame's
- *   inputs with its moving channels' textures at its iTime (Channels.withMedia)
+ * @property {(frame: FrameInputs, running: boolean | null) => FrameInputs | Promise<FrameInputs>} withMedia a
+ *   frame's inputs with its moving channels' textures at its iTime (Channels.withMedia)
  * @property {() => boolean} isMultipass whether the shader has a Common tab or a buffer
  * @property {() => boolean} hasProgram whether a shader runs (CompileJob.hasProgram)
  * @property {(serial: number) => ShaderVersion | null} versionOf the shader a frame was drawn with (CompileJob.versionOf)
@@ -151,12 +151,15 @@ export class FrameLoop {
     // the keyboard texture goes to the worker (and is uploaded) only for a shader that reads it
     const keyboard = host.readsKeyboard() ? host.keyboard.data.slice() : null;
     this.progress = { y: 0, height, bands: 0 };
-    // a moving channel's texture at this frame's iTime first (Channels.withMedia), inside the
-    // drawing this loop waits on, so that no other frame starts meanwhile
-    const drawing = host.withMedia(timed, playing && speed === 1).then((withMedia) => {
+    const send = (/** @type {FrameInputs} */ withMedia) => {
       frame = withMedia;
       return host.gpu.ask('frame', { inputs: keyboard ? { ...frame, keyboard } : frame, readBack });
-    });
+    };
+    // a moving channel's texture at this frame's iTime first (Channels.withMedia), inside the
+    // drawing this loop waits on, so that no other frame starts meanwhile; without one, the frame
+    // is asked for at once, as before there were moving channels
+    const withMedia = host.withMedia(timed, playing && speed === 1);
+    const drawing = withMedia instanceof Promise ? withMedia.then(send) : send(withMedia);
     this._drawing = drawing;
     let drawn;
     try {
