@@ -186,14 +186,14 @@ describe('dropping files on the page', () => {
         await page.waitForFunction(() => document.querySelector('.lil-gui').textContent.includes('iChannel1… (3×5)'));
         expect(pixel(await readPixels(page), 20, 45)).toEqual([20, 60, 240]);
         expect(pixel(await readPixels(page), 120, 45)).toEqual([0, 0, 0]);
-        // Controls → Channels → "Load image into iChannel2…" opens a file chooser
+        // Controls → Channels → "Load file into iChannel2…" opens a file chooser
         await page.evaluate(() =>
           [.../** @type {NodeListOf<HTMLElement>} */ (document.querySelectorAll('.lil-gui .lil-title'))]
             .find((t) => t.textContent.trim() === 'Channels')
             .click(),
         );
         await new Promise((r) => setTimeout(r, 600)); // the folder's opening animation
-        const [chooser] = await Promise.all([page.waitForFileChooser(), (await button(page, 'Load image into iChannel2…')).click()]);
+        const [chooser] = await Promise.all([page.waitForFileChooser(), (await button(page, 'Load file into iChannel2…')).click()]);
         await chooser.accept([local]);
         await page.waitForFunction(() => document.querySelector('.lil-gui').textContent.includes('iChannel2… (2×2)'));
         expect(pixel(await readPixels(page), 120, 45)).toEqual([30, 220, 90]);

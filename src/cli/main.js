@@ -36,7 +36,9 @@ const VIEW_HELP = `  --size WxH            canvas size in pixels (default 640x36
   --frame N             draw frames 0..N (iTime = i/60, iFrame = i) and keep frame N
   --mouse x,y[,z,w]     iMouse in pixels, Shadertoy's signs
   --set NAME=VALUE      a control of the shader (repeatable), as the page's panel has it
-  --channel0..3 IMAGE   an image file for iChannel0..3
+  --channel0..3 FILE    an image, video or music file for iChannel0..3, by its type (a video's
+                        frame and a music's spectrum are those at the frame's iTime; the
+                        webcam and microphone are the page's only)
   --date ISO|now        iDate at iTime 0 (default 2024-01-15T12:00:00Z, so that a clock draws
                         the same on every run; "now" for the real date)`;
 
@@ -88,7 +90,7 @@ iFrame = i, whatever a frame costs to draw.
   --size WxH            the frames' size in pixels (default 640x360)
   --mouse x,y[,z,w]     iMouse in pixels
   --set NAME=VALUE      a control of the shader (repeatable)
-  --channel0..3 IMAGE   an image file for iChannel0..3
+  --channel0..3 FILE    an image, video or music file for iChannel0..3, by its type
   --date ISO|now        iDate at iTime 0 (default 2024-01-15T12:00:00Z; "now": the real date)
   -o, --output FILE     OUT.webm (VP9 or VP8) or OUT.zip (frame-0000.png, ...) (required)
   --strict              a shader that went without an input or a pass is an error

@@ -84,7 +84,7 @@ export function readNumber(text, flag, { min = -Infinity, max = Infinity, whole 
  * @property {number | null} frame iFrame to draw (frames 0 … N drawn in turn), or null
  * @property {number[] | null} mouse
  * @property {[string, string][]} controls NAME, VALUE as given
- * @property {(string | null)[]} channels image files for iChannel0..3
+ * @property {(string | null)[]} channels image, video or music files for iChannel0..3 (the page tells them apart)
  * @property {number | null} date iDate at iTime 0, ms since 1970 (null: the real date)
  * @property {number} fps the frame schedule: iTimeDelta = 1 / fps, iFrameRate = fps, frame N at N / fps
  */
@@ -114,7 +114,15 @@ export function readViewOptions(values, defaultSize, { fps: defaultFps = DEFAULT
     if (at < 1 || !/^[A-Za-z_]\w*$/.test(name)) throw new UsageError(`--set ${pair}: expected NAME=VALUE, such as --set CONE_HEIGHT=2.5`);
     return [name, pair.slice(at + 1).trim()];
   });
-  const channels = [0, 1, 2, 3].map((i) => values[`channel${i}`] ?? null);
+  const channels = [0, 1, 2, 3].map((i) => {
+    const file = values[`channel${i}`] ?? null;
+    const device = /^(mic|microphone|webcam):?$/i.exec(file ?? '')?.[1].toLowerCase();
+    if (device)
+      throw new UsageError(
+        `--channel${i} ${file}: the command line has no ${device === 'webcam' ? 'webcam' : 'microphone'} (the page has); give a ${device === 'webcam' ? 'video' : 'music'} file instead`,
+      );
+    return file;
+  });
   const date = readDate(values.date);
   const fps = values.fps === undefined ? defaultFps : readNumber(values.fps, '--fps', { min: MIN_FPS, max: maxFps });
   return { size, time, frame, mouse, controls, channels, date, fps };

@@ -11,7 +11,7 @@ import { installAutomation, installFailedAutomation } from './automation.js';
 import { Overlay } from './ui/overlay.js';
 import { showAppOnPage, showLoadNotes, showStartupFailure } from './ui/notices.js';
 import { parseUrlParams } from '../shared/url-params.js';
-import { loadImage, shaderName } from './io/shader-loader.js';
+import { loadChannel, shaderName } from './io/shader-loader.js';
 import { HangGuard, watchHangs } from './io/hang-guard.js';
 import { missingLines } from './io/project-files.js';
 import { Recorder } from './io/recorder.js';
@@ -36,7 +36,7 @@ async function start() {
   try {
     app = await RaytracerApp.start({
       canvas,
-      loadImage,
+      loadChannel,
       fileName: params.shader ? shaderName(params.shader) : BUILTIN_NAME,
       size: params.size ?? null,
       scale: params.scale ?? 1,

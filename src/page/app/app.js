@@ -54,14 +54,14 @@ export class RaytracerApp extends Emitter {
    * @param {object} options
    * @param {RenderClient} options.gpu a started render worker's client
    * @param {HTMLCanvasElement} options.canvas
-   * @param {import('./channels.js').ImageLoader} options.loadImage the channels' images fetched and decoded (io/shader-loader.js)
+   * @param {import('./channels.js').ChannelLoader} options.loadChannel the channels' files fetched, images decoded (io/shader-loader.js)
    * @param {string} options.fileName the shader's name in error messages
    * @param {{width:number, height:number} | null} [options.size] fixed drawing-buffer size (device px)
    * @param {number} [options.scale] resolution scale of the device pixels (without a fixed size)
    * @param {number} [options.cap] cap on the drawing buffer's longer side (device px; 0: none)
    * @param {boolean} [options.playing]
    */
-  constructor({ gpu, canvas, loadImage, fileName, size = null, scale = 1, cap = 0, playing = true }) {
+  constructor({ gpu, canvas, loadChannel, fileName, size = null, scale = 1, cap = 0, playing = true }) {
     super();
     this.canvas = canvas;
     /** The shader's name in messages and downloads. */
@@ -76,7 +76,7 @@ export class RaytracerApp extends Emitter {
     /** The drawing buffer's size: fixed, or the layout's with scale and cap. */
     this.canvasSize = new CanvasSize(canvas, { maxSide: () => this.gpu.maxSize, fixed: size, scale, cap });
     /** The images in iChannel0..3. */
-    this.channels = new Channels(gpu, loadImage);
+    this.channels = new Channels(gpu, loadChannel);
     /** Shadertoy's keyboard texture, for the passes that read it (the page's keys: ui/keys.js). */
     this.keyboard = new KeyboardState();
 
@@ -111,6 +111,7 @@ export class RaytracerApp extends Emitter {
       canvasSize: this.canvasSize,
       keyboard: this.keyboard,
       readsKeyboard: () => this.readsKeyboard,
+      withMedia: (frame, running) => this.channels.withMedia(frame, running),
       isMultipass: () => this.isMultipass,
       hasProgram: () => this.compiles.hasProgram,
       versionOf: (serial) => this.compiles.versionOf(serial),
@@ -313,6 +314,7 @@ export class RaytracerApp extends Emitter {
 
   pause() {
     this.inputs.pause();
+    this.channels.silence();
     this.emit('state');
   }
 

@@ -26,6 +26,8 @@ import { fitGpu } from './canvas-size.js';
  * @property {import('./canvas-size.js').CanvasSize} canvasSize the drawing buffer's size
  * @property {import('../../shadertoy/keyboard.js').KeyboardState} keyboard Shadertoy's keyboard texture
  * @property {() => boolean} readsKeyboard whether some pass reads the keyboard (RaytracerApp.readsKeyboard)
+ * @property {(frame: FrameInputs, running: boolean | null) => FrameInputs | Promise<FrameInputs>} withMedia a
+ *   frame's inputs with its moving channels' textures at its iTime (Channels.withMedia)
  * @property {() => boolean} isMultipass whether the shader has a Common tab or a buffer
  * @property {() => boolean} hasProgram whether a shader runs (CompileJob.hasProgram)
  * @property {(serial: number) => ShaderVersion | null} versionOf the shader a frame was drawn with (CompileJob.versionOf)
@@ -142,11 +144,22 @@ export class FrameLoop {
     this._dirty = false;
     const continued = this.running && this._lastDrawnAt !== null;
     const run = host.inputs.run;
-    const frame = host.inputs.beginFrame(width, height, now);
+    const timed = host.inputs.beginFrame(width, height, now);
+    const { playing, speed } = host.inputs;
+    /** @type {FrameInputs} */
+    let frame = timed;
     // the keyboard texture goes to the worker (and is uploaded) only for a shader that reads it
-    const inputs = host.readsKeyboard() ? { ...frame, keyboard: host.keyboard.data.slice() } : frame;
+    const keyboard = host.readsKeyboard() ? host.keyboard.data.slice() : null;
     this.progress = { y: 0, height, bands: 0 };
-    const drawing = host.gpu.ask('frame', { inputs, readBack });
+    const send = (/** @type {FrameInputs} */ withMedia) => {
+      frame = withMedia;
+      return host.gpu.ask('frame', { inputs: keyboard ? { ...frame, keyboard } : frame, readBack });
+    };
+    // a moving channel's texture at this frame's iTime first (Channels.withMedia), inside the
+    // drawing this loop waits on, so that no other frame starts meanwhile; without one, the frame
+    // is asked for at once, as before there were moving channels
+    const withMedia = host.withMedia(timed, playing && speed === 1);
+    const drawing = withMedia instanceof Promise ? withMedia.then(send) : send(withMedia);
     this._drawing = drawing;
     let drawn;
     try {
@@ -179,7 +192,7 @@ export class FrameLoop {
     const interval = continued ? drawnAt - /** @type {number} */ (this._lastDrawnAt) : null;
     this._lastDrawnAt = this.running ? drawnAt : null;
     /** @type {DrawnEvent} */
-    const result = { pixels: drawn.pixels, width, height, frame: inputs.frame, interval, gpuTimes: drawn.gpuTimes };
+    const result = { pixels: drawn.pixels, width, height, frame: frame.frame, interval, gpuTimes: drawn.gpuTimes };
     host.emitDrawn(result);
     this.stillFrames++;
     if (this.running || this._dirty) this._schedule();

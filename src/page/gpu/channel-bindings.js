@@ -20,6 +20,7 @@ export function ownChannelUniforms(black) {
     iChannel2: { value: black },
     iChannel3: { value: black },
     iChannelResolution: { value: new Array(12).fill(0) },
+    iChannelTime: { value: [0, 0, 0, 0] },
   };
 }
 
@@ -33,15 +34,18 @@ export function ownChannelUniforms(black) {
 export function bindChannels(step, width, height, { buffers, keyboard, channels, black }) {
   const uniforms = step.material.uniforms;
   const resolution = uniforms.iChannelResolution.value;
+  const times = uniforms.iChannelTime.value;
   for (const binding of step.bindings) {
     const i = binding.channel;
     let texture = null;
+    times[i] = 0;
     let size = binding.resolution === 'canvas' ? [width, height, 1] : binding.resolution;
     if (binding.source === 'buffer') texture = buffers.read(/** @type {string} */ (binding.buffer));
     else if (binding.source === 'keyboard') texture = keyboard;
     else if (binding.source === 'none' && step.target === 'screen' && channels[i]) {
-      texture = channels[i]; // an image the page put into this channel
+      texture = channels[i]; // an image the page put into this channel, or a moving one's frame
       size = [texture.image.width, texture.image.height, 1];
+      times[i] = texture.userData.time ?? 0; // a video's or music's iChannelTime (media-input.js)
     } else if (binding.samplerType === '2D') texture = black;
     // else null: three.js binds an empty cube or 3D texture for a samplerCube / sampler3D
     uniforms[`iChannel${i}`].value = texture;
@@ -68,6 +72,57 @@ export function imageTexture(image) {
   texture.colorSpace = THREE.NoColorSpace;
   texture.needsUpdate = true;
   return texture;
+}
+
+/**
+ * The site's music and microphone texture (effect.js: CreateTexture 512 × 2, TEXFMT.C1I8, linear,
+ * clamped; no mipmaps, no repeat and no flip offered for them, GetAcceptsMipmapping,
+ * GetAcceptsWrapRepeat, GetAcceptsVFlip): R8, so .r is the byte / 255, .gba (0, 0, 1).
+ */
+function audioTexture() {
+  const texture = new THREE.DataTexture(new Uint8Array(512 * 2), 512, 2, THREE.RedFormat, THREE.UnsignedByteType);
+  texture.minFilter = THREE.LinearFilter;
+  texture.magFilter = THREE.LinearFilter;
+  texture.wrapS = THREE.ClampToEdgeWrapping;
+  texture.wrapT = THREE.ClampToEdgeWrapping;
+  texture.generateMipmaps = false;
+  texture.unpackAlignment = 1;
+  texture.colorSpace = THREE.NoColorSpace;
+  texture.needsUpdate = true;
+  return texture;
+}
+
+/**
+ * The moving channels' textures for the frame about to be drawn (FrameInputs.media), into the
+ * renderer's channel textures: a video's or the webcam's picture uploaded again (mipmapped and
+ * repeating, as an image: imageTexture; its rows flipped by the page), the music's or
+ * microphone's 512 × 2 bytes (audioTexture), and each one's iChannelTime, kept on the texture for
+ * the passes that read it (bindChannels).
+ * @param {Array<THREE.Texture | null>} channels the renderer's channel textures, changed here
+ * @param {Record<string, {value: any}>} uniforms the shared uniforms
+ * @param {Array<import('./protocol.js').MediaFrame | null>} media
+ */
+export function setMedia(channels, uniforms, media) {
+  media.forEach((frame, index) => {
+    if (!frame) return;
+    let texture = channels[index];
+    if (!texture || texture.userData.media !== frame.kind) {
+      texture?.dispose();
+      texture = frame.kind === 'audio' ? audioTexture() : imageTexture(frame.image);
+      texture.userData.media = frame.kind;
+      channels[index] = texture;
+      uniforms[`iChannel${index}`].value = texture;
+    }
+    if (frame.kind === 'audio') texture.image.data.set(frame.bytes);
+    else if (texture.image !== frame.image) {
+      const old = texture.image;
+      texture.image = frame.image;
+      old?.close?.(); // this thread's copy of an earlier frame, uploaded already
+    }
+    texture.needsUpdate = true;
+    texture.userData.time = frame.time;
+    uniforms.iChannelResolution.value.splice(index * 3, 3, frame.width, frame.height, 1);
+  });
 }
 
 /** The sampler objects of the pass being drawn, bound around its draws. */

@@ -28,6 +28,16 @@ import { ShaderCompileError, WebGL2UnavailableError } from './errors.js';
  * @property {number[]} mouse iMouse: [x, y, z, w]
  * @property {number[]} date iDate: [year, month (0-based), day, seconds since midnight]
  * @property {Uint8Array} [keyboard] Shadertoy's keyboard texture (keyboard.js), for the passes that read it
+ * @property {Array<MediaFrame | null>} [media] the moving channels' textures for this frame, by
+ *   channel (null: not a moving one): src/page/inputs/media-input.js
+ */
+
+/**
+ * A moving channel's texture for one frame: a picture (video, webcam: RGBA, rows as uploaded) or
+ * 512 × 2 bytes (music, microphone: the spectrum on row 0, the waveform on row 1), its size, and
+ * its iChannelTime.
+ * @typedef {{kind: 'video', image: ImageBitmap, width: number, height: number, time: number}
+ *   | {kind: 'audio', bytes: Uint8Array, width: number, height: number, time: number}} MediaFrame
  */
 
 /**

@@ -42,6 +42,7 @@ const PRESENT_EVERY_MS = 250;
  *   only the last, the Image pass, over the buffers as they are)
  * @property {number} y rows of it done
  * @property {boolean} redo something changed while a band was being drawn: it starts again
+ * @property {boolean} [mediaSet] its moving channels' textures are in (FrameInputs.media)
  * @property {boolean} [allPasses] a capture that draws every pass (a recorded frame)
  * @property {boolean} [float] a capture read as RGBA32F
  * @property {'aa-pixels'} [program] a capture of the path probe's mainImage instead of the Image pass
@@ -137,6 +138,10 @@ function pump() {
   const step = steps[job.step];
   const first = job.step === 0 && job.y === 0;
   const last = job.step === steps.length - 1;
+  if (job.inputs.media && !job.mediaSet) {
+    renderer().setMedia(job.inputs.media);
+    job.mediaSet = true;
+  }
   if (first && job.kind === 'frame') {
     renderer().gpuTimer.begin();
     if (job.inputs.keyboard) renderer().setKeyboard(job.inputs.keyboard);

@@ -18,7 +18,7 @@ import { blackTexture, shadertoyUniforms } from './uniforms.js';
 import { PassBuffers } from './pass-buffers.js';
 import { WebGL2UnavailableError } from './errors.js';
 import { PassCompiler, VERTEX_SHADER } from './pass-compiler.js';
-import { ChannelSamplers, bindChannels, imageTexture, ownChannelUniforms } from './channel-bindings.js';
+import { ChannelSamplers, bindChannels, imageTexture, ownChannelUniforms, setMedia } from './channel-bindings.js';
 import { PixelProbe } from './probe.js';
 import { sendVerbatimSources } from './verbatim-source.js';
 import { TILE_OFFSET_UNIFORM } from '../../shadertoy/header.js';
@@ -270,6 +270,14 @@ export class ShaderRenderer {
     this.uniforms[`iChannel${index}`].value = texture ?? this._black;
     const resolution = this.uniforms.iChannelResolution.value;
     resolution.splice(index * 3, 3, image?.width ?? 0, image?.height ?? 0, image ? 1 : 0);
+  }
+
+  /**
+   * The moving channels' textures for the frame about to be drawn (channel-bindings.js setMedia).
+   * @param {Array<import('./protocol.js').MediaFrame | null>} media
+   */
+  setMedia(media) {
+    setMedia(this._channels, this.uniforms, media);
   }
 
   /**

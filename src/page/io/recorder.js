@@ -293,7 +293,10 @@ export class Recorder {
   async _draw(inputs, { width, height }, allPasses) {
     this._check();
     if (this.app.gpu.contextLost) throw new Error('the GPU context was lost while recording');
-    return this.app.gpu.ask('capture', { inputs, width, height, allPasses });
+    // a moving channel's texture at the frame's iTime: a video's frame for it, not the last one ready
+    const withMedia = await this.app.channels.withMedia(inputs, null);
+    this._check();
+    return this.app.gpu.ask('capture', { inputs: withMedia, width, height, allPasses });
   }
 }
 

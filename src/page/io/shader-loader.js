@@ -5,6 +5,7 @@
 // message rather than waiting for ever.
 
 import { TIMEOUTS } from '../../shared/timeouts.js';
+import { channelKind } from '../inputs/media-kind.js';
 
 /** The name a shader goes by in messages and downloads: its URL's last path segment. */
 export function shaderName(url) {
@@ -86,7 +87,7 @@ export async function fetchShader(url, { timeoutMs = TIMEOUTS.loadMs } = {}) {
  * @param {LoadOptions} [options]
  * @returns {Promise<ImageBitmap>} rejects with a readable reason when it cannot be had or is not an image
  */
-export async function loadImage(source, { timeoutMs = TIMEOUTS.loadMs } = {}) {
+async function loadImage(source, { timeoutMs = TIMEOUTS.loadMs } = {}) {
   const name = typeof source === 'string' ? source : 'name' in source ? source.name : 'the image';
   let blob = source;
   if (typeof source === 'string') {
@@ -101,6 +102,24 @@ export async function loadImage(source, { timeoutMs = TIMEOUTS.loadMs } = {}) {
   }
 }
 
+/**
+ * Loads a channel's file by its kind (inputs/media-kind.js: its type, else its name): an image
+ * decoded (loadImage), or a video's or music's bytes, for src/page/inputs/ to decode. A URL as
+ * for loadImage: the page's own server, TIMEOUTS.loadMs.
+ * @param {string | Blob} source a URL, or a File or Blob
+ * @param {LoadOptions} [options]
+ * @returns {Promise<ImageBitmap | import('../app/channels.js').MediaFile>}
+ */
+export async function loadChannel(source, { timeoutMs = TIMEOUTS.loadMs } = {}) {
+  const name = typeof source === 'string' ? source : source instanceof File ? source.name : 'the file';
+  const kind = channelKind(typeof source === 'string' ? { name: source } : { name, type: source.type });
+  if (kind === 'image') return loadImage(source, { timeoutMs });
+  if (typeof source !== 'string') return { kind, blob: source, name };
+  const { response, body } = await fetchOwn(source, { accept: '*/*', timeoutMs }, (r) => r.blob());
+  if (isWebPage(response)) throw new Error(NO_SUCH_FILE);
+  return { kind, blob: body, name };
+}
+
 /** @type {ImageBitmapOptions} */
 const IMAGE_DECODING = { imageOrientation: 'flipY', colorSpaceConversion: 'none', premultiplyAlpha: 'none' };
 
@@ -108,11 +127,13 @@ const SHADER_EXTENSIONS = /\.(glsl|frag|fs|fsh|txt|shader)$/i;
 
 /**
  * What a dropped file is: 'shader', 'json' (Shadertoy's JSON export, by its name or type),
- * 'image', or null (neither).
+ * 'image', 'video' or 'music' (a channel's: inputs/media-kind.js), or null (none of them).
  * @param {{name: string, type: string}} file
  */
 export function droppedKind(file) {
   if (file.type.startsWith('image/')) return 'image';
+  const media = channelKind(file);
+  if (media !== 'image') return media;
   if (/\.json$/i.test(file.name) || file.type === 'application/json') return 'json';
   if (SHADER_EXTENSIONS.test(file.name) || file.type.startsWith('text/')) return 'shader';
   return null;

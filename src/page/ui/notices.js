@@ -15,6 +15,18 @@ import { extraSamplesViewNote } from '../../raytracer/extra-samples.js';
 /** @typedef {import('./overlay.js').Overlay} Overlay */
 /** @typedef {{title: string, detail: string, actions?: Array<{label: string, run: () => void}>}} Notice */
 
+/**
+ * The toast after a channel got what was chosen for it.
+ * @param {number} index
+ * @param {string | File | null} source a file, 'webcam:' or 'mic:', or null (emptied)
+ */
+export function channelLoaded(index, source) {
+  if (source === null) return `Emptied iChannel${index}`;
+  if (source === 'webcam:') return `The webcam is in iChannel${index}`;
+  if (source === 'mic:') return `The microphone is in iChannel${index}`;
+  return `Loaded ${typeof source === 'string' ? source : source.name} into iChannel${index}`;
+}
+
 // ---- notes on the canvas ---------------------------------------------------------------------
 
 const NOTE_ID = 'load-notes';

@@ -72,7 +72,7 @@ export class Panel {
    * @param {(scale: number) => void} options.onScale
    * @param {(cap: number) => void} options.onCap
    * @param {(name: string, value: unknown) => void} options.onControl
-   * @param {(index: number, file: File|null) => void} options.onChannel
+   * @param {(index: number, source: File | 'webcam:' | 'mic:' | null) => void} options.onChannel
    * @param {(on: boolean) => void} [options.onConverge] "Converge when still" switched
    */
   constructor({ scale, cap, sizeFixed, onScale, onCap, onControl, onChannel, onConverge = () => {} }) {
@@ -96,8 +96,8 @@ export class Panel {
     this._converge = view.add(this._state, 'converge').name('Converge when still').onChange(onConverge);
 
     // one hidden file input serves the four channels
-    this._file = Object.assign(document.createElement('input'), { type: 'file', accept: 'image/*', hidden: true });
-    this._file.setAttribute('aria-label', 'Image file for a channel');
+    this._file = Object.assign(document.createElement('input'), { type: 'file', accept: 'image/*,video/*,audio/*', hidden: true });
+    this._file.setAttribute('aria-label', 'Image, video or music file for a channel');
     document.body.append(this._file);
     this._file.addEventListener('change', () => {
       const file = this._file.files?.[0];
@@ -112,9 +112,13 @@ export class Panel {
           this._fileChannel = i;
           this._file.click();
         },
+        webcam: () => onChannel(i, 'webcam:'),
+        mic: () => onChannel(i, 'mic:'),
         clear: () => onChannel(i, null),
       };
-      this._channelNames.push(channels.add(actions, 'load').name(`Load image into iChannel${i}…`));
+      this._channelNames.push(channels.add(actions, 'load').name(`Load file into iChannel${i}…`));
+      channels.add(actions, 'webcam').name(`Webcam into iChannel${i}`);
+      channels.add(actions, 'mic').name(`Microphone into iChannel${i}`);
       channels.add(actions, 'clear').name(`Clear iChannel${i}`);
     }
 
@@ -132,7 +136,7 @@ export class Panel {
 
   /** Shows each channel's image size next to its button. */
   setChannelSizes(sizes) {
-    sizes.forEach(([w, h], i) => this._channelNames[i].name(`Load image into iChannel${i}…${w ? ` (${w}×${h})` : ''}`));
+    sizes.forEach(([w, h], i) => this._channelNames[i].name(`Load file into iChannel${i}…${w ? ` (${w}×${h})` : ''}`));
   }
 
   /** (Re)builds the shader-control widgets; none (and no folder) for a shader without controls. */

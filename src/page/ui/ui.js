@@ -9,7 +9,7 @@ import { Toolbar } from './toolbar.js';
 import { installRecordDialog } from './record-dialog.js';
 import { installShortcuts, watchKeyboard } from './keys.js';
 import { pageActions } from './actions.js';
-import { installViewNote, showLoadNotes } from './notices.js';
+import { channelLoaded, installViewNote, showLoadNotes } from './notices.js';
 import { KeptWork } from '../kept-work.js';
 import { droppedKind } from '../io/shader-loader.js';
 import { shareLink } from '../io/share-link.js';
@@ -99,7 +99,7 @@ export function installUi(app, { builtinSource, recorder }) {
     onControl: (name, value) => app.setControls({ [name]: value }, 'panel'),
     onChannel: (i, file) =>
       app.setChannel(i, file).then(
-        () => toast(file ? `Loaded ${file.name} into iChannel${i}` : `Emptied iChannel${i}`),
+        () => toast(channelLoaded(i, file)),
         (error) => {
           console.warn(error.message);
           toast(error.message);
@@ -244,9 +244,9 @@ export function installUi(app, { builtinSource, recorder }) {
     const file = event.dataTransfer.files[0];
     if (!file) return;
     const kind = droppedKind(file);
-    if (kind === 'image') {
+    if (kind === 'image' || kind === 'video' || kind === 'music') {
       await app.setChannel(0, file).then(
-        () => toast(`Loaded ${file.name} into iChannel0`),
+        () => toast(channelLoaded(0, file)),
         (error) => toast(error.message),
       );
     } else if (kind === 'shader' || kind === 'json') {
