@@ -115,6 +115,23 @@ export interface RaytracerHook {
     width?: number;
     height?: number;
   }): Promise<{ width: number; height: number; data: string }>;
+  /** The Sound tab's samples from `time` for `duration` s (src/page/sound/samples.js): `data` is base64 of interleaved Int16 LE. */
+  renderSound(request?: {
+    time?: number;
+    duration?: number;
+  }): Promise<{ sampleRate: number; channels: number; samples: number; data: string }>;
+  /** The Sound tab's player (src/page/sound/player.js) as it is now. */
+  soundState(): {
+    available: boolean;
+    context: AudioContextState | null;
+    muted: boolean;
+    plan: { sample: number; when: number; rate: number; time: number } | null;
+    now: number | null;
+    sources: number;
+    level: number;
+  };
+  /** The Sound tab's mute button. */
+  setMuted(muted: boolean): void;
   /** Stops the recording under way: its record() rejects, nothing is made. */
   cancelRecording(): void;
   recording(): { busy: boolean; done: number; total: number };

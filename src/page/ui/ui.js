@@ -10,6 +10,7 @@ import { installRecordDialog } from './record-dialog.js';
 import { installShortcuts, watchKeyboard } from './keys.js';
 import { pageActions } from './actions.js';
 import { installViewNote, showLoadNotes } from './notices.js';
+import { installSound } from '../sound/sound-controls.js';
 import { KeptWork } from '../kept-work.js';
 import { droppedKind } from '../io/shader-loader.js';
 import { shareLink } from '../io/share-link.js';
@@ -79,6 +80,7 @@ export function installUi(app, { builtinSource }) {
     { ...actions, toggleInspect: () => inspection.toggle(), compare: () => inspection.compare() },
     () => activity(app),
   );
+  const sound = installSound(app, { graph: toolbar.graph, stage }); // the Sound tab: player, mute, meter
   inspection.inspector.on('mode', () => toolbar.setInspecting(inspection.inspector.active));
   const recording = installRecordDialog(app, toolbar.root, toast);
   toolbar.fit(); // with "Record" in it
@@ -257,5 +259,5 @@ export function installUi(app, { builtinSource }) {
 
   /** The link that reproduces this view (share-link.js). */
   const shareUrl = async () => (await shareLink(app, kept.shippedBase())).url;
-  return { toast, toolbar, panel, editor, kept, actions, shareUrl, recording, open, inspection };
+  return { toast, toolbar, panel, editor, kept, actions, shareUrl, recording, open, inspection, sound };
 }
