@@ -274,6 +274,17 @@ const TONES =
 const QUANTUM = 128;
 
 describe("the page's playback, in step with iTime", () => {
+  test('a Sound tab that does not compile is said at its own line, as the other tabs are', async () => {
+    await withPage(async ({ page, goto }) => {
+      await goto('?size=64x36&time=0');
+      const json = withSound('vec2 mainSound(int samp, float time) {\n  return vec2(nope);\n}');
+      const result = await page.evaluate((j) => window.raytracer.setProject(j), json);
+      expect(result.ok).toBe(false);
+      expect(result.error).toMatch(/^Sound:2: error: .*nope/im);
+      expect(result.error).toMatch(/return vec2\(nope\);/);
+    });
+  });
+
   test.each([
     // clock, and the sample that plays when the sound starts (LEAD_SECONDS after now)
     [

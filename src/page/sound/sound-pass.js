@@ -8,6 +8,8 @@
 // already, and the sound's worker side and page side belong to one feature.
 
 import * as THREE from 'three';
+import { ShaderCompileError } from '../gpu/errors.js';
+import { formatPassMessages } from '../../shadertoy/pass-errors.js';
 import { channelTypes, soundPass } from '../../shadertoy/multipass.js';
 import {
   BLOCK_SAMPLES,
@@ -52,7 +54,14 @@ export class SoundPass {
     if (!pass) return null;
     const composed = composeSoundShader(pass.code, { common: project.common, channelTypes: channelTypes(pass) });
     const check = { userText: (project.common === null ? '' : project.common + '\n') + pass.code, sections: composed.sections };
-    return this.renderer.compiler.compileOne(composed, check, () => this.uniforms());
+    try {
+      return await this.renderer.compiler.compileOne(composed, check, () => this.uniforms());
+    } catch (error) {
+      if (!error.messages) throw error;
+      // said as the other tabs' errors are: "Sound:3: ERROR: ..." with the line under it
+      const sources = { Common: project.common ?? '', Sound: pass.code };
+      throw new ShaderCompileError(formatPassMessages(error.messages, sources), error.messages);
+    }
   }
 
   /** Installs what compile() gave (after the other passes compiled): the blocks drawn before go. */
