@@ -19,6 +19,8 @@ export default {
     // The raw WebGL2 test page's module: tests/harness/raw-webgl.html loads it with a <script>,
     // and the page is opened by URL through the harness's routes (raw-webgl.js), not by Vite.
     'tests/harness/raw-webgl-page.js',
+    // The floor bench:cli times beside each render: run as a process of its own (cli-start.js).
+    'tests/bench/baseline-launch.js',
   ],
   // The files that must all be reached. `!` marks what ships (the page, the command line), for
   // `knip --production`: it checks that package.json's dependencies are what they use.

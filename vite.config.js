@@ -61,16 +61,49 @@ function glslFiles() {
   };
 }
 
+/** What the built page lists of its sources (src/engine/page-server.js reads it to tell a stale build). */
+const SOURCES_FILE = 'page-sources.json';
+
+/**
+ * Lists every file the build was made from, from the module graphs themselves (the page's and
+ * each worker's: the render worker, the float64 reference's threads), plus the static files and
+ * this config, into dist/page-sources.json. A hand-written list of folders missed src/raytracer
+ * and src/reference, which the page bundles: a clone could render with a stale page.
+ * @param {Set<string>} seen shared by the page's build and its workers' builds
+ * @param {{emit: boolean}} options emit: this is the page's build (its workers' are done by then)
+ */
+function pageSources(seen, { emit }) {
+  return {
+    name: 'page-sources',
+    generateBundle() {
+      for (const id of this.getModuleIds()) {
+        const file = id.split('?')[0];
+        if (file.startsWith(repo) && !file.includes(`${path.sep}node_modules${path.sep}`) && fs.existsSync(file)) seen.add(file);
+      }
+      if (!emit) return;
+      const listed = [...seen, publicDir, shadersDir, fileURLToPath(import.meta.url)].map((f) =>
+        path.relative(repo, f).split(path.sep).join('/'),
+      );
+      this.emitFile({ type: 'asset', fileName: SOURCES_FILE, source: JSON.stringify([...new Set(listed)].sort(), null, 1) });
+    },
+  };
+}
+
+const sourcesSeen = new Set();
+
 export default defineConfig({
   root: `${repo}src/page`,
   publicDir,
-  plugins: [glslFiles()],
+  plugins: [glslFiles(), pageSources(sourcesSeen, { emit: true })],
+  worker: { plugins: () => [pageSources(sourcesSeen, { emit: false })] },
   server: {
     host: '127.0.0.1',
     // the page imports ../shaders/*.glsl, outside the root: allow the whole repository
     fs: { allow: [repo] },
   },
   build: {
+    // two pages: the interactive one, and the engine page the command line drives (only what draws)
+    rollupOptions: { input: { main: `${repo}src/page/index.html`, engine: `${repo}src/page/engine.html` } },
     outDir: `${repo}dist`,
     emptyOutDir: true,
     chunkSizeWarningLimit: 800, // three.js's WebGLRenderer is most of the bundle (~600 kB)

@@ -82,7 +82,7 @@ async function newPage({ deterministic, timeouts }) {
  * `deterministic: false` leaves the page's clocks real (the watchdog's tests need time to pass
  * while no animation frame is asked for); `timeouts` shortens the page's (harness/config.js's
  * SHORT_TIMEOUTS).
- * @param {{viewport?: import('puppeteer-core').Viewport, beforeLoad?: (page: import('puppeteer-core').Page) => Promise<unknown>, deterministic?: boolean, timeouts?: Partial<import('../src/page/timeouts.js').Timeouts>}} [options]
+ * @param {{viewport?: import('puppeteer-core').Viewport, beforeLoad?: (page: import('puppeteer-core').Page) => Promise<unknown>, deterministic?: boolean, timeouts?: Partial<import('../src/shared/timeouts.js').Timeouts>}} [options]
  */
 export async function withPage(body, { viewport, beforeLoad, deterministic = true, timeouts } = {}) {
   // a page set up otherwise before it loads is a page of its own, as without sharing

@@ -1,5 +1,5 @@
 // Issue 12's smaller holes, in the real page: a load that never gets an answer ends with a message
-// (src/page/io/shader-loader.js, after src/page/timeouts.js's loadMs, shortened here), and an image or a shader from another origin is
+// (src/page/io/shader-loader.js, after src/shared/timeouts.js's loadMs, shortened here), and an image or a shader from another origin is
 // refused up front, whether asked for directly or reached through a redirect, without a console
 // error. The page's server gets its hanging and redirecting URLs from tests/harness/routes.js; the
 // other origin is a small server of this file's own.

@@ -1,8 +1,8 @@
-// The page's production timeouts (src/page/timeouts.js), held here: the page tests run with
+// The page's production timeouts (src/shared/timeouts.js), held here: the page tests run with
 // shortened ones (tests/harness/config.js's SHORT_TIMEOUTS), so this is where a change of a
 // production value shows. And a harness's overrides take only known, positive, finite values.
 import { describe, expect, test } from 'vitest';
-import { PRODUCTION_TIMEOUTS, timeoutsWith } from '../src/page/timeouts.js';
+import { PRODUCTION_TIMEOUTS, timeoutsWith } from '../src/shared/timeouts.js';
 import { SHORT_TIMEOUTS } from './harness/config.js';
 
 describe('the page timeouts', () => {

@@ -1,9 +1,9 @@
-// The URL contract (src/page/io/url-params.js) without a browser: what each parameter reads as, that bad
+// The URL contract (src/shared/url-params.js) without a browser: what each parameter reads as, that bad
 // values are clamped or ignored with a warning naming them, and that formatUrlParams writes what
 // parseUrlParams reads back.
 import { describe, expect, test } from 'vitest';
-import { formatUrlParams, parseUrlParams } from '../src/page/io/url-params.js';
-import { MAX_PIXELS, clampSize } from '../src/page/app/canvas-size.js';
+import { formatUrlParams, parseUrlParams } from '../src/shared/url-params.js';
+import { MAX_PIXELS, clampSize } from '../src/shared/canvas-limits.js';
 
 const BASE = 'http://127.0.0.1:5173/';
 

@@ -1,6 +1,7 @@
 // What every verb shares besides its session: where it prints (stdout for results, stderr for
 // progress and errors), its one SHADER argument, and the watchdog's flag.
 
+import { PRODUCTION_TIMEOUTS } from '../shared/timeouts.js';
 import { CliError } from './session.js';
 import { UsageError, readNumber } from './view-options.js';
 
@@ -76,7 +77,7 @@ export function progressBar(unit) {
  * @returns {{hangMs: number, compileHangMs: number}}
  */
 export function watchdog(text) {
-  if (text === undefined) return { hangMs: 5_000, compileHangMs: 30_000 };
+  if (text === undefined) return { hangMs: PRODUCTION_TIMEOUTS.hangMs, compileHangMs: PRODUCTION_TIMEOUTS.compileHangMs };
   const ms = readNumber(text, '--watchdog', { min: 0.1 }) * 1000;
   return { hangMs: ms, compileHangMs: ms };
 }

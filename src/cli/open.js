@@ -20,7 +20,7 @@ export async function runOpen({ values, positionals }, { stopped } = {}) {
   const root = await builtPage({ say: io.err }).catch((error) => {
     throw new CliError(error.message);
   });
-  const server = await startPageServer({ root, port }).catch((error) => {
+  const server = await startPageServer({ root, port, fileEvents: true }).catch((error) => {
     throw new CliError(
       error.code === 'EADDRINUSE' ? `--port ${port}: the port is in use; give another, or none for a free one` : error.message,
     );

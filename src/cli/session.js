@@ -10,8 +10,10 @@ import { rendererLabel, startBrowser } from '../engine/browser.js';
 import { findChrome } from '../engine/chrome-path.js';
 import { builtPage, startPageServer } from '../engine/page-server.js';
 import { drawView } from '../engine/view.js';
-import { CLOSE_TIMEOUT_MS, watchPage, withTimeout } from '../engine/watch.js';
+import { openPage } from '../engine/page-open.js';
+import { CLOSE_TIMEOUT_MS, withTimeout } from '../engine/watch.js';
 import { fromBase64 } from '../shared/pixels.js';
+import { PRODUCTION_TIMEOUTS } from '../shared/timeouts.js';
 
 /** An error the person can act on: said in one line, without a stack. */
 export class CliError extends Error {
@@ -26,6 +28,12 @@ export class CliError extends Error {
   }
 }
 
+/**
+ * The page every view is drawn on: the engine page (src/page/engine.html), only what draws, not
+ * the interactive page with its editor, panel and inspector, whose code it never loads.
+ */
+export const ENGINE_PAGE = '/engine.html';
+
 /** How long one wait on the page may take (a load, a compile, a frame): SwiftShader is slow. */
 const WAIT_MS = 120_000;
 
@@ -39,10 +47,15 @@ const STARTER = 'void mainImage(out vec4 c, in vec2 f) { c = vec4(0.0, 0.0, 0.0,
 
 /**
  * @param {{gpu?: boolean, hangMs?: number, compileHangMs?: number, say?: (line: string) => void}} [options]
- *   hangMs: a band of a frame unfinished this long fails (the page's watchdog: timeouts.js);
+ *   hangMs: a band of a frame unfinished this long fails (the page's watchdog: src/shared/timeouts.js);
  *   compileHangMs: the same for a program's first draw, in which SwiftShader compiles it
  */
-export async function startSession({ gpu = false, hangMs = 5_000, compileHangMs = 30_000, say = () => {} } = {}) {
+export async function startSession({
+  gpu = false,
+  hangMs = PRODUCTION_TIMEOUTS.hangMs,
+  compileHangMs = PRODUCTION_TIMEOUTS.compileHangMs,
+  say = () => {},
+} = {}) {
   mark('node started, modules loaded');
   let executablePath;
   try {
@@ -61,7 +74,8 @@ export async function startSession({ gpu = false, hangMs = 5_000, compileHangMs 
   let chromium = null;
   /** @type {import('puppeteer-core').Page | null} */
   let page = null;
-  const logged = [];
+  /** What the current page logged as errors (page-open.js). @type {string[]} */
+  let pageErrors = [];
 
   async function browser() {
     if (chromium) return chromium;
@@ -74,17 +88,13 @@ export async function startSession({ gpu = false, hangMs = 5_000, compileHangMs 
 
   async function freshPage() {
     const { browser: b } = await browser();
-    const opened = await withTimeout('opening a page', b.newPage(), WAIT_MS);
-    watchPage(opened, b, { waitTimeoutMs: WAIT_MS });
-    opened.on('console', (message) => {
-      if (message.type() === 'error') logged.push(message.text());
+    const { page: opened, errors } = await openPage(b, { waitTimeoutMs: WAIT_MS, timeouts: { hangMs, compileHangMs } });
+    pageErrors = errors;
+    const started = await drawView(opened, {
+      baseUrl: server.baseUrl,
+      query: `${ENGINE_PAGE}?shader=${starter}&size=2x2&time=0`,
+      fresh: true,
     });
-    opened.on('pageerror', (error) => logged.push(String(/** @type {Error} */ (error)?.message ?? error)));
-    await opened.evaluateOnNewDocument((chosen) => {
-      /** @type {any} */ (window).__raytracerTimeouts = chosen;
-    }, /** @type {any} */ ({ hangMs, compileHangMs }));
-    await opened.setViewport({ width: 800, height: 600, deviceScaleFactor: 1 });
-    const started = await drawView(opened, { baseUrl: server.baseUrl, query: `/?shader=${starter}&size=2x2&time=0`, fresh: true });
     if (started.error !== undefined) throw new CliError(`the page did not start: ${started.error}`);
     try {
       const { renderer, version } = /** @type {Extract<import('../engine/view.js').DrawnView, {pixels: unknown}>} */ (started).info;
@@ -164,8 +174,8 @@ export async function startSession({ gpu = false, hangMs = 5_000, compileHangMs 
     },
     /** The page the last view was drawn on (for what only it can do: record, frame steps). */
     page: () => page,
-    /** Console errors the pages logged since the last call. */
-    takeLogged: () => logged.splice(0),
+    /** Console errors and page errors the current page logged since the last call. */
+    takeLogged: () => pageErrors.splice(0),
     async close() {
       mark('output written');
       if (page && !page.isClosed()) await withTimeout('closing the page', page.close(), CLOSE_TIMEOUT_MS).catch(() => {});

@@ -1,5 +1,5 @@
 // The flags that say what to draw (--size, --time, --frame, --mouse, --set, --channel0..3), read
-// into the page's own URL contract (src/page/io/url-params.js), so that a render from the command
+// into the page's own URL contract (src/shared/url-params.js), so that a render from the command
 // line is the page's render of that link. A value that cannot be read is a UsageError (exit 2);
 // the page's own ranges are the page's (a control out of range is clamped there, and said).
 //
@@ -8,9 +8,8 @@
 // schedule (--fps, 60 unless given), never measured: the page's ?date= and ?fps=.
 
 import path from 'node:path';
-
-/** The page's frame schedule's largest rate (src/page/io/url-params.js MAX_FPS). */
-const MAX_FPS = 240;
+import { MAX_FPS, MIN_FPS, formatUrlParams } from '../shared/url-params.js';
+import { ENGINE_PAGE } from './session.js';
 
 /** A flag or value the command cannot use: said with the verb's usage, exit 2. */
 export class UsageError extends Error {}
@@ -117,29 +116,27 @@ export function readViewOptions(values, defaultSize, { fps: defaultFps = DEFAULT
   });
   const channels = [0, 1, 2, 3].map((i) => values[`channel${i}`] ?? null);
   const date = readDate(values.date);
-  const fps = values.fps === undefined ? defaultFps : readNumber(values.fps, '--fps', { min: 1, max: maxFps });
+  const fps = values.fps === undefined ? defaultFps : readNumber(values.fps, '--fps', { min: MIN_FPS, max: maxFps });
   return { size, time, frame, mouse, controls, channels, date, fps };
 }
 
 /**
- * The page's query for a view of a mounted shader: `mount(file)` serves a file and returns its
+ * The engine page's address for a view of a mounted shader: `mount(file)` serves a file and returns its
  * URL path (page-server.js).
  * @param {string} shaderUrl
  * @param {ViewOptions} view
  * @param {(file: string) => string} mount
  */
 export function viewQuery(shaderUrl, view, mount) {
-  const params = new URLSearchParams();
-  params.set('shader', shaderUrl);
-  params.set('size', `${view.size.width}x${view.size.height}`);
-  if (view.time !== null) params.set('time', String(view.time));
-  else params.set('time', '0');
-  if (view.date !== null) params.set('date', new Date(view.date).toISOString());
-  params.set('fps', String(view.fps));
-  if (view.mouse) params.set('mouse', view.mouse.join(','));
-  view.channels.forEach((file, i) => {
-    if (file) params.set(`iChannel${i}`, mount(path.resolve(file)));
-  });
-  for (const [name, value] of view.controls) params.set(name, value);
-  return `/?${params}`;
+  return `${ENGINE_PAGE}${formatUrlParams({
+    shader: shaderUrl,
+    size: view.size,
+    time: view.time ?? 0,
+    mouse: view.mouse ?? undefined,
+    date: view.date,
+    fps: view.fps,
+    channels: view.channels.map((file) => (file ? mount(path.resolve(file)) : null)),
+    // as given: the page checks them against the shader's controls, and says what it changed
+    controls: Object.fromEntries(view.controls),
+  })}`;
 }

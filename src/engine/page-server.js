@@ -11,8 +11,9 @@
 //                          changes (watch()); the page reloads that shader in place (main.js)
 //   anything else          the built page's files; an unknown path answers 404
 //
-// index.html gets one <meta name="raytracer-file-events"> so the page knows to listen. Nothing
-// here writes to disk.
+// With fileEvents (`open`), index.html gets one <meta name="raytracer-file-events"> so the page
+// knows to listen. A test run serves the same page through it, with the harness's routes first
+// (tests/harness/page-server.js). Nothing here writes to disk.
 
 import fs from 'node:fs';
 import http from 'node:http';
@@ -44,21 +45,50 @@ const TYPES = {
 
 const typeOf = (file) => TYPES[path.extname(file).toLowerCase()] ?? 'application/octet-stream';
 
-/** The folders the built page is made from, in a clone: a build older than any of them is stale. */
-const PAGE_SOURCES = ['src/page', 'src/shadertoy', 'src/shared', 'shaders', 'public', 'vite.config.js'];
+/**
+ * The build's own list of the files it was made from (vite.config.js pageSources: the page's and
+ * its workers' module graphs, the static files, the config), paths relative to the package.
+ */
+const SOURCES_FILE = 'page-sources.json';
 
-/** The newest modification time under `file` (a file or a folder), in ms. */
+/**
+ * What the tests write into public/ while they run (git ignores them): never a source of the
+ * page, so never a reason to build it again under a running suite.
+ */
+const TEST_FILES = /^(test-|hmr-test-)/;
+
+/**
+ * The newest modification time of the files under `file` (a file or a folder), in ms; a file
+ * gone since the build counts as changed now.
+ */
 function newestMtime(file) {
   let stat;
   try {
     stat = fs.statSync(file);
   } catch {
-    return 0;
+    return Date.now();
   }
   if (!stat.isDirectory()) return stat.mtimeMs;
-  let newest = stat.mtimeMs;
-  for (const entry of fs.readdirSync(file)) newest = Math.max(newest, newestMtime(path.join(file, entry)));
+  let newest = 0;
+  for (const entry of fs.readdirSync(file)) if (!TEST_FILES.test(entry)) newest = Math.max(newest, newestMtime(path.join(file, entry)));
   return newest;
+}
+
+/**
+ * The sources of the build in `dir` changed since it was made (newer than its index.html), by the
+ * build's own list of them; every source when the list is missing (a build from before it).
+ * @param {string} dir a built page
+ * @returns {string[]} paths relative to the package
+ */
+export function staleSources(dir) {
+  const built = fs.statSync(path.join(dir, 'index.html')).mtimeMs;
+  let listed;
+  try {
+    listed = JSON.parse(fs.readFileSync(path.join(dir, SOURCES_FILE), 'utf8'));
+  } catch {
+    return [`(${SOURCES_FILE} is missing: the build is from before the list)`];
+  }
+  return listed.filter((/** @type {string} */ file) => newestMtime(path.join(PACKAGE_ROOT, file)) > built);
 }
 
 /**
@@ -70,10 +100,9 @@ function newestMtime(file) {
  */
 export async function builtPage({ say = () => {} } = {}) {
   const index = path.join(BUILT_PAGE_DIR, 'index.html');
-  const built = fs.existsSync(index) ? fs.statSync(index).mtimeMs : 0;
   const inClone = fs.existsSync(path.join(PACKAGE_ROOT, 'vite.config.js'));
-  const sources = inClone ? Math.max(...PAGE_SOURCES.map((s) => newestMtime(path.join(PACKAGE_ROOT, s)))) : 0;
-  if (built && built >= sources) return BUILT_PAGE_DIR;
+  const built = fs.existsSync(index) ? fs.statSync(index).mtimeMs : 0;
+  if (built && !(inClone && staleSources(BUILT_PAGE_DIR).length)) return BUILT_PAGE_DIR;
   let vite;
   try {
     vite = await import('vite');
@@ -90,10 +119,18 @@ export async function builtPage({ say = () => {} } = {}) {
 }
 
 /**
- * Starts the server on a free loopback port (or `port`).
- * @param {{root: string, port?: number}} options root: the built page's folder
+ * A handler that runs before the server's own, connect-style: it answers, or calls `next`.
+ * @typedef {(req: import('node:http').IncomingMessage, res: import('node:http').ServerResponse, next: () => void) => void} Routes
  */
-export async function startPageServer({ root, port = 0 }) {
+
+/**
+ * Starts the server on a free loopback port (or `port`): the one server of the built page, for
+ * the command line and the test run alike (tests/harness/page-server.js adds its routes).
+ * @param {{root: string, port?: number, fileEvents?: boolean, routes?: Routes}} options root: the
+ *   built page's folder; fileEvents: index.html says where to hear of saved files (`open`);
+ *   routes: answered first
+ */
+export async function startPageServer({ root, port = 0, fileEvents = false, routes = (_req, _res, next) => next() }) {
   /** @type {Map<string, string>} url path → file */
   const mounts = new Map();
   /** @type {Map<string, string>} url path → text */
@@ -104,11 +141,14 @@ export async function startPageServer({ root, port = 0 }) {
   const watchers = [];
   let nextId = 0;
 
-  const index = fs
-    .readFileSync(path.join(root, 'index.html'), 'utf8')
-    .replace(/<meta charset[^>]*>|<head>/i, (tag) => `${tag}\n    <meta name="raytracer-file-events" content="${EVENTS_ROUTE}" />`);
+  const page = fs.readFileSync(path.join(root, 'index.html'), 'utf8');
+  const index = fileEvents
+    ? page.replace(/<meta charset[^>]*>|<head>/i, (tag) => `${tag}\n    <meta name="raytracer-file-events" content="${EVENTS_ROUTE}" />`)
+    : page;
 
-  const server = http.createServer((req, res) => {
+  const server = http.createServer((req, res) => routes(req, res, () => answer(req, res)));
+  /** @param {import('node:http').IncomingMessage} req @param {import('node:http').ServerResponse} res */
+  function answer(req, res) {
     const url = new URL(req.url ?? '/', 'http://page');
     if (req.method !== 'GET' && req.method !== 'HEAD') {
       res.writeHead(405).end();
@@ -161,7 +201,7 @@ export async function startPageServer({ root, port = 0 }) {
     res.writeHead(200, { 'content-type': typeOf(file), 'cache-control': immutable ? 'max-age=31536000, immutable' : 'no-cache' });
     if (req.method === 'HEAD') res.end();
     else fs.createReadStream(file).pipe(res);
-  });
+  }
   await new Promise((resolve, reject) => {
     server.once('error', reject);
     server.listen(port, '127.0.0.1', () => resolve(undefined));

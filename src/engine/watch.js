@@ -102,7 +102,7 @@ export function watchPage(page, browser, { waitTimeoutMs = WAIT_TIMEOUT_MS } = {
           /** @type {object | null} */
           let info;
           // the hook may not be there yet, or not whole: this page is being asked why it is stuck
-          const hook = /** @type {Partial<import('../../tests/globals.js').RaytracerHook> | undefined} */ (window.raytracer);
+          const hook = /** @type {Partial<import('../page/automation.js').RaytracerHook> | undefined} */ (window.raytracer);
           try {
             const { fileName, origin, time, playing, width, height } = hook?.info?.() ?? {};
             info = hook?.info ? { fileName, origin, time, playing, width, height } : null;

@@ -1,4 +1,7 @@
-// window.raytracer: the page's hook for the test harness and the benchmark.
+// window.raytracer: the page's API, which the command line, the test harness and the benchmark
+// drive (on the engine page, engine-main.js, or the interactive page, main.js). Documented here
+// once; its type is the hook itself (RaytracerHook below), which tests/globals.ts and the
+// engine's waits (src/engine/watch.js) take from here.
 //
 //   ready                 Promise: resolves after the first frame has been drawn; rejects with
 //                         the error when WebGL2 is missing or the first compile fails.
@@ -113,13 +116,27 @@ import { markApp, markStartupFailure } from './page-marks.js';
 const hooked = window;
 
 /**
+ * What an entry page gives the hook: open() (open-view.js), the recorder it owns, and on the
+ * interactive page (main.js) its widgets; the engine page (engine-main.js) has none, and the
+ * methods that need them (the inspector, the comparison, the link, the editor) reject there.
+ * @typedef {object} HookHost
+ * @property {(query: string) => Promise<void>} open
+ * @property {import('./io/recorder.js').Recorder} recorder
+ * @property {ReturnType<typeof import('./ui/ui.js').installUi>} [ui]
+ */
+
+/**
  * @param {import('./app/app.js').RaytracerApp} app (a page that could not start has installFailedAutomation)
  * @param {Promise<void>} ready
- * @param {ReturnType<typeof import('./ui/ui.js').installUi>} ui
- * @param {{open: (query: string) => Promise<void>}} page what the page does for open()
+ * @param {HookHost} host
  */
-export function installAutomation(app, ready, ui, { open }) {
+export function installAutomation(app, ready, { open, recorder, ui: pageUi }) {
   markApp(app);
+  /** The page's widgets, for the methods that need them; the engine page has none. */
+  const widgets = () => {
+    if (!pageUi) throw new Error('not on the engine page (engine.html), which only draws: open the full page (index.html)');
+    return pageUi;
+  };
   // the first source may still be on its way (?shader= is fetched): calls wait for it
   const loaded = () => (app.loading ?? Promise.resolve()).catch(() => {});
   // A first compile that failed rejects `ready` for good; once another shader has compiled,
@@ -135,7 +152,7 @@ export function installAutomation(app, ready, ui, { open }) {
   /** The last record()'s progress: frames done of total. */
   let recorded = { done: 0, total: 0 };
 
-  hooked.raytracer = {
+  const hook = {
     ready,
 
     async open(query) {
@@ -259,12 +276,13 @@ export function installAutomation(app, ready, ui, { open }) {
 
     async inspect(x, y) {
       await settled();
+      const ui = widgets();
       const { inspector } = ui.inspection;
       ui.inspection.pin(x, y);
       return structuredClone(await inspector.complete());
     },
     inspection() {
-      const { inspector } = ui.inspection;
+      const { inspector } = widgets().inspection;
       return structuredClone({
         active: inspector.active,
         pinned: inspector.pinned,
@@ -272,32 +290,34 @@ export function installAutomation(app, ready, ui, { open }) {
         readout: inspector.readout,
       });
     },
-    unpin: () => ui.inspection.inspector.unpin(),
+    unpin: () => widgets().inspection.inspector.unpin(),
     async compareWithFloat64() {
       await settled();
-      const { figures, width, height, extraSampleShare, frame, ms, caveat } = await ui.inspection.comparison.run();
+      const { figures, width, height, extraSampleShare, frame, ms, caveat } = await widgets().inspection.comparison.run();
       return { figures, width, height, extraSampleShare, frame, ms, caveat };
     },
     comparison() {
-      const { running, error, stale, result } = ui.inspection.comparison;
+      const { running, error, stale, result } = widgets().inspection.comparison;
       return structuredClone({ running, error, stale, shown: result ? { width: result.width, height: result.height } : null });
     },
 
-    shareUrl: () => ui.shareUrl(),
-    editorSource: () => ui.editor.text,
+    shareUrl: () => widgets().shareUrl(),
+    editorSource: () => widgets().editor.text,
 
     async record(request = {}) {
       await settled();
       recorded = { done: 0, total: 0 };
-      const { bytes, ...result } = await ui.recording.recorder.record(request, (done, total) => (recorded = { done, total }));
+      const { bytes, ...result } = await recorder.record(request, (done, total) => (recorded = { done, total }));
       return { ...result, data: toBase64(bytes) };
     },
+    /** @param {{frame: number, fps?: number, width?: number, height?: number}} request */
     async frameAt(request) {
       await settled();
       recorded = { done: 0, total: 0 };
-      const { data, ...size } = await ui.recording.recorder.frameAt(request, (done, total) => (recorded = { done, total }));
+      const { data, ...size } = await recorder.frameAt(request, (done, total) => (recorded = { done, total }));
       return { ...size, data: toBase64(data) };
     },
+    /** @param {{time?: number, duration?: number}} [request] */
     async renderSound({ time = 0, duration = 60 } = {}) {
       await settled();
       if (!hasSound(app)) throw new Error('this shader has no Sound tab');
@@ -306,7 +326,7 @@ export function installAutomation(app, ready, ui, { open }) {
       return { sampleRate: SAMPLE_RATE, channels: 2, samples: count, data: toBase64(new Uint8Array(pcm.buffer)) };
     },
     soundState() {
-      const player = ui.sound;
+      const player = widgets().sound;
       const context = player.context;
       return structuredClone({
         available: player.available,
@@ -318,9 +338,10 @@ export function installAutomation(app, ready, ui, { open }) {
         level: player.level(),
       });
     },
-    setMuted: (muted) => ui.sound.setMuted(Boolean(muted)),
-    cancelRecording: () => ui.recording.recorder.cancel(),
-    recording: () => ({ busy: ui.recording.recorder.busy, ...recorded }),
+    /** @param {boolean} muted */
+    setMuted: (muted) => widgets().sound.setMuted(Boolean(muted)),
+    cancelRecording: () => recorder.cancel(),
+    recording: () => ({ busy: recorder.busy, ...recorded }),
 
     info() {
       return {
@@ -347,7 +368,15 @@ export function installAutomation(app, ready, ui, { open }) {
       };
     },
   };
+  hooked.raytracer = hook;
+  return hook;
 }
+
+/**
+ * window.raytracer's type, from the hook itself: the tests, the benchmark and the engine's waits
+ * read it (tests/globals.ts).
+ * @typedef {ReturnType<typeof installAutomation>} RaytracerHook
+ */
 
 /** The hook for a page that could not start: `ready` rejects with `error`, and so does the rest. */
 export function installFailedAutomation(error) {

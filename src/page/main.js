@@ -8,10 +8,11 @@ import { installAutomation, installFailedAutomation } from './automation.js';
 import { Overlay } from './ui/overlay.js';
 import { installUi } from './ui/ui.js';
 import { showAppOnPage, showStartupFailure } from './ui/notices.js';
-import { parseUrlParams } from './io/url-params.js';
+import { parseUrlParams } from '../shared/url-params.js';
 import { fetchShader, loadImage, shaderName } from './io/shader-loader.js';
 import { HangGuard, watchHangs } from './io/hang-guard.js';
 import { openShader } from './io/open-shader.js';
+import { Recorder } from './io/recorder.js';
 import { BUILTIN_NAME, linkedShader, openView, useBuiltinSource } from './open-view.js';
 import { singlePass } from '../shadertoy/multipass.js';
 
@@ -40,7 +41,8 @@ async function start() {
 
   watchHangs(app, new HangGuard());
   const noticeAfterCompile = showAppOnPage(app, overlay);
-  const ui = installUi(app, { builtinSource });
+  const recorder = new Recorder(app); // the page's: the Record dialog and window.raytracer share it
+  const ui = installUi(app, { builtinSource, recorder });
   overlay.onLine = (line, pass) => ui.editor.goToLine(line, pass);
   /** window.raytracer.open(query): the page as a fresh load of `query` (a URL's ?… and #…) gives it. */
   const open = (/** @type {string} */ query) => {
@@ -48,7 +50,7 @@ async function start() {
     return openView(app, ui, parseUrlParams(url.search, url.href), { hash: url.hash, noticeAfterCompile, again: true });
   };
   // before the first shader opens: the hook's marks (page-marks.js) follow it from its start
-  installAutomation(app, app.ready, ui, { open });
+  installAutomation(app, app.ready, { open, recorder, ui });
   const started = openView(app, ui, params, { hash: location.hash, noticeAfterCompile });
   started.catch(() => {}); // shown on the page; `ready` rejects
 

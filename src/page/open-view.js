@@ -9,13 +9,21 @@ import { showValueNotes } from './ui/notices.js';
 import { fetchShader, shaderName } from './io/shader-loader.js';
 import { BUILTIN_BASE, sourceFromHash } from './io/share-link.js';
 import { readShader } from './io/open-shader.js';
-import { CHANNEL_PARAMS } from './io/url-params.js';
+import { CHANNEL_PARAMS } from '../shared/url-params.js';
 import { singlePass } from '../shadertoy/multipass.js';
 
 /** @typedef {import('./app/app.js').RaytracerApp} RaytracerApp */
 /** @typedef {import('./io/hang-guard.js').HangGuard} HangGuard */
-/** @typedef {ReturnType<typeof import('./ui/ui.js').installUi>} PageUi */
-/** @typedef {ReturnType<typeof import('./io/url-params.js').parseUrlParams>} UrlParams */
+/**
+ * What a view needs of the page's widgets: the interactive page's (ui/ui.js installUi), or the
+ * engine page's stand-ins (engine-main.js: no toast, no kept work, no inspector, no panel).
+ * @typedef {object} PageUi
+ * @property {(text: string) => void} toast
+ * @property {{open: (pageKey: string, first: FirstSource) => (() => ShaderVersion) | null}} kept
+ * @property {{reset: () => void}} inspection
+ * @property {{setView: (view: {scale: number, cap: number, sizeFixed: boolean}) => void}} panel
+ */
+/** @typedef {ReturnType<typeof import('../shared/url-params.js').parseUrlParams>} UrlParams */
 
 export const BUILTIN_NAME = 'shaders/raytrace.glsl';
 

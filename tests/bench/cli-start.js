@@ -2,6 +2,9 @@
 // shader on this 2-core machine): the command run N times, each a new process as a person runs
 // it, with SHADERPROOF_TIMINGS=1 so that it says when each phase ended (src/cli/session.js). Prints
 // the median and range of the whole and of each phase, and writes tests/bench/cli-start.md.
+// Interleaved with each run, the floor (issue 39: a render within 0.8 s of it): a new Node
+// process that launches this Chromium with puppeteer-core and the command line's flags, opens a
+// blank page and closes it (baseline-launch.js).
 //
 //   npm run bench:cli              (7 runs; -- --runs N for another count)
 
@@ -30,7 +33,12 @@ const args = [BIN, 'render', shader, '-o', path.join(dir, 'out.png'), '--size', 
 // once to build the page if it is stale (a clone's first run), not timed
 await run(process.execPath, args, { cwd: dir });
 const samples = [];
+const floors = [];
+const BASELINE = path.join(REPO_ROOT, 'tests', 'bench', 'baseline-launch.js');
 for (let i = 0; i < RUNS; i++) {
+  const floorStarted = performance.now();
+  await run(process.execPath, [BASELINE], { cwd: dir });
+  floors.push(performance.now() - floorStarted);
   const started = performance.now();
   const { stderr } = await run(process.execPath, args, { cwd: dir, env: { ...process.env, SHADERPROOF_TIMINGS: '1' } });
   const wall = performance.now() - started;
@@ -55,6 +63,8 @@ const lines = [
     return `| ${phase} | ${ms(median(at))} (${spread(at)}) | ${ms(median(own))} |`;
   }),
   `| the process's exit, as the shell sees it | ${ms(median(samples.map((s) => s.wall)))} (${spread(samples.map((s) => s.wall))}) | |`,
+  '',
+  `The floor, interleaved with those runs: a Node process that launches this Chromium (puppeteer-core, the same flags), opens a blank page and closes it: ${ms(median(floors))} ms (${spread(floors)}). The render costs ${ms(median(samples.map((s) => s.wall)) - median(floors))} ms over it (medians; issue 39's target: 800).`,
   '',
 ];
 const text = lines.join('\n');

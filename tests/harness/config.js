@@ -13,7 +13,7 @@ export const UPDATE_COMMAND = 'npm run test:update';
 export const UPDATING = process.env.UPDATE_GOLDENS === '1';
 
 /**
- * The page's timeouts shortened for the tests that wait for one (src/page/timeouts.js): a test
+ * The page's timeouts shortened for the tests that wait for one (src/shared/timeouts.js): a test
  * never waits out a production timeout. Opt-in per page (openPage's `timeouts`): an ordinary
  * page keeps the production ones, since under load a normal band of the raytracer can take
  * longer than half a second. compileHangMs stays above the raytracer's slowest first draw here

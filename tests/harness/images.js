@@ -6,7 +6,7 @@
 import fs from 'node:fs';
 import path from 'node:path';
 import { readPng, writePng } from '../../src/engine/png.js';
-import pixelmatch from 'pixelmatch';
+import { compareImages as compareWith } from '../../src/engine/compare.js';
 import { ENVIRONMENT_FILE, GOLDEN_DIR, OUTPUT_DIR, UPDATE_COMMAND, UPDATING, rel } from './config.js';
 import { harnessContext } from './page.js';
 import { INCLUDE_AA, MAX_DIFF_FRACTION, PIXEL_THRESHOLD } from '../views.js';
@@ -81,15 +81,9 @@ export function assertNotBlank(image, what, options) {
   if (reason) throw new Error(`${what}: not a rendered scene: ${reason}`);
 }
 
-/** pixelmatch with the suite's tolerance: { diffPixels, fraction, diff (RGBA diff image) }. */
+/** The engine's comparison (src/engine/compare.js) with the suite's tolerance: { diffPixels, fraction, diff }. */
 export function compareImages(actual, expected, { threshold = PIXEL_THRESHOLD, includeAA = INCLUDE_AA } = {}) {
-  if (actual.width !== expected.width || actual.height !== expected.height) {
-    throw new Error(`cannot compare ${actual.width}x${actual.height} with ${expected.width}x${expected.height}`);
-  }
-  const { width, height } = actual;
-  const diff = Buffer.alloc(width * height * 4);
-  const diffPixels = pixelmatch(actual.data, expected.data, diff, width, height, { threshold, includeAA });
-  return { diffPixels, fraction: diffPixels / (width * height), diff: { width, height, data: diff } };
+  return compareWith(actual, expected, { threshold, includeAA });
 }
 
 export function allowedDiffPixels(width, height, maxDiffFraction = MAX_DIFF_FRACTION) {

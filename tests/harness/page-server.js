@@ -1,7 +1,8 @@
 // The page's server for a test run (setup.js starts it once; scripts through withHarness).
 //
-// By default the page the tests load is the production build (`vite build` into dist/ at the
-// start of the run, ~2 s), served by `vite preview`: one bundle, a worker chunk and
+// By default the page the tests load is the production build (`vite build` into dist/ when it is
+// older than its sources, ~2 s), served by the command line's own server (one page server for
+// both: src/engine/page-server.js): one bundle, a worker chunk and
 // the styles instead of the dev server's ~100 modules transformed one by one. A page load then
 // takes ~0.5 s to its first frame where the dev server took ~1.3 s (measured: 5 loads of
 // examples/pattern.glsl at 32x18 each way), and ~220 loads a run add up. It is also the page a
@@ -16,7 +17,8 @@ import fs from 'node:fs';
 import net from 'node:net';
 import path from 'node:path';
 import { REPO_ROOT } from './config.js';
-import { harnessRoutes } from './routes.js';
+import { harnessMiddleware, harnessRoutes } from './routes.js';
+import { builtPage, startPageServer as startEngineServer } from '../../src/engine/page-server.js';
 
 const CONFIG_FILE = path.join(REPO_ROOT, 'vite.config.js');
 
@@ -63,26 +65,21 @@ async function startDevServer({ watch = false } = {}) {
 }
 
 /**
- * The production build, made now into dist/ (as `npm run build` makes it: the command line and
- * its packed tarball serve the same folder, so tests/cli.test.js packs it without building it
- * again) and served by `vite preview` on a free loopback port; close() stops the server.
+ * The production build in dist/ (built now when it is missing or older than its sources: as
+ * `npm run build` makes it, so tests/cli.test.js packs it without building it again), served by
+ * the command line's own server (src/engine/page-server.js) on a free loopback port, with the
+ * harness's routes first; close() stops it.
  * @returns {Promise<{baseUrl: string, close: () => Promise<void>}>}
  */
 async function startBuiltServer() {
-  const { build, preview } = await import('vite');
+  let root;
   try {
-    await build({ configFile: configFile(), logLevel: 'warn' });
+    root = await builtPage();
   } catch (error) {
     throw new Error(`The page did not build (vite build, as npm run build does): ${error.message}`, { cause: error });
   }
-  const port = await freePort();
-  const server = await preview({
-    configFile: configFile(),
-    logLevel: 'warn',
-    preview: { host: '127.0.0.1', port, strictPort: true, open: false },
-    plugins: [harnessRoutes()],
-  });
-  return { baseUrl: `http://127.0.0.1:${port}`, close: () => server.close() };
+  const server = await startEngineServer({ root, routes: harnessMiddleware(path.join(REPO_ROOT, 'public')) });
+  return { baseUrl: server.baseUrl, close: () => server.close() };
 }
 
 /** The page server of a test run: the build (or the dev server with RAYTRACER_TEST_SERVER=dev). */

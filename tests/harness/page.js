@@ -6,9 +6,10 @@
 import fs from 'node:fs';
 import puppeteer from 'puppeteer-core';
 import { fromBase64 } from '../../src/shared/pixels.js';
-import { CLOSE_TIMEOUT_MS, SCRIPT_WAIT_TIMEOUT_MS, WAIT_TIMEOUT_MS, closeBrowser, watchPage, withTimeout } from '../../src/engine/watch.js';
+import { CLOSE_TIMEOUT_MS, SCRIPT_WAIT_TIMEOUT_MS, WAIT_TIMEOUT_MS, closeBrowser, withTimeout } from '../../src/engine/watch.js';
 import { PAGE_PARAMS, viewQuery, viewSize } from '../views.js';
 import { drawView } from '../../src/engine/view.js';
+import { openPage as openEnginePage } from '../../src/engine/page-open.js';
 
 const INJECTION_SOURCE = fs.readFileSync(new URL('./deterministic-injection.js', import.meta.url), 'utf8');
 
@@ -77,12 +78,12 @@ export async function disconnect() {
 
 /**
  * A fresh page with the deterministic injection (unless `deterministic: false`), and the page's
- * `timeouts` (src/page/timeouts.js) set as given (e.g. config.js's SHORT_TIMEOUTS), collecting
+ * `timeouts` (src/shared/timeouts.js) set as given (e.g. config.js's SHORT_TIMEOUTS), collecting
  * console errors and page errors. Every wait on it (evaluate, waitForFunction, goto, ...) ends
  * within `waitTimeoutMs` (WAIT_TIMEOUT_MS in tests, SCRIPT_WAIT_TIMEOUT_MS in scripts), and at
  * once when the page or the browser crashes, with what the page was doing in the message; its
  * close() gives up after a while (watch.js).
- * @param {{deterministic?: boolean, waitTimeoutMs?: number, timeouts?: Partial<import('../../src/page/timeouts.js').Timeouts>}} [options]
+ * @param {{deterministic?: boolean, waitTimeoutMs?: number, timeouts?: Partial<import('../../src/shared/timeouts.js').Timeouts>}} [options]
  * @returns {Promise<{page: import('puppeteer-core').Page, errors: string[], context: object}>}
  */
 export async function openPage({
@@ -91,24 +92,9 @@ export async function openPage({
   timeouts = undefined,
 } = {}) {
   const { browser, context } = await connect();
-  const page = await withTimeout('opening a page', browser.newPage(), waitTimeoutMs);
-  watchPage(page, browser, { waitTimeoutMs });
-  const errors = [];
-  page.on('console', (message) => {
-    if (message.type() !== 'error') return;
-    const { url, lineNumber } = message.location() ?? {};
-    errors.push(`console.error: ${message.text()}${url ? ` (${url}${lineNumber !== undefined ? `:${lineNumber + 1}` : ''})` : ''}`);
-  });
-  page.on('pageerror', (error) => errors.push(`page error: ${/** @type {Error} */ (error)?.message ?? error}`));
-  page.on('error', (error) => errors.push(`page crashed: ${error?.message ?? error}`));
-  await page.setViewport({ width: 800, height: 600, deviceScaleFactor: 1 });
-  // The HTTP cache stays on: the build's files are revalidated (ETag; page-server.js), and what
-  // the tests write into public/ is served with no-store (routes.js).
-  if (deterministic) await page.evaluateOnNewDocument(INJECTION_SOURCE);
-  if (timeouts)
-    await page.evaluateOnNewDocument((chosen) => {
-      /** @type {any} */ (window).__raytracerTimeouts = chosen;
-    }, timeouts);
+  // the HTTP cache stays on: the build's files are revalidated (ETag; page-server.js), and what
+  // the tests write into public/ is served with no-store (routes.js)
+  const { page, errors } = await openEnginePage(browser, { waitTimeoutMs, timeouts, scripts: deterministic ? [INJECTION_SOURCE] : [] });
   return { page, errors, context };
 }
 

@@ -8,8 +8,8 @@
 //                                 is on disk: the raw WebGL2 page (raw-webgl.html) and the plain
 //                                 ES modules it imports, on the build's server as on the dev one
 //
-// Only the test harness adds them (a Vite plugin, on the dev server or the build's preview server:
-// page-server.js); vite.config.js and `npm run dev` have none.
+// Only the test harness adds them (on the built page's server, and as a Vite plugin on the dev
+// server: page-server.js); vite.config.js and `npm run dev` have none.
 //
 // The same plugin serves files the tests write into public/ while the server runs (withServedDir
 // in tests/page-helpers.js) as soon as they are on disk. Vite serves public/ from a list of its
@@ -58,35 +58,45 @@ function serveFile(dir, pathname, res, within = [dir]) {
 }
 
 /**
- * The Vite plugin that serves HARNESS_ROUTES.
+ * HARNESS_ROUTES and the files tests write into `publicDir`, as a connect-style handler: the
+ * built page's server (src/engine/page-server.js) runs it first, and so does the dev server
+ * (harnessRoutes).
+ * @param {string} publicDir
+ * @returns {import('../../src/engine/page-server.js').Routes}
+ */
+export function harnessMiddleware(publicDir) {
+  return (req, res, next) => {
+    const url = new URL(req.url ?? '/', 'http://harness');
+    if (!url.pathname.startsWith(HARNESS_ROUTES)) {
+      const plain = req.method === 'GET' && url.search === '';
+      if (plain && serveFile(path.resolve(publicDir), url.pathname, res)) return undefined;
+      return next();
+    }
+    const route = url.pathname.slice(HARNESS_ROUTES.length);
+    // never a status, never a byte; the server's close() destroys the open socket
+    if (route === 'hang') return undefined;
+    if (route.startsWith('repo/') && serveFile(REPO_ROOT, route.slice('repo'.length), res, REPO_DIRS)) return undefined;
+    const to = url.searchParams.get('to');
+    if (route === 'redirect' && to) {
+      res.writeHead(302, { location: to, 'cache-control': 'no-store' });
+      return res.end();
+    }
+    res.writeHead(404, { 'content-type': 'text/plain' });
+    return res.end(`no harness route ${url.pathname}`);
+  };
+}
+
+/**
+ * The Vite plugin that serves HARNESS_ROUTES on the dev server (page-server.js).
  * @returns {import('vite').Plugin}
  */
 export function harnessRoutes() {
-  /** @param {{config: import('vite').ResolvedConfig, middlewares: import('vite').Connect.Server}} server */
-  const install = (server) => {
-    server.middlewares.use((req, res, next) => {
-      const url = new URL(req.url ?? '/', 'http://harness');
-      if (!url.pathname.startsWith(HARNESS_ROUTES)) {
-        const publicDir = server.config.publicDir;
-        const plain = req.method === 'GET' && url.search === '' && publicDir;
-        if (plain && serveFile(path.resolve(publicDir), url.pathname, res)) return undefined;
-        return next();
-      }
-      const route = url.pathname.slice(HARNESS_ROUTES.length);
-      // never a status, never a byte; the server's close() destroys the open socket
-      if (route === 'hang') return undefined;
-      if (route.startsWith('repo/') && serveFile(REPO_ROOT, route.slice('repo'.length), res, REPO_DIRS)) return undefined;
-      const to = url.searchParams.get('to');
-      if (route === 'redirect' && to) {
-        res.writeHead(302, { location: to, 'cache-control': 'no-store' });
-        return res.end();
-      }
-      res.writeHead(404, { 'content-type': 'text/plain' });
-      return res.end(`no harness route ${url.pathname}`);
-    });
+  return {
+    name: 'raytracer-harness-routes',
+    configureServer(server) {
+      server.middlewares.use(harnessMiddleware(server.config.publicDir));
+    },
   };
-  // the dev server (npm run dev's) and the build's (vite preview): page-server.js
-  return { name: 'raytracer-harness-routes', configureServer: install, configurePreviewServer: install };
 }
 
 /** The URL of a harness route on the page server at `baseUrl`. */

@@ -12,7 +12,8 @@ import { ENVIRONMENT_FILE, GOLDEN_DIR, UPDATING } from './config.js';
 import { startBrowser } from '../../src/engine/browser.js';
 import { disconnect, useHarness } from './page.js';
 import { startPageServer } from './page-server.js';
-import { CLOSE_TIMEOUT_MS, WAIT_TIMEOUT_MS, watchPage, withTimeout } from '../../src/engine/watch.js';
+import { CLOSE_TIMEOUT_MS, WAIT_TIMEOUT_MS, withTimeout } from '../../src/engine/watch.js';
+import { openPage } from '../../src/engine/page-open.js';
 
 /**
  * Loads the page once before any test. On the dev server (RAYTRACER_TEST_SERVER=dev) Vite then
@@ -21,8 +22,8 @@ import { CLOSE_TIMEOUT_MS, WAIT_TIMEOUT_MS, watchPage, withTimeout } from '../..
  * Best effort: a page that fails here fails, with a message, in the tests.
  */
 async function warmUp(browser, baseUrl) {
-  const page = await withTimeout('opening a page', browser.newPage(), WAIT_TIMEOUT_MS);
-  watchPage(page, browser); // each wait below ends (a `ready` that never settles hung the run here)
+  // each wait on it ends (a `ready` that never settled hung the run here)
+  const { page } = await openPage(browser, { waitTimeoutMs: WAIT_TIMEOUT_MS });
   try {
     await page.goto(`${baseUrl}/?size=32x18&time=0`, { waitUntil: 'load' });
     await page.waitForFunction(() => window.raytracer || document.documentElement.dataset.error);

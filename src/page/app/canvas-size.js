@@ -5,28 +5,9 @@
 // panel's cap and by the largest size the GPU draws). A fixed size (?size=WxH) is the drawing
 // buffer itself: its CSS size is that over devicePixelRatio, shrunk to fit the window.
 
-import { MAX_PIXELS, MAX_SIZE } from '../../shared/canvas-limits.js';
-
-export { MAX_PIXELS, MAX_SIZE };
+import { clampSize } from '../../shared/canvas-limits.js';
 
 /** @typedef {{width: number, height: number}} Size */
-
-/** The resolution scale's range (of the device pixels; the panel's slider, ?scale=). */
-export const MIN_SCALE = 0.25;
-export const MAX_SCALE = 1;
-/** Scales a size down (keeping its aspect) so that it fits MAX_SIZE and MAX_PIXELS. */
-export function clampSize({ width, height }, maxSide = MAX_SIZE, maxPixels = MAX_PIXELS) {
-  let k = Math.min(1, maxSide / width, maxSide / height, Math.sqrt(maxPixels / (width * height)));
-  if (k >= 1) return { width, height };
-  const out = { width: Math.max(1, Math.floor(width * k)), height: Math.max(1, Math.floor(height * k)) };
-  // floor may still leave the product a hair over
-  while (out.width * out.height > maxPixels) {
-    k *= 0.999;
-    out.width = Math.max(1, Math.floor(width * k));
-    out.height = Math.max(1, Math.floor(height * k));
-  }
-  return out;
-}
 
 /**
  * A size the GPU can draw: scaled down (keeping its aspect), with a warning, if a side exceeds

@@ -18,7 +18,7 @@
 import { Emitter } from './events.js';
 import { fromWire, transferables } from '../gpu/protocol.js';
 import { WebGL2UnavailableError } from '../gpu/errors.js';
-import { TIMEOUTS } from '../timeouts.js';
+import { TIMEOUTS } from '../../shared/timeouts.js';
 
 /** @typedef {import('../gpu/protocol.js').Requests} Requests */
 /** @typedef {import('../gpu/protocol.js').Commands} Commands */

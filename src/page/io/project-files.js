@@ -107,7 +107,7 @@ export function exportJson(model, info, name, indent = 2) {
  * @param {MultipassShader} model
  * @returns {string[]}
  */
-export function shaderNotes(model) {
+function shaderNotes(model) {
   if (isPlain(model)) return [];
   try {
     return fromShadertoyJson(toShadertoyJson(model)).notes;
@@ -115,6 +115,13 @@ export function shaderNotes(model) {
     return []; // a model the JSON cannot hold has nothing the loader would say
   }
 }
+
+/**
+ * The lines of the page's note on what the shader on screen goes without: what its loader said
+ * (app.notes) and what its model asks for that the page cannot give, each once.
+ * @param {{notes: string[], project: MultipassShader}} app
+ */
+export const missingLines = (app) => [...new Set([...app.notes, ...shaderNotes(app.project)])];
 
 /** A plain single-pass shader: one Image tab, no channels, nothing else. @param {MultipassShader} model */
 const isPlain = (model) =>

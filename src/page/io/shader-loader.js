@@ -4,7 +4,7 @@
 // even through a redirect), and a load that gets no answer ends after TIMEOUTS.loadMs with a
 // message rather than waiting for ever.
 
-import { TIMEOUTS } from '../timeouts.js';
+import { TIMEOUTS } from '../../shared/timeouts.js';
 
 /** The name a shader goes by in messages and downloads: its URL's last path segment. */
 export function shaderName(url) {
@@ -18,7 +18,7 @@ export function shaderName(url) {
 
 /**
  * @typedef {object} LoadOptions
- * @property {number} [timeoutMs] give up after this long (default TIMEOUTS.loadMs: ../timeouts.js)
+ * @property {number} [timeoutMs] give up after this long (default TIMEOUTS.loadMs: src/shared/timeouts.js)
  */
 
 const ownOrigin = () => `only files served by this page's server (${location.origin}) can be loaded`;

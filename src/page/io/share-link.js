@@ -21,7 +21,7 @@
 // its first frame, as the sender's did), one from a paused page at that instant, paused.
 
 import { applyPatch, createPatch } from 'diff';
-import { formatUrlParams } from './url-params.js';
+import { formatUrlParams } from '../../shared/url-params.js';
 import { textHash } from './kept-source.js';
 import { exportJson, serializeProject } from './project-files.js';
 import { fileStem } from './file-names.js';

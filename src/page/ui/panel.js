@@ -4,7 +4,7 @@
 // slider per component. A shader without a control block gets no "Shader controls" folder.
 
 import GUI from 'lil-gui';
-import { MAX_SCALE, MIN_SCALE } from '../app/canvas-size.js';
+import { MAX_SCALE, MIN_SCALE } from '../../shared/canvas-limits.js';
 import { controlApplies } from '../../shadertoy/controls.js';
 
 const COMPONENTS = ['x', 'y', 'z', 'w'];

@@ -2,7 +2,9 @@
 // and frames, frames per second, size (the canvas's by default); "Start" records (recorder.js)
 // with a progress bar, "Cancel" stops the recording (nothing is saved) or closes the popover.
 
-import { MAX_FPS, MAX_FRAMES, Recorder, RecordingCancelled } from '../io/recorder.js';
+import { MAX_FPS, MAX_FRAMES, RecordingCancelled } from '../io/recorder.js';
+
+/** @typedef {import('../io/recorder.js').Recorder} Recorder */
 import { recordingFileName } from '../io/file-names.js';
 import { element, placeAbove, saveBlob } from './dom.js';
 
@@ -16,15 +18,15 @@ function field(label, input) {
 }
 
 /**
- * Adds "Record" to the toolbar's output buttons (after "Screenshot").
+ * Adds "Record" to the toolbar's output buttons (after "Screenshot"), a view on the page's
+ * recorder (main.js owns it, and gives it to window.raytracer too).
  * @param {RaytracerApp} app
+ * @param {Recorder} recorder
  * @param {HTMLElement} toolbarRoot
  * @param {(text: string) => void} toast a short confirmation
  * @returns {{recorder: Recorder, open: () => void, close: () => void}}
  */
-export function installRecordDialog(app, toolbarRoot, toast) {
-  const recorder = new Recorder(app);
-
+export function installRecordDialog(app, recorder, toolbarRoot, toast) {
   const openButton = element(
     'button',
     {

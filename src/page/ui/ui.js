@@ -14,7 +14,7 @@ import { installSound } from '../sound/sound-controls.js';
 import { KeptWork } from '../kept-work.js';
 import { droppedKind } from '../io/shader-loader.js';
 import { shareLink } from '../io/share-link.js';
-import { shaderNotes } from '../io/project-files.js';
+import { missingLines } from '../io/project-files.js';
 import { openShader } from '../io/open-shader.js';
 import { installInspection } from '../inspect/inspection.js';
 
@@ -47,10 +47,11 @@ function activity(app) {
 
 /**
  * @param {RaytracerApp} app
- * @param {{builtinSource: string}} page the built-in raytracer's text (the float64 reference is its twin)
+ * @param {{builtinSource: string, recorder: import('../io/recorder.js').Recorder}} page the built-in
+ *   raytracer's text (the float64 reference is its twin), and the page's recorder
  * @returns the page's widgets and actions, for the automation hook and the tests
  */
-export function installUi(app, { builtinSource }) {
+export function installUi(app, { builtinSource, recorder }) {
   const stage = /** @type {HTMLElement} */ (document.getElementById('stage'));
   const statusLine = /** @type {HTMLElement} */ (document.getElementById('toast'));
   /** @type {ReturnType<typeof setTimeout> | undefined} */
@@ -82,7 +83,7 @@ export function installUi(app, { builtinSource }) {
   );
   const sound = installSound(app, { graph: toolbar.graph, stage }); // the Sound tab: player, mute, meter
   inspection.inspector.on('mode', () => toolbar.setInspecting(inspection.inspector.active));
-  const recording = installRecordDialog(app, toolbar.root, toast);
+  const recording = installRecordDialog(app, recorder, toolbar.root, toast);
   toolbar.fit(); // with "Record" in it
   installViewNote(app, stage);
   const panel = new Panel({
@@ -138,7 +139,7 @@ export function installUi(app, { builtinSource }) {
   /** A shader pasted into the editor is a new one: its notes show even if the last one had the same. */
   let pastedShader = false;
   const showNotes = () => {
-    const lines = [...new Set([...app.notes, ...shaderNotes(app.project)])];
+    const lines = missingLines(app);
     const key = lines.join('\n');
     // an edit of the same shader: said already (and maybe closed)
     if (key === notesShown && app.origin === 'editor' && !pastedShader) return;

@@ -25,7 +25,7 @@
 // them against the shader's controls (coerceControlValue), as it does for the panel and the
 // automation hook. formatUrlParams writes the same contract back (the "Copy link" button).
 
-import { MAX_PIXELS, MAX_SCALE, MAX_SIZE, MIN_SCALE, clampSize } from '../app/canvas-size.js';
+import { MAX_PIXELS, MAX_SCALE, MAX_SIZE, MIN_SCALE, clampSize } from './canvas-limits.js';
 
 /** The smallest cap= that caps; cap=0 means no cap, as the panel's "No cap". */
 const MIN_CAP = 16;
@@ -33,8 +33,8 @@ const MAX_SPEED = 16;
 const MAX_TIME = 1e6;
 const MAX_MOUSE = 1e6;
 /** The frame schedule's range (?fps=), frames a second. */
-const MIN_FPS = 1;
-const MAX_FPS = 240;
+export const MIN_FPS = 1;
+export const MAX_FPS = 240;
 export const CHANNEL_PARAMS = ['iChannel0', 'iChannel1', 'iChannel2', 'iChannel3'];
 
 function finiteNumbers(text) {
