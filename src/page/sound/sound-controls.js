@@ -30,7 +30,7 @@ export function installSound(app, { graph, stage }) {
     mute.textContent = player.muted ? '🔇' : '🔊';
     mute.setAttribute('aria-pressed', String(player.muted));
     mute.title = player.muted ? 'Unmute the Sound tab' : 'Mute the Sound tab';
-    soundNote(stage, player.waiting && !player.context);
+    soundNote(stage, player.waiting);
   };
   player.onChange = show;
   app.on('source', show);
