@@ -184,7 +184,7 @@ describe('never a silent half-render (issue 37, item 4)', () => {
           type: 'sound',
           name: 'Sound',
           code: 'vec2 mainSound(int s, float t) { return vec2(sin(6.2831 * 440.0 * t)); }',
-          inputs: [],
+          inputs: [{ id: 'XdX3Rn', filepath: '/media/a/noise.png', type: 'texture', channel: 0, sampler: {} }],
           outputs: [],
         },
       ],
@@ -200,7 +200,7 @@ describe('never a silent half-render (issue 37, item 4)', () => {
     expect(warnings.length, out.stderr).toBe(2);
     expect(warnings.every((w) => w.startsWith('warning: half.json: half.json runs without some of what it asks for: '))).toBe(true);
     expect(out.stderr).toMatch(VIDEO_LINE);
-    expect(out.stderr).toMatch(/Sound: sound passes are not played here/);
+    expect(out.stderr).toMatch(/Sound, iChannel0: the site's texture \/media\/a\/noise\.png is not available here/);
 
     fs.rmSync(path.join(folder, 'strict.png'), { force: true });
     const strict = await shaderproof('render', 'half.json', '-o', 'strict.png', '--size', '8x8', '--strict');

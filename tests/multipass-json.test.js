@@ -169,18 +169,21 @@ describe('Shadertoy JSON: loading', () => {
     });
   });
 
-  test('media the page cannot have: black channels and a note each; sound and cubemap passes noted, not run', () => {
+  test('media the page cannot have: black channels and a note each; a cubemap pass noted, not run; the Sound tab a pass', () => {
     const { model, notes } = fromShadertoyJson(MEDIA_EXPORT);
-    expect(model.passes).toHaveLength(1);
+    expect(model.passes.map((p) => [p.name, p.kind])).toEqual([
+      ['Image', 'image'],
+      ['Sound', 'sound'],
+    ]);
     expect(model.passes[0].channels.map((c) => [c.kind, 'supported' in c ? c.supported : true])).toEqual([
       ['texture', false],
       ['video', false],
       ['cubemap', false],
       ['webcam', false],
     ]);
-    expect(notes).toHaveLength(6);
+    expect(notes).toHaveLength(5);
     expect(notes[0]).toMatch(/^Image, iChannel0: the site's texture \/media\/a\/0a4056.*is not available here; the channel is black$/);
-    expect(notes.join('\n')).toMatch(/Sound: sound passes are not played here/);
+    expect(notes.join('\n')).not.toMatch(/Sound/); // it plays (sound.js)
     expect(notes.join('\n')).toMatch(/Cube A: cubemap passes are not rendered here/);
     const bindings = frameSchedule(model)[0].bindings;
     expect(bindings.map((b) => [b.source, b.samplerType])).toEqual([

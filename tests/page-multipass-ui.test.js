@@ -137,9 +137,9 @@ describe('loading Shadertoy JSON', () => {
         expect(notes?.kind).toBe('note');
         expect(notes?.title).toContain('media.json');
         expect(notes?.lines.some((l) => l.startsWith('Image, iChannel1:') && l.includes('texture') && l.includes('black'))).toBe(true);
-        expect(notes?.lines.some((l) => l.startsWith('Sound:') && l.includes('sound'))).toBe(true);
+        expect(notes?.lines.some((l) => l.startsWith('Sound'))).toBe(false); // the Sound tab plays (sound.js)
         expect(await overlayText(page)).toBeNull(); // nothing over the picture
-        expect(await editorTabs(page)).toEqual({ names: ['Common', 'Buffer A', 'Image'], selected: 'Image' });
+        expect(await editorTabs(page)).toEqual({ names: ['Common', 'Buffer A', 'Image', 'Sound'], selected: 'Image' });
         // an edit of the same shader does not bring a closed note back
         await page.click('#load-notes button');
         await typeInEditor(page, '\n// edited', 'end');

@@ -1,7 +1,8 @@
 // `shaderproof test DIR`: golden-image regression over a folder of any Shadertoy shaders. Each
 // .glsl or .json file under DIR is a case (manifest.js reads DIR/shaderproof.json for a case's
 // view, tolerance and checks); its reference is DIR/__references__/<case>.png, written by
-// --update and by nothing else. A case that fails leaves its actual, reference and diff PNGs in
+// --update and by nothing else (and a case with "sound", its Sound tab against <case>.wav there:
+// sound-compare.js). A case that fails leaves its actual, reference and diff PNGs in
 // the output folder; the run prints a table, writes junit.xml there, and exits 1 if any case
 // failed. A shader that does not compile, or never finishes (the watchdog), fails its own case
 // and the run goes on (session.js starts another browser after a hang).
@@ -14,6 +15,9 @@ import { allowedMissing, io, watchdog } from './io.js';
 import { findCases, readManifest, REFERENCE_DIR } from './manifest.js';
 import { junitXml } from './junit.js';
 import { renderShader } from './render.js';
+import { renderSound, writeWav } from './sound.js';
+import { rmsDifference, spectrumDifference } from './sound-compare.js';
+import { decodeWav } from '../shared/wav.js';
 import { CliError, startSession } from './session.js';
 import { DEFAULT_DATE, UsageError, dateLabel, readDate } from './view-options.js';
 
@@ -41,6 +45,45 @@ function halve({ width, height, data }) {
         out[(y * w + x) * 4 + c] = Math.round((at(0, 0) + at(1, 0) + at(0, 1) + at(1, 1)) / 4);
       }
   return { width: w, height: h, data: out };
+}
+
+/**
+ * A case's Sound tab against its reference WAV (written by --update): what failed, in words.
+ * @param {import('./session.js').Session} session
+ * @param {import('./manifest.js').TestCase} testCase
+ * @param {NonNullable<import('./manifest.js').TestCase['sound']>} sound
+ * @param {{update: boolean, out: string, notes: string[]}} run
+ */
+async function soundCase(session, testCase, { time, duration, tolerance, reference }, { update, out, notes }) {
+  const actual = await renderSound(session, testCase.file, testCase.view, { time, duration });
+  const actualFile = path.join(out, `${testCase.name}-actual.wav`);
+  fs.rmSync(actualFile, { force: true });
+  if (update) {
+    writeWav(reference, actual);
+    notes.push('sound reference written');
+    return [];
+  }
+  if (!fs.existsSync(reference)) {
+    writeWav(actualFile, actual);
+    return [`no sound reference at ${reference}: run with --update to write it`];
+  }
+  const expected = decodeWav(new Uint8Array(fs.readFileSync(reference)));
+  const failures = [];
+  if (expected.sampleRate !== actual.sampleRate || expected.channels !== 2)
+    failures.push(
+      `the sound reference is ${expected.channels} channels at ${expected.sampleRate} Hz, not stereo at ${actual.sampleRate} Hz`,
+    );
+  const rms = rmsDifference(actual.pcm, expected.pcm);
+  const spectrum = spectrumDifference(actual.pcm, expected.pcm);
+  notes.push(`sound: RMS difference ${rms.toExponential(2)}, spectrum ${(spectrum * 100).toFixed(2)}%`);
+  if (rms > tolerance.rms)
+    failures.push(`sound: the RMS difference from the reference is ${rms.toExponential(2)} (at most ${tolerance.rms})`);
+  if (spectrum > tolerance.spectrum)
+    failures.push(
+      `sound: the spectrum differs from the reference's by ${(spectrum * 100).toFixed(2)}% (at most ${tolerance.spectrum * 100}%)`,
+    );
+  if (failures.length) writeWav(actualFile, actual);
+  return failures;
 }
 
 /**
@@ -128,6 +171,7 @@ async function runCase(session, testCase, { update, out }) {
         if (!(Number.isFinite(data[i]) && Number.isFinite(data[i + 1]) && Number.isFinite(data[i + 2]))) bad++;
       if (bad) failures.push(`noNaN: ${bad} pixels have a NaN or infinite colour`);
     }
+    if (testCase.sound) failures.push(...(await soundCase(session, testCase, testCase.sound, { update, out, notes })));
     if (checks.maxFrameMs !== undefined) {
       const page = /** @type {import('puppeteer-core').Page} */ (session.page());
       await renderShader(session, testCase.file, testCase.view);

@@ -18,6 +18,7 @@ import { UsageError, VIEW_FLAGS, dateLabel, readNumber, readViewOptions } from '
 import { io, oneShader, sayNotes, watchdog } from './io.js';
 import { argumentError, joinDashValues } from './arguments.js';
 import { MAX_PIXELS, MAX_SIZE } from '../shared/canvas-limits.js';
+import { DEFAULT_SOUND_SECONDS, MAX_SOUND_SECONDS, SOUND_SAMPLE_RATE, renderSound, wavSummary, writeWav } from './sound.js';
 
 const NAME = 'shaderproof';
 
@@ -50,7 +51,7 @@ const COMMON_HELP = `  --gpu                 draw on this machine's GPU instead 
 
 const VERBS = {
   render: {
-    summary: 'draw one still of a shader into a PNG',
+    summary: 'draw one still of a shader into a PNG, or its sound into a WAV',
     usage: `${NAME} render SHADER -o OUT.png [options]
 
 Draws SHADER (a .glsl Image tab, or a Shadertoy JSON export) as the page does, and writes it.
@@ -63,7 +64,9 @@ ${VIEW_HELP}
   --converge N          the raytracer only: N progressive samples a pixel (its "Converge
                         when still"), a print-quality still
   -o, --output FILE     OUT.png, or OUT.pfm: the colours in float as the shader wrote them
-                        (Portable FloatMap, unclamped) (required)
+                        (Portable FloatMap, unclamped), or OUT.wav: the Sound tab (mainSound)
+                        as stereo 16-bit at 44100 Hz, from --time (required)
+  --duration S          a .wav's length in seconds (default 60, at most 180)
   --strict              a shader that went without an input or a pass it asks for is an
                         error, and nothing is written (else a warning line for each)
 ${COMMON_HELP}`,
@@ -75,6 +78,7 @@ ${COMMON_HELP}`,
       fps: { type: 'string' },
       converge: { type: 'string' },
       tile: { type: 'string' },
+      duration: { type: 'string' },
     },
     run: runRender,
   },
@@ -130,7 +134,9 @@ view, tolerance and checks:
                                "checks": { "deterministic": true, "halfSize": true,
                                            "maxFrameMs": 500 } } } }
 
-References are DIR/__references__/<case>.png, written only by --update. A failing case leaves
+References are DIR/__references__/<case>.png, written only by --update. A case with
+"sound": {"time": T, "duration": S, "tolerance": {"rms": r, "spectrum": s}} also compares its
+Sound tab with DIR/__references__/<case>.wav (RMS of the difference, and the spectrum). A failing case leaves
 actual, reference and diff PNGs in the output folder; the run writes a JUnit XML report there
 and exits 1 when a case fails.
 
@@ -166,6 +172,8 @@ Chromium is found at $CHROME_PATH, else the usual system paths.`;
 async function runRender({ values, positionals }) {
   const file = oneShader(positionals, 'render');
   if (!values.output) throw new UsageError('render: -o OUT.png is required');
+  if (/\.wav$/i.test(values.output)) return runRenderWav({ values, positionals });
+  if (values.duration !== undefined) throw new UsageError('--duration: the length of a .wav; a picture is one instant (--time)');
   const format = outputFormat(values.output);
   const view = readViewOptions(values, { width: 640, height: 360 });
   if (format === 'pfm' && view.frame !== null) throw new UsageError('-o .pfm: the float colours are of a still at --time, not of --frame');
@@ -197,6 +205,33 @@ async function runRender({ values, positionals }) {
     const { label: renderer } = await session.environment();
     const date = /\biDate\b/.test(text) ? `, iDate ${dateLabel(view.date)}` : '';
     io.out(`${values.output}: ${image.width}x${image.height}, ${renderer}${date}, ${((Date.now() - started) / 1000).toFixed(1)} s`);
+  } finally {
+    await session.close();
+  }
+  return 0;
+}
+
+/** `render -o OUT.wav`: the Sound tab's samples from --time for --duration seconds (sound.js). */
+async function runRenderWav({ values, positionals }) {
+  const file = oneShader(positionals, 'render');
+  for (const flag of ['frame', 'converge', 'tile'])
+    if (values[flag] !== undefined)
+      throw new UsageError(`--${flag}: not for a .wav, which is the Sound tab from --time for --duration seconds`);
+  const view = readViewOptions(values, { width: 64, height: 36 });
+  const time = view.time ?? 0;
+  const duration =
+    values.duration === undefined
+      ? DEFAULT_SOUND_SECONDS
+      : readNumber(values.duration, '--duration', { min: 1 / SOUND_SAMPLE_RATE, max: MAX_SOUND_SECONDS });
+  shaderKind(file);
+  const started = Date.now();
+  const session = await startSession({ gpu: values.gpu, ...watchdog(values.watchdog), say: io.err });
+  try {
+    const sound = await renderSound(session, file, view, { time, duration });
+    sayNotes(file, sound.notes, { strict: values.strict });
+    writeWav(values.output, sound);
+    const { label: renderer } = await session.environment();
+    io.out(`${values.output}: ${wavSummary(sound)}, from ${time} s, ${renderer}, ${((Date.now() - started) / 1000).toFixed(1)} s`);
   } finally {
     await session.close();
   }

@@ -10,6 +10,9 @@
 //         "checks": { "noNaN": true, "deterministic": true,
 //                     "halfSize": true | { "threshold": t, "maxDiffFraction": f },
 //                     "maxFrameMs": ms },
+//         "sound": { "time": T, "duration": S, "tolerance": { "rms": r, "spectrum": s } },
+//                                                (the Sound tab against DIR/__references__/<case>.wav:
+//                                                 sound-compare.js; from 0 s for 2 s by default)
 //         "allowMissing": ["iChannel2", "Sound", "Image/iChannel1"],  (inputs or passes the
 //                                                case may go without: else it fails)
 //         "skip": "why" } } }
@@ -21,6 +24,7 @@ import fs from 'node:fs';
 import path from 'node:path';
 import { CliError } from './session.js';
 import { readViewOptions } from './view-options.js';
+import { DEFAULT_SOUND_TOLERANCE } from './sound-compare.js';
 
 const MANIFEST = 'shaderproof.json';
 export const REFERENCE_DIR = '__references__';
@@ -33,7 +37,23 @@ const DEFAULT_TOLERANCE = Object.freeze({ threshold: 0, maxDiffPixels: 0 });
 const DEFAULT_HALF_SIZE = Object.freeze({ threshold: 0.1, maxDiffFraction: 0.05 });
 const DEFAULT_SIZE = { width: 320, height: 180 };
 
-const CASE_KEYS = ['size', 'time', 'frame', 'mouse', 'date', 'fps', 'set', 'channels', 'tolerance', 'checks', 'allowMissing', 'skip'];
+const CASE_KEYS = [
+  'size',
+  'time',
+  'frame',
+  'mouse',
+  'date',
+  'fps',
+  'set',
+  'channels',
+  'tolerance',
+  'checks',
+  'sound',
+  'allowMissing',
+  'skip',
+];
+/** A sound case's default span: short, each second is a second of the GPU's time and of the file's. */
+const DEFAULT_SOUND_SPAN = Object.freeze({ time: 0, duration: 2 });
 const CHECK_KEYS = ['noNaN', 'deterministic', 'halfSize', 'maxFrameMs'];
 
 /**
@@ -45,6 +65,8 @@ const CHECK_KEYS = ['noNaN', 'deterministic', 'halfSize', 'maxFrameMs'];
  * @property {import('./view-options.js').ViewOptions} view
  * @property {{threshold: number, maxDiffPixels: number}} tolerance
  * @property {{noNaN?: boolean, deterministic?: boolean, halfSize?: {threshold: number, maxDiffFraction: number}, maxFrameMs?: number}} checks
+ * @property {{time: number, duration: number, tolerance: {rms: number, spectrum: number}, reference: string} | null} sound
+ *   the Sound tab compared with its reference WAV (sound-compare.js), or null
  * @property {string[]} allowMissing what the case may go without (io.js allowedMissing)
  * @property {string | null} skip
  */
@@ -136,7 +158,30 @@ function readCase(where, entry, dir) {
   const allowMissing = entry.allowMissing ?? [];
   if (!Array.isArray(allowMissing) || !allowMissing.every((a) => typeof a === 'string' && a))
     fail('"allowMissing" is a list of pass names and channels, such as ["iChannel2", "Sound", "Image/iChannel1"]');
-  return { view: /** @type {import('./view-options.js').ViewOptions} */ (view), tolerance, checks, allowMissing, skip };
+  const sound = entry.sound === undefined ? null : readSound(entry.sound, fail);
+  return { view: /** @type {import('./view-options.js').ViewOptions} */ (view), tolerance, checks, sound, allowMissing, skip };
+}
+
+/**
+ * A case's "sound": its span and tolerances (the reference's path is findCases').
+ * @param {any} given
+ * @param {(message: string) => never} fail
+ */
+function readSound(given, fail) {
+  if (given === null || typeof given !== 'object' || Array.isArray(given))
+    fail('"sound" is {"time": T, "duration": S, "tolerance": {"rms": r, "spectrum": s}}');
+  const unknown = Object.keys(given).filter((k) => !['time', 'duration', 'tolerance'].includes(k));
+  if (unknown.length) fail(`unknown sound key ${unknown.join(', ')} (expected time, duration, tolerance)`);
+  const span = { ...DEFAULT_SOUND_SPAN, ...given };
+  if (typeof span.time !== 'number' || !(span.time >= 0)) fail(`sound time is ${JSON.stringify(span.time)}, not seconds >= 0`);
+  if (typeof span.duration !== 'number' || !(span.duration > 0 && span.duration <= 180))
+    fail(`sound duration is ${JSON.stringify(span.duration)}, not seconds from 0 to 180`);
+  const tolerance = { ...DEFAULT_SOUND_TOLERANCE, ...(given.tolerance ?? {}) };
+  for (const [key, value] of Object.entries(tolerance)) {
+    if (!(key in DEFAULT_SOUND_TOLERANCE)) fail(`unknown sound tolerance ${key} (expected rms, spectrum)`);
+    if (typeof value !== 'number' || !(value >= 0)) fail(`sound tolerance ${key} is ${JSON.stringify(value)}, not a number >= 0`);
+  }
+  return { time: span.time, duration: span.duration, tolerance, reference: '' };
 }
 
 /**
@@ -162,12 +207,14 @@ export function findCases(dir, manifest, { date } = {}) {
       tolerance: { ...(manifest.defaults.tolerance ?? {}), ...(own.tolerance ?? {}) },
     };
     const file = path.join(dir, name);
+    const read = readCase(name, merged, dir);
+    if (read.sound) read.sound.reference = path.join(dir, REFERENCE_DIR, `${name}.wav`);
     return {
       name,
       file,
       kind: /\.json$/i.test(name) ? /** @type {const} */ ('json') : /** @type {const} */ ('glsl'),
       reference: path.join(dir, REFERENCE_DIR, `${name}.png`),
-      ...readCase(name, merged, dir),
+      ...read,
     };
   });
 }

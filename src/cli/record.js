@@ -46,7 +46,7 @@ export async function runRecord({ values, positionals }) {
     }
     writeWhole(output, Buffer.from(result.data, 'base64'));
     const { label: renderer } = await session.environment();
-    const what = format === 'webm' ? `${result.codec} video` : 'PNGs in a zip';
+    const what = format === 'webm' ? `${result.codec} video${result.audio ? `, its Sound tab in ${result.audio}` : ''}` : 'PNGs in a zip';
     io.out(
       `${output}: ${result.frames} frames at ${result.fps} fps, ${result.width}x${result.height}, ${what}, ${renderer}, ${((Date.now() - started) / 1000).toFixed(1)} s`,
     );

@@ -59,6 +59,17 @@
 //                         file: a shader with buffers has every frame before it drawn first
 //                         (recorder.js frameAt); no cap on `frame`. `data` is base64 RGBA8, rows
 //                         top to bottom. Its progress is recording()'s.
+//   renderSound({time, duration})  Promise<{sampleRate, channels, samples, data}>: the Sound
+//                         tab's samples from `time` (default 0) for `duration` seconds (default
+//                         60, as the site's WAV export), drawn as the site draws them
+//                         (sound/sound-pass.js); `data` is base64 of interleaved little-endian
+//                         Int16 (left, right). Rejects for a shader without a Sound tab.
+//   soundState()          {available (a Sound tab), context (the AudioContext's state, null
+//                         before the first click or key), muted, plan ({sample, when, rate,
+//                         time}: sample `sample` plays at audio-clock time `when`, planned at
+//                         iTime `time`: sound/schedule.js; null when silent), now (the audio
+//                         clock), sources (blocks playing or scheduled), level (RMS)}
+//   setMuted(on)          the Sound tab's mute button
 //   cancelRecording()     stops the recording under way (this one or the Record button's).
 //   recording()           {busy, done, total}: whether a recording is under way, and how many
 //                         frames of the last record() or frameAt() are done, of how many.
@@ -97,6 +108,8 @@ import { toBase64 } from '../shared/pixels.js';
 import { median } from '../shared/stats.js';
 import { openShader, openShaderUrl } from './io/open-shader.js';
 import { singlePass } from '../shadertoy/multipass.js';
+import { SAMPLE_RATE, toPcm16 } from '../shadertoy/sound.js';
+import { hasSound, sampleRange, soundSamples } from './sound/samples.js';
 import { markApp, markStartupFailure } from './page-marks.js';
 
 /** The window, with the hook. @type {Window & {raytracer?: object}} */
@@ -304,6 +317,29 @@ export function installAutomation(app, ready, { open, recorder, ui: pageUi }) {
       const { data, ...size } = await recorder.frameAt(request, (done, total) => (recorded = { done, total }));
       return { ...size, data: toBase64(data) };
     },
+    /** @param {{time?: number, duration?: number}} [request] */
+    async renderSound({ time = 0, duration = 60 } = {}) {
+      await settled();
+      if (!hasSound(app)) throw new Error('this shader has no Sound tab');
+      const { first, count } = sampleRange(time, duration);
+      const pcm = toPcm16(await soundSamples(app, first, count));
+      return { sampleRate: SAMPLE_RATE, channels: 2, samples: count, data: toBase64(new Uint8Array(pcm.buffer)) };
+    },
+    soundState() {
+      const player = widgets().sound;
+      const context = player.context;
+      return structuredClone({
+        available: player.available,
+        context: context?.state ?? null,
+        muted: player.muted,
+        plan: player.plan,
+        now: context?.currentTime ?? null,
+        sources: player.sourceCount,
+        level: player.level(),
+      });
+    },
+    /** @param {boolean} muted */
+    setMuted: (muted) => widgets().sound.setMuted(Boolean(muted)),
     cancelRecording: () => recorder.cancel(),
     recording: () => ({ busy: recorder.busy, ...recorded }),
 

@@ -16,7 +16,8 @@
 //
 // Lossless: fromShadertoyJson(toShadertoyJson(model)).model equals model, and fields the model
 // does not hold (descriptions, `published`, `srgb`, `internal`, a media input's id, unknown keys,
-// sound and cubemap passes) ride along in `extra` and are written back.
+// cubemap passes) ride along in `extra` and are written back. The Sound tab is a pass of kind
+// 'sound' (sound.js renders it).
 
 import { BUFFER_NAMES, DEFAULT_SAMPLER, MultipassError, bufferPassName, unsupportedNote, validateModel } from './multipass.js';
 
@@ -25,7 +26,7 @@ const LEGACY_IDS = { A: 257, B: 258, C: 259, D: 260, keyboard: 33, image: 37 };
 const BUFFER_FILE = (/** @type {string} */ b) => `/media/previz/buffer0${BUFFER_NAMES.indexOf(/** @type {any} */ (b))}.png`;
 const KEYBOARD_FILE = '/presets/tex00.jpg';
 const MEDIA_TYPES = ['texture', 'cubemap', 'volume', 'video', 'webcam', 'music', 'musicstream', 'mic'];
-const UNSUPPORTED_PASSES = { sound: 'sound passes are not played here', cubemap: 'cubemap passes are not rendered here' };
+const UNSUPPORTED_PASSES = { cubemap: 'cubemap passes are not rendered here' };
 
 /**
  * How a file writes ids and keys: the site's current style or the older one.
@@ -38,7 +39,7 @@ const SITE_STYLE = Object.freeze({ ids: 'site', typeKey: 'type', srcKey: 'filepa
  * @param {string | object} json the text or the parsed value: `{Shader: {info, renderpass}}`,
  *   `{info, renderpass}`, or an array of one of those (as the API's batch answers)
  * @returns {{model: import('./multipass.js').MultipassShader, info: Record<string, any>, notes: string[]}}
- *   notes: what the page will not do (media it cannot have, sound and cubemap passes)
+ *   notes: what the page will not do (media it cannot have, cubemap passes)
  * @throws {MultipassError} for a file that is not a shader, naming the pass at fault
  */
 export function fromShadertoyJson(json) {
@@ -80,12 +81,13 @@ export function fromShadertoyJson(json) {
       if (Object.keys(commonExtra).length) extra.commonPass = commonExtra;
       return;
     }
-    if (raw.type !== 'image' && raw.type !== 'buffer') throw new MultipassError(`${where}: unknown pass type ${JSON.stringify(raw.type)}`);
+    if (raw.type !== 'image' && raw.type !== 'buffer' && raw.type !== 'sound')
+      throw new MultipassError(`${where}: unknown pass type ${JSON.stringify(raw.type)}`);
     const buffer = raw.type === 'buffer' ? bufferWritten(raw, where) : null;
-    const name = buffer ? bufferPassName(buffer) : 'Image';
+    const name = buffer ? bufferPassName(buffer) : raw.type === 'sound' ? 'Sound' : 'Image';
     const channels = readInputs(raw.inputs, name, style, notes);
     /** @type {import('./multipass.js').Pass} */
-    const pass = { name, kind: raw.type, buffer, code: raw.code, channels };
+    const pass = /** @type {import('./multipass.js').Pass} */ ({ name, kind: raw.type, buffer, code: raw.code, channels });
     const passExtra = leftover(raw, { ...writePass({ ...pass, channels: [null, null, null, null] }, style), inputs: raw.inputs });
     if (Object.keys(passExtra).length) pass.extra = passExtra;
     model.passes.push(pass);
@@ -249,7 +251,8 @@ function writePass(pass, style) {
   });
   return {
     inputs,
-    outputs: [{ id: pass.kind === 'image' ? ids.image : ids[pass.buffer], channel: 0 }],
+    // the Sound tab writes no texture: its outputs, if a file has any, ride in its extra
+    outputs: pass.kind === 'sound' ? [] : [{ id: pass.kind === 'image' ? ids.image : ids[pass.buffer], channel: 0 }],
     code: pass.code,
     name: pass.name,
     description: '',

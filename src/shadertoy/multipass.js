@@ -37,8 +37,10 @@ export const BUFFER_NAMES = Object.freeze(/** @type {const} */ (['A', 'B', 'C', 
  *   have: the renderer binds a black texture (of the sampler type the kind needs) and shows a note
  * @typedef {BufferChannel | KeyboardChannel | MediaChannel} Channel
  * @typedef {{name: string, code: string, channels: Array<Channel | null>, extra?: Record<string, any>}
- *   & ({kind: 'buffer', buffer: BufferName} | {kind: 'image', buffer: null})} Pass four channels, null = nothing bound;
- *   a buffer pass writes its buffer, the Image pass none
+ *   & ({kind: 'buffer', buffer: BufferName} | {kind: 'image' | 'sound', buffer: null})} Pass four channels, null = nothing bound;
+ *   a buffer pass writes its buffer, the Image pass none; the Sound tab (kind 'sound', at most
+ *   one) is no part of a frame: sound.js renders it
+ * @typedef {Pass & {kind: 'image' | 'buffer'}} FramePass a pass drawn every frame (not the Sound tab)
  * @typedef {{common: string | null, passes: Pass[], extra?: Record<string, any>}} MultipassShader
  */
 
@@ -84,13 +86,17 @@ export function validateModel(model) {
     const where = pass.name || '(unnamed pass)';
     // as a file may have them: what the checks are for
     const { kind, buffer } = /** @type {{kind: string, buffer: string | null}} */ (pass);
-    if (kind !== 'image' && kind !== 'buffer') throw new MultipassError(`${where}: unknown pass kind ${JSON.stringify(kind)}`);
+    if (kind !== 'image' && kind !== 'buffer' && kind !== 'sound')
+      throw new MultipassError(`${where}: unknown pass kind ${JSON.stringify(kind)}`);
+    if (kind === 'sound' && (seen.has('sound') || buffer !== null))
+      throw new MultipassError(`${where}: a shader has one Sound tab, which writes no buffer`);
+    if (kind === 'sound') seen.add('sound');
     if (typeof pass.code !== 'string') throw new MultipassError(`${where}: its code is not text`);
     if (pass.kind === 'buffer') {
       if (!BUFFER_NAMES.includes(pass.buffer)) throw new MultipassError(`${where}: writes no buffer A–D (${JSON.stringify(pass.buffer)})`);
       if (seen.has(pass.buffer)) throw new MultipassError(`${where}: Buffer ${pass.buffer} is written by two passes`);
       seen.add(pass.buffer);
-    } else if (buffer !== null) {
+    } else if (kind === 'image' && buffer !== null) {
       throw new MultipassError(`${where}: the Image pass writes the screen, not Buffer ${buffer}`);
     }
     if (!Array.isArray(pass.channels) || pass.channels.length !== 4) throw new MultipassError(`${where}: needs exactly four channels`);
@@ -118,17 +124,23 @@ export function validateModel(model) {
 }
 
 /**
+ * The Sound tab's pass, or null when the shader has none.
+ * @param {MultipassShader} model
+ */
+export const soundPass = (model) => model.passes.find((p) => p.kind === 'sound') ?? null;
+
+/**
  * The passes in the order they paint every frame: the buffers A, B, C, D (those present), then
  * Image. (The site paints the buffer passes in the order of its pass list, Effect.Paint; A–D is
  * the order its editor adds them in and the order this project fixes.)
  * @param {MultipassShader} model
- * @returns {Pass[]}
+ * @returns {FramePass[]}
  */
 export function renderOrder(model) {
   const buffers = BUFFER_NAMES.map((b) => model.passes.find((p) => p.kind === 'buffer' && p.buffer === b)).filter((p) => p !== undefined);
   const image = model.passes.find((p) => p.kind === 'image');
   if (!image) throw new MultipassError('a shader needs exactly one Image pass, this one has 0');
-  return [...buffers, image];
+  return /** @type {FramePass[]} */ ([...buffers, image]);
 }
 
 /**
@@ -155,7 +167,7 @@ export function renderOrder(model) {
  * follows it literally: render `pass` into its buffer's texture not written last (or the canvas
  * for Image), with channel i bound to `bindings[i]`; after a buffer pass, swap its textures.
  * @param {MultipassShader} model
- * @returns {Array<{pass: Pass, target: BufferName | 'screen', bindings: ChannelBinding[]}>}
+ * @returns {Array<{pass: FramePass, target: BufferName | 'screen', bindings: ChannelBinding[]}>}
  */
 export function frameSchedule(model) {
   const order = renderOrder(model);
@@ -163,7 +175,7 @@ export function frameSchedule(model) {
   const written = (/** @type {BufferName} */ b) => order.findIndex((p) => p.buffer === b);
   return order.map((pass, index) => ({
     pass,
-    target: pass.kind === 'image' ? 'screen' : pass.buffer,
+    target: pass.kind === 'buffer' ? pass.buffer : 'screen',
     bindings: pass.channels.map((channel, i) => {
       /** @type {ChannelBinding} */
       if (channel === null) return { channel: i, source: 'none', samplerType: '2D', resolution: [0, 0, 0] };

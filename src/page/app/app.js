@@ -177,9 +177,9 @@ export class RaytracerApp extends Emitter {
     return this.project.passes.some((pass) => pass.channels.some((channel) => channel?.kind === 'keyboard'));
   }
 
-  /** Whether the shader has a Common tab or a buffer. */
+  /** Whether the shader has a Common tab or a buffer (a Sound tab is no part of a frame). */
   get isMultipass() {
-    return this.project.common !== null || this.project.passes.length > 1;
+    return this.project.common !== null || this.project.passes.filter((pass) => pass.kind !== 'sound').length > 1;
   }
 
   /**

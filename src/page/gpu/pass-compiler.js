@@ -117,6 +117,19 @@ export class PassCompiler {
   }
 
   /**
+   * One pass outside the frame's schedule (the Sound tab: src/page/sound/sound-pass.js),
+   * compiled and kept as the frame's passes are; rejects with a ShaderCompileError.
+   * @param {{code: string, firstSourceLine: number}} composed
+   * @param {{userText: string, sections: PassSection[] | null}} check
+   * @param {() => Record<string, {value: any}>} uniforms
+   */
+  async compileOne(composed, check, uniforms) {
+    const material = await this._compileMaterial(composed, check, uniforms);
+    this._remember(material.fragmentShader, material);
+    return material;
+  }
+
+  /**
    * One pass's material, compiled (or the one kept from before for the same code).
    * @param {{code: string, firstSourceLine: number}} composed
    * @param {{userText: string, sections: import('../../shadertoy/header.js').PassSection[] | null}} check

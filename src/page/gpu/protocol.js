@@ -79,6 +79,9 @@ import { ShaderCompileError, WebGL2UnavailableError } from './errors.js';
  *   the path probe (src/raytracer/path-probe.js), never shown; `key` comes back with each probe
  * @property {[{x: number, y: number}, ProbedPixel]} probe pixel (x, y) of the last frame drawn (y
  *   from the bottom), read after the frames before it; rejects before the first frame
+ * @property {[{first: number, count: number, date: number[]}, Uint16Array]} sound samples [first,
+ *   first + count) of the Sound tab of the shader on screen, two 16-bit words a sample (left,
+ *   right: src/shadertoy/sound.js); rejects for a shader without one
  * @property {[{inputs: FrameInputs, n: number}, number[]]} bench n whole frames back to back, each
  *   one draw waited for: their times in ms
  */

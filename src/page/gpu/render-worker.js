@@ -347,7 +347,9 @@ const tell = serve(
   {
     async compile({ project, hostBlock, fileName, serial }) {
       try {
+        const sound = await renderer().sound.compile(project); // the Sound tab, if any (sound-pass.js)
         await renderer().compile(project, hostBlock, fileName, serial);
+        if (renderer().installed === serial) renderer().sound.install(sound);
         changed();
         return null;
       } finally {
@@ -399,6 +401,10 @@ const tell = serve(
       const stale = waiting.findIndex((queued) => queued.kind === 'probe' && !queued.warmUp);
       if (stale >= 0) waiting.splice(stale, 1)[0].reject(new Error('replaced by a newer probe'));
       return enqueueProbe({ x, y });
+    },
+
+    sound({ first, count, date }) {
+      return renderer().sound.render(first, count, date);
     },
 
     bench({ inputs, n }) {

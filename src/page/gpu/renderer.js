@@ -20,6 +20,7 @@ import { WebGL2UnavailableError } from './errors.js';
 import { PassCompiler, VERTEX_SHADER } from './pass-compiler.js';
 import { ChannelSamplers, bindChannels, imageTexture, ownChannelUniforms, setMedia } from './channel-bindings.js';
 import { PixelProbe } from './probe.js';
+import { SoundPass } from '../sound/sound-pass.js';
 import { sendVerbatimSources } from './verbatim-source.js';
 import { TILE_OFFSET_UNIFORM } from '../../shadertoy/header.js';
 
@@ -84,7 +85,10 @@ export class ShaderRenderer {
       geometry,
       this.camera,
       (material) =>
-        this.steps.some((step) => step.material === material) || this.probe.uses(material) || this.tiledStep?.material === material,
+        this.steps.some((step) => step.material === material) ||
+        this.probe.uses(material) ||
+        this.tiledStep?.material === material ||
+        this.sound.material === material,
     );
 
     /** Where frames are drawn and kept (RGBA8, as the page's canvas): the page shows copies of it. */
@@ -128,6 +132,8 @@ export class ShaderRenderer {
     this.tiledStep = null;
     /** The pixel inspector's reads, and the path probe (probe.js). */
     this.probe = new PixelProbe(this);
+    /** The Sound tab (sound-pass.js). */
+    this.sound = new SoundPass(this);
   }
 
   /** True once some shader has compiled (render() draws nothing before). */

@@ -1,4 +1,4 @@
-// A shader as the page's files hold it: its tabs (Common, Buffer A–D, Image) as the editor shows
+// A shader as the page's files hold it: its tabs (Common, Buffer A–D, Image, Sound) as the editor shows
 // them, a text that may be a plain Image-tab shader or Shadertoy's JSON export, the text kept in
 // the browser's storage, and the names of the files the page saves. Pure: no DOM here.
 
@@ -18,7 +18,7 @@ function isSinglePass(model) {
 }
 
 /**
- * The model's tabs in the editor's order: Common (if any), the buffers A–D it has, Image.
+ * The model's tabs in the editor's order: Common (if any), the buffers A–D it has, Image, Sound (if any).
  * @param {MultipassShader} model
  * @returns {Tab[]}
  */
@@ -32,6 +32,8 @@ export function projectTabs(model) {
   }
   const image = model.passes.find((p) => p.kind === 'image');
   if (image) tabs.push({ name: 'Image', code: image.code });
+  const sound = model.passes.find((p) => p.kind === 'sound');
+  if (sound) tabs.push({ name: 'Sound', code: sound.code });
   return tabs;
 }
 

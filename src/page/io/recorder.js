@@ -1,11 +1,14 @@
 // Recording: the running shader drawn frame by frame, off screen, at a fixed frame rate and size,
 // into a WebM video (the browser's WebCodecs VideoEncoder, VP9 or VP8, muxed by mediabunny) or a
-// .zip of numbered PNGs (fflate). Frame i has iTime = i / fps, iTimeDelta = 1 / fps,
-// iFrameRate = fps and iFrame = i, whatever the frame costs to draw, so a shader that takes
-// seconds per frame still records smoothly. The live frame loop is paused meanwhile (and plays
+// .zip of numbered PNGs (fflate). A shader with a Sound tab gets an Opus track in the WebM
+// (sound/sound-track.js); a zip of PNGs has no sound (`render -o OUT.wav` makes it). Frame i has
+// iTime = i / fps, iTimeDelta = 1 / fps, iFrameRate = fps and iFrame = i, whatever the frame
+// costs to draw, so a shader that takes seconds per frame still records smoothly. The live frame loop is paused meanwhile (and plays
 // again after, if it was playing); iMouse is the page's, scaled to the recording's size.
 
 import { fitGpu } from '../app/canvas-size.js';
+import { addSoundTrack } from '../sound/sound-track.js';
+import { hasSound, sampleRange, soundSamples } from '../sound/samples.js';
 
 /** @typedef {import('../app/app.js').RaytracerApp} RaytracerApp */
 /** @typedef {import('../gpu/protocol.js').FrameInputs} FrameInputs */
@@ -31,6 +34,7 @@ import { fitGpu } from '../app/canvas-size.js';
  * @property {number} height
  * @property {string} mimeType
  * @property {string} codec the video codec ('vp9', 'vp8'), or 'png'
+ * @property {'opus' | null} audio the WebM's audio track: the Sound tab in Opus, or none
  * @property {Uint8Array} bytes the file
  */
 
@@ -85,14 +89,20 @@ async function videoCodec(width, height, fps) {
   throw new Error(`this browser encodes neither VP9 nor VP8 at ${width}×${height}: record a PNG sequence`);
 }
 
-/** WebM: each frame into the VideoEncoder, each chunk it gives into mediabunny's WebM muxer. */
-async function webmWriter({ width, height, fps }) {
+/**
+ * WebM: each frame into the VideoEncoder, each chunk it gives into mediabunny's WebM muxer; with
+ * `sound` (a shader with a Sound tab), its samples for the frames' time as an Opus track.
+ * @param {{width: number, height: number, fps: number, sound: (() => Promise<Uint16Array>) | null}} settings
+ */
+async function webmWriter({ width, height, fps, sound }) {
   const codec = await videoCodec(width, height, fps);
   // loaded when first needed: mediabunny is a third of the page's script (measured below, README)
-  const { BufferTarget, EncodedPacket, EncodedVideoPacketSource, Output, WebMOutputFormat } = await import('mediabunny');
+  const { BufferTarget, EncodedAudioPacketSource, EncodedPacket, EncodedVideoPacketSource, Output, WebMOutputFormat } =
+    await import('mediabunny');
   const output = new Output({ format: new WebMOutputFormat(), target: new BufferTarget() });
   const source = new EncodedVideoPacketSource(codec.name);
   output.addVideoTrack(source, { frameRate: fps });
+  const soundTrack = sound ? await addSoundTrack(output, { EncodedAudioPacketSource, EncodedPacket }) : null;
   await output.start();
   /** @type {Promise<void>} the packets handed to the muxer, in order */
   let muxed = Promise.resolve();
@@ -137,6 +147,7 @@ async function webmWriter({ width, height, fps }) {
       await muxed;
       check();
       encoder.close();
+      if (soundTrack && sound) await soundTrack.write(await sound());
       await output.finalize();
       return new Uint8Array(/** @type {ArrayBuffer} */ (/** @type {import('mediabunny').BufferTarget} */ (output.target).buffer));
     },
@@ -203,7 +214,10 @@ export class Recorder {
   async record(request, onProgress = () => {}) {
     return this._frames(request, async (app, settings) => {
       const multipass = app.isMultipass;
-      const writer = settings.format === 'webm' ? await webmWriter(settings) : pngWriter(settings);
+      // the Sound tab's samples for the frames' time, from sample 0 at frame 0 (sound-track.js)
+      const { first, count } = sampleRange(0, settings.frames / settings.fps);
+      const sound = hasSound(app) ? () => soundSamples(app, first, count) : null;
+      const writer = settings.format === 'webm' ? await webmWriter({ ...settings, sound }) : pngWriter(settings);
       try {
         const frame = frameInputs(app, settings.fps);
         for (let i = 0; i < settings.frames; i++) {
@@ -216,7 +230,8 @@ export class Recorder {
         this._check();
         const bytes = await writer.finish();
         this._check();
-        return { ...settings, codec: writer.codec, mimeType: writer.mimeType, bytes };
+        const audio = sound && settings.format === 'webm' ? /** @type {const} */ ('opus') : null;
+        return { ...settings, codec: writer.codec, audio, mimeType: writer.mimeType, bytes };
       } catch (error) {
         await writer.cancel();
         throw error;

@@ -73,7 +73,7 @@ function showNote(stage, id, title, lines, kind = 'note') {
 }
 
 /**
- * The note on a loaded shader: what it cannot have (media its JSON names, its sound passes), or
+ * The note on a loaded shader: what it cannot have (media its JSON names, its cubemap passes), or
  * why a file could not be read as a shader (`kind` 'error').
  * @param {HTMLElement} stage
  * @param {string} title
@@ -81,6 +81,20 @@ function showNote(stage, id, title, lines, kind = 'note') {
  * @param {'note' | 'error'} [kind]
  */
 export const showLoadNotes = (stage, title, lines, kind = 'note') => showNote(stage, NOTE_ID, title, lines, kind);
+
+/**
+ * The note that a Sound tab waits for the person (browsers start no sound before a click or a
+ * key on the page), shown while `waiting`.
+ * @param {HTMLElement} stage
+ * @param {boolean} waiting
+ */
+export const soundNote = (stage, waiting) =>
+  showNote(
+    stage,
+    'sound-note',
+    'This shader has a Sound tab',
+    waiting ? ['It plays once you click or press a key on the page: browsers start no sound before.'] : [],
+  );
 
 /**
  * The note on what the page did with values it could not use as given (a link's, the panel's or

@@ -10,6 +10,7 @@ import { installRecordDialog } from './record-dialog.js';
 import { installShortcuts, watchKeyboard } from './keys.js';
 import { pageActions } from './actions.js';
 import { channelLoaded, installViewNote, showLoadNotes } from './notices.js';
+import { installSound } from '../sound/sound-controls.js';
 import { KeptWork } from '../kept-work.js';
 import { droppedKind } from '../io/shader-loader.js';
 import { shareLink } from '../io/share-link.js';
@@ -80,6 +81,7 @@ export function installUi(app, { builtinSource, recorder }) {
     { ...actions, toggleInspect: () => inspection.toggle(), compare: () => inspection.compare() },
     () => activity(app),
   );
+  const sound = installSound(app, { graph: toolbar.graph, stage }); // the Sound tab: player, mute, meter
   inspection.inspector.on('mode', () => toolbar.setInspecting(inspection.inspector.active));
   const recording = installRecordDialog(app, recorder, toolbar.root, toast);
   toolbar.fit(); // with "Record" in it
@@ -258,5 +260,5 @@ export function installUi(app, { builtinSource, recorder }) {
 
   /** The link that reproduces this view (share-link.js). */
   const shareUrl = async () => (await shareLink(app, kept.shippedBase())).url;
-  return { toast, toolbar, panel, editor, kept, actions, shareUrl, recording, open, inspection };
+  return { toast, toolbar, panel, editor, kept, actions, shareUrl, recording, open, inspection, sound };
 }

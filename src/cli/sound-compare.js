@@ -1,0 +1,99 @@
+// `test`'s comparison of a case's sound with its reference WAV (manifest.js "sound"): the RMS of
+// the sample-by-sample difference, and the difference of their spectra, each against a
+// tolerance. The spectrum is Welch's: the mean magnitude of Hann-windowed frames of SPECTRUM_SIZE
+// samples, half overlapping, per channel; its difference is the summed absolute difference of
+// the two spectra over the reference's sum (0: the same spectrum, 1: as far off as the whole of it).
+// A spectrum check passes sound that is the same music a few samples late; the RMS one does not.
+
+/** Samples a spectrum frame (a power of two: about 93 ms at 44,100 Hz). */
+const SPECTRUM_SIZE = 4096;
+
+/** The default tolerances: a few 16-bit steps of RMS, 1% of the spectrum. */
+export const DEFAULT_SOUND_TOLERANCE = Object.freeze({ rms: 1e-4, spectrum: 0.01 });
+
+/**
+ * The RMS of the difference of two interleaved 16-bit sounds, in full scale (1 = 32768); a
+ * shorter one is taken as silence past its end.
+ * @param {Int16Array} a
+ * @param {Int16Array} b
+ */
+export function rmsDifference(a, b) {
+  const n = Math.max(a.length, b.length);
+  if (!n) return 0;
+  let sum = 0;
+  for (let i = 0; i < n; i++) {
+    const d = ((a[i] ?? 0) - (b[i] ?? 0)) / 32768;
+    sum += d * d;
+  }
+  return Math.sqrt(sum / n);
+}
+
+/**
+ * How far the spectrum of `actual` is from the reference's (the larger of the two channels').
+ * @param {Int16Array} actual interleaved stereo
+ * @param {Int16Array} reference interleaved stereo
+ */
+export function spectrumDifference(actual, reference) {
+  let worst = 0;
+  for (const c of [0, 1]) {
+    const a = spectrum(actual, c);
+    const b = spectrum(reference, c);
+    let diff = 0;
+    let total = 0;
+    for (let k = 0; k < b.length; k++) {
+      diff += Math.abs(a[k] - b[k]);
+      total += b[k];
+    }
+    worst = Math.max(worst, total > 0 ? diff / total : diff > 0 ? 1 : 0);
+  }
+  return worst;
+}
+
+/** Channel c's Welch spectrum: SPECTRUM_SIZE / 2 magnitudes. */
+function spectrum(pcm, c) {
+  const length = pcm.length / 2;
+  const out = new Float64Array(SPECTRUM_SIZE / 2);
+  const re = new Float64Array(SPECTRUM_SIZE);
+  const im = new Float64Array(SPECTRUM_SIZE);
+  let frames = 0;
+  for (let start = 0; start === 0 || start + SPECTRUM_SIZE <= length; start += SPECTRUM_SIZE / 2) {
+    for (let i = 0; i < SPECTRUM_SIZE; i++) {
+      const hann = 0.5 - 0.5 * Math.cos((2 * Math.PI * i) / SPECTRUM_SIZE);
+      re[i] = start + i < length ? (pcm[2 * (start + i) + c] / 32768) * hann : 0;
+      im[i] = 0;
+    }
+    fft(re, im);
+    for (let k = 0; k < out.length; k++) out[k] += Math.hypot(re[k], im[k]);
+    frames++;
+  }
+  for (let k = 0; k < out.length; k++) out[k] /= frames;
+  return out;
+}
+
+/** An in-place radix-2 FFT of re + i·im (length a power of two). */
+function fft(re, im) {
+  const n = re.length;
+  for (let i = 1, j = 0; i < n; i++) {
+    let bit = n >> 1;
+    for (; j & bit; bit >>= 1) j ^= bit;
+    j ^= bit;
+    if (i < j) {
+      [re[i], re[j]] = [re[j], re[i]];
+      [im[i], im[j]] = [im[j], im[i]];
+    }
+  }
+  for (let size = 2; size <= n; size <<= 1) {
+    const step = (-2 * Math.PI) / size;
+    for (let start = 0; start < n; start += size)
+      for (let k = 0; k < size / 2; k++) {
+        const [wr, wi] = [Math.cos(step * k), Math.sin(step * k)];
+        const [p, q] = [start + k, start + k + size / 2];
+        const tr = re[q] * wr - im[q] * wi;
+        const ti = re[q] * wi + im[q] * wr;
+        re[q] = re[p] - tr;
+        im[q] = im[p] - ti;
+        re[p] += tr;
+        im[p] += ti;
+      }
+  }
+}

@@ -1,0 +1,145 @@
+// The Sound tab on the GPU, in the render worker: compiled with the shader's other passes, and
+// drawn a block at a time into a 512 × 512 RGBA8 target that is read back and unpacked into
+// 16-bit words (src/shadertoy/sound.js: the site's layout, offsets and packing). The page's
+// playback, the command line's WAV, the recorder's Opus track and `test`'s comparison all take
+// their samples from here.
+//
+// A room of its own (src/page/sound/), as inspect/ is: gpu/ and app/ hold twelve modules each
+// already, and the sound's worker side and page side belong to one feature.
+
+import * as THREE from 'three';
+import { ShaderCompileError } from '../gpu/errors.js';
+import { formatPassMessages } from '../../shadertoy/pass-errors.js';
+import { channelTypes, soundPass } from '../../shadertoy/multipass.js';
+import {
+  BLOCK_SAMPLES,
+  BLOCK_SIDE,
+  SAMPLE_OFFSET_UNIFORM,
+  SAMPLE_RATE,
+  TIME_OFFSET_UNIFORM,
+  composeSoundShader,
+  soundBlocks,
+  unpackBlock,
+} from '../../shadertoy/sound.js';
+
+/** Rendered blocks kept (a block is 1 MiB of words: about 6 s of sound). */
+const BLOCKS_KEPT = 8;
+
+export class SoundPass {
+  /** @param {import('../gpu/renderer.js').ShaderRenderer} renderer */
+  constructor(renderer) {
+    this.renderer = renderer;
+    /** The Sound tab's compiled material, or null for a shader without one. @type {THREE.RawShaderMaterial | null} */
+    this.material = null;
+    /** @type {THREE.WebGLRenderTarget | null} made on the first block */
+    this.target = null;
+    this.scene = new THREE.Scene();
+    this.mesh = new THREE.Mesh(renderer.mesh.geometry);
+    this.mesh.frustumCulled = false;
+    this.scene.add(this.mesh);
+    /** Blocks drawn since the last compile, by index. @type {Map<number, Uint16Array>} */
+    this.blocks = new Map();
+    /** iDate of the blocks kept. */
+    this.date = [0, 0, 0, 0];
+  }
+
+  /**
+   * Compiles the Sound tab of `project` (none: nothing to do, and no cost). Rejects with a
+   * ShaderCompileError naming the Sound tab's lines; the previous Sound tab stays then.
+   * @param {import('../../shadertoy/multipass.js').MultipassShader} project
+   * @returns {Promise<THREE.RawShaderMaterial | null>}
+   */
+  async compile(project) {
+    const pass = soundPass(project);
+    if (!pass) return null;
+    const composed = composeSoundShader(pass.code, { common: project.common, channelTypes: channelTypes(pass) });
+    const check = { userText: (project.common === null ? '' : project.common + '\n') + pass.code, sections: composed.sections };
+    try {
+      return await this.renderer.compiler.compileOne(composed, check, () => this.uniforms());
+    } catch (error) {
+      if (!error.messages) throw error;
+      // said as the other tabs' errors are: "Sound:3: ERROR: ..." with the line under it
+      const sources = { Common: project.common ?? '', Sound: pass.code };
+      throw new ShaderCompileError(formatPassMessages(error.messages, sources), error.messages);
+    }
+  }
+
+  /** Installs what compile() gave (after the other passes compiled): the blocks drawn before go. */
+  install(material) {
+    this.material = material;
+    this.blocks.clear();
+  }
+
+  /** The sound header's uniforms: the offsets, iDate, iSampleRate, black channels. */
+  uniforms() {
+    const black = this.renderer.uniforms.iChannel0.value;
+    return {
+      [TIME_OFFSET_UNIFORM]: { value: 0 },
+      [SAMPLE_OFFSET_UNIFORM]: { value: 0 },
+      iDate: { value: new THREE.Vector4() },
+      iSampleRate: { value: SAMPLE_RATE },
+      iChannelTime: { value: [0, 0, 0, 0] },
+      iChannelResolution: { value: new Array(12).fill(0) },
+      iChannel0: { value: black },
+      iChannel1: { value: black },
+      iChannel2: { value: black },
+      iChannel3: { value: black },
+    };
+  }
+
+  /**
+   * Samples [first, first + count) of the Sound tab as 16-bit words, two a sample (left,
+   * right), drawn in the site's whole blocks (so each sample's `time` is the site's to the bit).
+   * @param {number} first
+   * @param {number} count
+   * @param {number[]} date iDate (the site's is the date when the tab compiled)
+   * @returns {Uint16Array}
+   */
+  render(first, count, date) {
+    if (!this.material) throw new Error('this shader has no Sound tab');
+    if (date.some((v, i) => v !== this.date[i])) {
+      this.blocks.clear();
+      this.date = [...date];
+    }
+    const words = new Uint16Array(count * 2);
+    for (const index of soundBlocks(first, count)) {
+      const block = this._block(index);
+      const start = index * BLOCK_SAMPLES;
+      const from = Math.max(first, start);
+      const to = Math.min(first + count, start + BLOCK_SAMPLES);
+      words.set(block.subarray((from - start) * 2, (to - start) * 2), (from - first) * 2);
+    }
+    return words;
+  }
+
+  /** Block `index`, drawn and read back (or kept from before). */
+  _block(index) {
+    const kept = this.blocks.get(index);
+    if (kept) return kept;
+    const material = /** @type {THREE.RawShaderMaterial} */ (this.material);
+    this.target ??= new THREE.WebGLRenderTarget(BLOCK_SIDE, BLOCK_SIDE, {
+      format: THREE.RGBAFormat,
+      type: THREE.UnsignedByteType,
+      minFilter: THREE.NearestFilter,
+      magFilter: THREE.NearestFilter,
+      depthBuffer: false,
+      generateMipmaps: false,
+    });
+    const offset = index * BLOCK_SAMPLES;
+    material.uniforms[SAMPLE_OFFSET_UNIFORM].value = offset;
+    material.uniforms[TIME_OFFSET_UNIFORM].value = offset / SAMPLE_RATE;
+    material.uniforms.iDate.value.fromArray(this.date);
+    this.mesh.material = material;
+    const three = this.renderer.three;
+    three.setRenderTarget(this.target);
+    try {
+      three.render(this.scene, this.renderer.camera);
+    } finally {
+      three.setRenderTarget(null);
+    }
+    const words = unpackBlock(this.renderer.readTarget(this.target));
+    this.blocks.set(index, words);
+    for (const old of this.blocks.keys()) if (this.blocks.size > BLOCKS_KEPT) this.blocks.delete(old);
+    return words;
+  }
+}
