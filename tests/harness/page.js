@@ -108,26 +108,6 @@ export function decodeRgba(base64, width, height, what) {
 }
 
 /**
- * Brings the page to a view (tests/views.js: a fresh load for the first view of a test file,
- * window.raytracer.open() after), waits until its first frame, and reads one
- * rendered frame. Throws if the page reports a WebGL/compile error, logs a console error or
- * throws, renders a frame of the wrong size, or does not report the view's controls and time as
- * its current values (window.raytracer.info()).
- * @returns {Promise<{width:number, height:number, data:Buffer, url:string, frame:number, info:object}>}
- */
-export async function renderView(view) {
-  try {
-    return await renderViewOnce(view);
-  } catch (error) {
-    // Vite reloads a page when it discovers a dependency to pre-bundle during the load. That is
-    // the dev server, not the page: try once more, and say so.
-    if (!error.selfNavigated) throw error;
-    console.warn(`${view.name}: the page reloaded itself during the test (${error.message.split('\n')[0]}); retrying once`);
-    return await renderViewOnce(view);
-  }
-}
-
-/**
  * The page renderView draws on, kept for the rest of the test file: loaded at the first view's
  * URL, then brought to each next view by window.raytracer.open() (src/page/open-view.js), which
  * gives what a fresh load of that URL gives (tests/page-open.test.js) without loading the page
@@ -142,7 +122,15 @@ async function closeViewPage() {
   await session?.page.close().catch(() => {});
 }
 
-async function renderViewOnce(view) {
+/**
+ * Brings the page to a view (tests/views.js: a fresh load for the first view of a test file,
+ * window.raytracer.open() after), waits until its first frame, and reads one
+ * rendered frame. Throws if the page reports a WebGL/compile error, logs a console error or
+ * throws, renders a frame of the wrong size, or does not report the view's controls and time as
+ * its current values (window.raytracer.info()).
+ * @returns {Promise<{width:number, height:number, data:Buffer, url:string, frame:number, info:object}>}
+ */
+export async function renderView(view) {
   const reused = viewSession !== null && !viewSession.page.isClosed();
   if (!reused) viewSession = await openPage();
   const { page, context, errors: logged } = /** @type {NonNullable<typeof viewSession>} */ (viewSession);
@@ -161,10 +149,7 @@ async function renderViewOnce(view) {
   const fail = (message) => {
     const errors = errorsNow();
     const said = errors.length ? `\nThe page logged:\n  ${errors.join('\n  ')}` : '';
-    /** @type {Error & {selfNavigated?: boolean}} */
-    const error = new Error(`${view.name} (${url}): ${message}${said}`);
-    error.selfNavigated = navigations > 1;
-    return error;
+    return new Error(`${view.name} (${url}): ${message}${said}`);
   };
   try {
     const drawn = await drawView(page, { baseUrl: context.baseUrl, query, fresh: !reused }).catch((error) => {
