@@ -19,7 +19,7 @@ import { renderSound, writeWav } from './sound.js';
 import { rmsDifference, spectrumDifference } from './sound-compare.js';
 import { decodeWav } from '../shared/wav.js';
 import { CliError, startSession } from './session.js';
-import { DEFAULT_DATE, UsageError, dateLabel, readDate } from './view-options.js';
+import { DEFAULT_DATE, UsageError, dateLabel, readDate, readMediaOptions } from './view-options.js';
 
 /** "i/n" → {index (0-based), count}. @param {string | undefined} text */
 function readShard(text) {
@@ -197,7 +197,8 @@ export async function runTest({ values, positionals }) {
   const update = Boolean(values.update);
   const manifest = readManifest(dir);
   const runDate = dateLabel(readDate(values.date ?? DEFAULT_DATE)); // checked before any browser starts
-  const all = findCases(dir, manifest, { date: values.date });
+  const media = readMediaOptions(values); // --media and --fetch-media hold for every case
+  const all = findCases(dir, manifest, { date: values.date }).map((c) => (c.view ? { ...c, view: { ...c.view, media } } : c));
   if (!all.length) throw new CliError(`${positionals[0]}: no .glsl or .json shaders in it`);
   const cases = all.filter((_, i) => i % shard.count === shard.index);
   fs.mkdirSync(out, { recursive: true });

@@ -32,6 +32,13 @@ const COMMON_FLAGS = /** @type {const} */ ({
 /** A tiled still's largest size: its RGBA bytes are held in memory whole (1 GiB). */
 const MAX_TILED_PIXELS = 2 ** 28;
 
+const MEDIA_HELP = `  --media DIR           the site's media (textures, cubemaps, volumes) a Shadertoy JSON's
+                        channels name, from DIR laid out as the site's paths: DIR/a/<hash>.jpg
+                        for /media/a/<hash>.jpg
+  --fetch-media         download what DIR lacks from shadertoy.com once, into a cache
+                        ($SHADERPROOF_MEDIA_CACHE, else ~/.cache/shaderproof/media); off
+                        unless given`;
+
 const VIEW_HELP = `  --size WxH            canvas size in pixels (default 640x360)
   --time T              iTime in seconds, paused (default 0)
   --frame N             draw frames 0..N (iTime = i/60, iFrame = i) and keep frame N
@@ -41,7 +48,8 @@ const VIEW_HELP = `  --size WxH            canvas size in pixels (default 640x36
                         frame and a music's spectrum are those at the frame's iTime; the
                         webcam and microphone are the page's only)
   --date ISO|now        iDate at iTime 0 (default 2024-01-15T12:00:00Z, so that a clock draws
-                        the same on every run; "now" for the real date)`;
+                        the same on every run; "now" for the real date)
+${MEDIA_HELP}`;
 
 const COMMON_HELP = `  --gpu                 draw on this machine's GPU instead of SwiftShader
   --watchdog S          a frame unfinished after S seconds fails (default: 5 s a band of
@@ -96,6 +104,7 @@ iFrame = i, whatever a frame costs to draw.
   --set NAME=VALUE      a control of the shader (repeatable)
   --channel0..3 FILE    an image, video or music file for iChannel0..3, by its type
   --date ISO|now        iDate at iTime 0 (default 2024-01-15T12:00:00Z; "now": the real date)
+${MEDIA_HELP}
   -o, --output FILE     OUT.webm (VP9 or VP8) or OUT.zip (frame-0000.png, ...) (required)
   --strict              a shader that went without an input or a pass is an error
 ${COMMON_HELP}`,
@@ -111,14 +120,20 @@ ${COMMON_HELP}`,
   },
   open: {
     summary: 'serve the page on a shader file, reloading it when the file is saved',
-    usage: `${NAME} open SHADER [--port P]
+    usage: `${NAME} open SHADER [--port P] [--media DIR] [--fetch-media]
 
 Serves the page on SHADER (from anywhere on disk) and prints its URL; opens no browser. Saving
 the file recompiles it on every page that has it open. Ctrl-C stops.
 
   --port P              the port to listen on (default: a free one)
+${MEDIA_HELP}
   -h, --help            this help`,
-    flags: { help: { type: 'boolean', short: 'h' }, port: { type: 'string' } },
+    flags: {
+      help: { type: 'boolean', short: 'h' },
+      port: { type: 'string' },
+      media: { type: 'string' },
+      'fetch-media': { type: 'boolean' },
+    },
     run: runOpen,
   },
   test: {
@@ -145,10 +160,13 @@ and exits 1 when a case fails.
   --out DIR             output folder (default ./shaderproof-output)
   --date ISO|now        iDate at iTime 0 for cases whose manifest gives none (default
                         2024-01-15T12:00:00Z; "now" makes a clock's reference go stale)
+${MEDIA_HELP}
 ${COMMON_HELP}`,
     flags: {
       ...COMMON_FLAGS,
       date: { type: 'string' },
+      media: { type: 'string' },
+      'fetch-media': { type: 'boolean' },
       update: { type: 'boolean' },
       shard: { type: 'string' },
       out: { type: 'string' },

@@ -7,7 +7,8 @@ import path from 'node:path';
 import { builtPage, startPageServer } from '../engine/page-server.js';
 import { io, oneShader } from './io.js';
 import { CliError, shaderKind } from './session.js';
-import { readNumber } from './view-options.js';
+import { mediaFolders } from './media.js';
+import { readMediaOptions, readNumber } from './view-options.js';
 
 /**
  * @param {{values: Record<string, any>, positionals: string[]}} args
@@ -16,6 +17,7 @@ import { readNumber } from './view-options.js';
 export async function runOpen({ values, positionals }, { stopped } = {}) {
   const file = path.resolve(oneShader(positionals, 'open'));
   shaderKind(file);
+  const media = readMediaOptions(values);
   const port = values.port === undefined ? 0 : readNumber(values.port, '--port', { min: 0, whole: true });
   const root = await builtPage({ say: io.err }).catch((error) => {
     throw new CliError(error.message);
@@ -27,7 +29,9 @@ export async function runOpen({ values, positionals }, { stopped } = {}) {
   });
   const shaderUrl = server.mount(file);
   server.watch(shaderUrl);
-  io.out(`${server.baseUrl}/?shader=${shaderUrl.split('/').map(encodeURIComponent).join('/')}`);
+  const folders = await mediaFolders(file, media, io.err);
+  const mediaQuery = folders.length ? `&media=${server.mountFolders(folders)}` : '';
+  io.out(`${server.baseUrl}/?shader=${shaderUrl.split('/').map(encodeURIComponent).join('/')}${mediaQuery}`);
   io.err(`serving ${file}; saving it reloads it on the page. Ctrl-C stops.`);
   await (stopped ??
     new Promise((resolve) => {

@@ -9,7 +9,8 @@ import path from 'node:path';
 import { runLong } from '../engine/long-work.js';
 import { writePng, writeWhole } from '../engine/png.js';
 import { fromBase64 } from '../shared/pixels.js';
-import { progressBar } from './io.js';
+import { io, progressBar } from './io.js';
+import { mediaFolders } from './media.js';
 import { CliError, shaderKind } from './session.js';
 import { UsageError, viewQuery } from './view-options.js';
 
@@ -30,7 +31,8 @@ export async function renderShader(session, file, view, { converge = null, progr
     return session.server.mount(f);
   };
   const shaderUrl = session.server.mount(path.resolve(file));
-  const query = viewQuery(shaderUrl, view, mount);
+  const folders = await mediaFolders(file, view.media, io.err);
+  const query = viewQuery(shaderUrl, view, mount, folders.length ? session.server.mountFolders(folders) : null);
   let image;
   try {
     image = await session.draw(query);

@@ -7,6 +7,7 @@
 // --date ISO; --date now for the real date), and iTimeDelta and iFrameRate are those of the frame
 // schedule (--fps, 60 unless given), never measured: the page's ?date= and ?fps=.
 
+import fs from 'node:fs';
 import path from 'node:path';
 import { MAX_FPS, MIN_FPS, formatUrlParams } from '../shared/url-params.js';
 import { ENGINE_PAGE } from './session.js';
@@ -25,6 +26,8 @@ export const VIEW_FLAGS = /** @type {const} */ ({
   channel2: { type: 'string' },
   channel3: { type: 'string' },
   date: { type: 'string' },
+  media: { type: 'string' },
+  'fetch-media': { type: 'boolean' },
 });
 
 /**
@@ -87,7 +90,25 @@ export function readNumber(text, flag, { min = -Infinity, max = Infinity, whole 
  * @property {(string | null)[]} channels image, video or music files for iChannel0..3 (the page tells them apart)
  * @property {number | null} date iDate at iTime 0, ms since 1970 (null: the real date)
  * @property {number} fps the frame schedule: iTimeDelta = 1 / fps, iFrameRate = fps, frame N at N / fps
+ * @property {MediaOptions} media where the site's media a Shadertoy JSON names comes from (media.js)
  */
+
+/**
+ * @typedef {{dir: string | null, fetch: boolean}} MediaOptions dir: --media DIR, a folder laid out
+ *   as the site's media paths; fetch: --fetch-media, what it lacks downloaded into a cache
+ */
+
+/**
+ * --media and --fetch-media read and checked.
+ * @param {Record<string, any>} values parseArgs's values
+ * @returns {MediaOptions}
+ */
+export function readMediaOptions(values) {
+  const dir = values.media === undefined ? null : path.resolve(String(values.media));
+  if (dir !== null && !(fs.existsSync(dir) && fs.statSync(dir).isDirectory()))
+    throw new UsageError(`--media ${values.media}: no such folder (give a folder laid out as the site's media: DIR/a/<hash>.jpg)`);
+  return { dir, fetch: Boolean(values['fetch-media']) };
+}
 
 /**
  * @param {Record<string, any>} values parseArgs's values
@@ -125,7 +146,7 @@ export function readViewOptions(values, defaultSize, { fps: defaultFps = DEFAULT
   });
   const date = readDate(values.date);
   const fps = values.fps === undefined ? defaultFps : readNumber(values.fps, '--fps', { min: MIN_FPS, max: maxFps });
-  return { size, time, frame, mouse, controls, channels, date, fps };
+  return { size, time, frame, mouse, controls, channels, date, fps, media: readMediaOptions(values) };
 }
 
 /**
@@ -134,8 +155,9 @@ export function readViewOptions(values, defaultSize, { fps: defaultFps = DEFAULT
  * @param {string} shaderUrl
  * @param {ViewOptions} view
  * @param {(file: string) => string} mount
+ * @param {string | null} [media] the URL of the media folders (page-server.js mountFolders)
  */
-export function viewQuery(shaderUrl, view, mount) {
+export function viewQuery(shaderUrl, view, mount, media = null) {
   return `${ENGINE_PAGE}${formatUrlParams({
     shader: shaderUrl,
     size: view.size,
@@ -144,6 +166,7 @@ export function viewQuery(shaderUrl, view, mount) {
     date: view.date,
     fps: view.fps,
     channels: view.channels.map((file) => (file ? mount(path.resolve(file)) : null)),
+    media,
     // as given: the page checks them against the shader's controls, and says what it changed
     controls: Object.fromEntries(view.controls),
   })}`;

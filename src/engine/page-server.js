@@ -7,6 +7,8 @@
 //                          names the shader as the file is named), read from disk at each
 //                          request: a saved file is served as it is now; or a text the command
 //                          made (mountText())
+//   /__media/<id>/<path>   a file of the folders mountFolders() was given, from the first that
+//                          has it (the site's media: --media DIR, then the download cache)
 //   /__events              Server-Sent Events: `{"url": "/__files/…"}` when a watched file
 //                          changes (watch()); the page reloads that shader in place (main.js)
 //   anything else          the built page's files; an unknown path answers 404
@@ -24,6 +26,7 @@ const PACKAGE_ROOT = fileURLToPath(new URL('../..', import.meta.url));
 const BUILT_PAGE_DIR = path.join(PACKAGE_ROOT, 'dist');
 const FILES_ROUTE = '/__files/';
 const EVENTS_ROUTE = '/__events';
+const FOLDERS_ROUTE = '/__media/';
 
 const TYPES = {
   '.html': 'text/html; charset=utf-8',
@@ -133,6 +136,8 @@ export async function builtPage({ say = () => {} } = {}) {
 export async function startPageServer({ root, port = 0, fileEvents = false, routes = (_req, _res, next) => next() }) {
   /** @type {Map<string, string>} url path → file */
   const mounts = new Map();
+  /** @type {string[][]} mountFolders()'s folders, by id */
+  const folderMounts = [];
   /** @type {Map<string, string>} url path → text */
   const texts = new Map();
   /** @type {Set<import('node:http').ServerResponse>} */
@@ -174,7 +179,7 @@ export async function startPageServer({ root, port = 0, fileEvents = false, rout
       res.end(req.method === 'HEAD' ? undefined : text);
       return;
     }
-    const mounted = mounts.get(pathname);
+    const mounted = mounts.get(pathname) ?? folderFile(pathname);
     if (mounted) {
       fs.readFile(mounted, (error, data) => {
         if (error) {
@@ -202,6 +207,17 @@ export async function startPageServer({ root, port = 0, fileEvents = false, rout
     if (req.method === 'HEAD') res.end();
     else fs.createReadStream(file).pipe(res);
   }
+  /** A file of mounted folders at `pathname`, from the first folder that has it; never outside them. @param {string} pathname */
+  function folderFile(pathname) {
+    const match = new RegExp(`^${FOLDERS_ROUTE}(\\d+)/(.+)$`).exec(pathname);
+    const folders = match ? folderMounts[Number(match[1])] : undefined;
+    if (!match || !folders) return undefined;
+    for (const dir of folders) {
+      const file = path.resolve(dir, match[2]);
+      if (file.startsWith(dir + path.sep) && fs.existsSync(file) && fs.statSync(file).isFile()) return file;
+    }
+    return undefined;
+  }
   await new Promise((resolve, reject) => {
     server.once('error', reject);
     server.listen(port, '127.0.0.1', () => resolve(undefined));
@@ -220,6 +236,16 @@ export async function startPageServer({ root, port = 0, fileEvents = false, rout
       const urlPath = `${FILES_ROUTE}${nextId++}/${path.basename(file)}`;
       mounts.set(urlPath, path.resolve(file));
       return urlPath;
+    },
+    /**
+     * Serves the files under `folders` at a URL of their own (ending in /), each path from the
+     * first folder that has it.
+     * @param {string[]} folders
+     * @returns {string} the URL path
+     */
+    mountFolders(folders) {
+      folderMounts.push(folders.map((dir) => path.resolve(dir)));
+      return `${FOLDERS_ROUTE}${folderMounts.length - 1}/`;
     },
     /**
      * Serves `text` at a URL path of its own, ending in `name`.

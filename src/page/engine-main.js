@@ -11,7 +11,7 @@ import { installAutomation, installFailedAutomation } from './automation.js';
 import { Overlay } from './ui/overlay.js';
 import { showAppOnPage, showLoadNotes, showStartupFailure } from './ui/notices.js';
 import { parseUrlParams } from '../shared/url-params.js';
-import { loadChannel, shaderName } from './io/shader-loader.js';
+import { fetchMedia, loadChannel, shaderName } from './io/shader-loader.js';
 import { HangGuard, watchHangs } from './io/hang-guard.js';
 import { missingLines } from './io/project-files.js';
 import { Recorder } from './io/recorder.js';
@@ -37,6 +37,7 @@ async function start() {
     app = await RaytracerApp.start({
       canvas,
       loadChannel,
+      fetchMedia,
       fileName: params.shader ? shaderName(params.shader) : BUILTIN_NAME,
       size: params.size ?? null,
       scale: params.scale ?? 1,
@@ -50,7 +51,9 @@ async function start() {
   }
   watchHangs(app, new HangGuard());
   const noticeAfterCompile = showAppOnPage(app, overlay);
-  app.on('source', () => showLoadNotes(stage, `${app.fileName} runs without some of what it asks for`, missingLines(app)));
+  const showNotes = () => showLoadNotes(stage, `${app.fileName} runs without some of what it asks for`, missingLines(app));
+  app.on('source', showNotes);
+  app.on('notes', showNotes);
   const open = (/** @type {string} */ query) => {
     const url = new URL(query, location.href);
     return openView(app, NO_WIDGETS, parseUrlParams(url.search, url.href), { hash: url.hash, noticeAfterCompile, again: true });

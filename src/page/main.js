@@ -9,7 +9,7 @@ import { Overlay } from './ui/overlay.js';
 import { installUi } from './ui/ui.js';
 import { showAppOnPage, showStartupFailure } from './ui/notices.js';
 import { parseUrlParams } from '../shared/url-params.js';
-import { fetchShader, loadChannel, shaderName } from './io/shader-loader.js';
+import { fetchMedia, fetchShader, loadChannel, shaderName } from './io/shader-loader.js';
 import { HangGuard, watchHangs } from './io/hang-guard.js';
 import { openShader } from './io/open-shader.js';
 import { Recorder } from './io/recorder.js';
@@ -27,6 +27,7 @@ async function start() {
     app = await RaytracerApp.start({
       canvas,
       loadChannel,
+      fetchMedia,
       fileName: params.shader ? shaderName(params.shader) : BUILTIN_NAME,
       size: params.size ?? null,
       scale: params.scale ?? 1,

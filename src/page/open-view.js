@@ -187,6 +187,7 @@ export async function openView(app, ui, params, { hash, noticeAfterCompile, agai
   const opened = first.then((loaded) => {
     if (again && 'failed' in loaded && typeof loaded.failed === 'string') throw new Error(loaded.failed);
     if (loaded.notice) noticeAfterCompile(loaded.notice);
+    app.media.setBase(params.media ?? null);
     app.loadProject(loaded.project, loaded.from);
     const standIn = ui.kept.open(params.shader ?? BUILTIN_NAME, loaded); // kept-work.js
     const { warnings } = app.applyControls(params.controls, 'URL');

@@ -17,6 +17,9 @@
 //                    iTimeDelta and iFrameRate are those of F frames a second, not measured ones
 //                    (1 .. 240)
 //   &iChannel0=URL   an image for iChannel0 (likewise iChannel1..3), same origin as the page
+//   &media=URL       a folder of the site's media, laid out as its paths (URL/a/<hash>.jpg for
+//                    /media/a/<hash>.jpg), same origin as the page: the textures, cubemaps and
+//                    volumes a Shadertoy JSON's channels name (src/page/inputs/media-library.js)
 //   &NAME=value      any shader control; vectors as comma lists (LIGHT_POSITION=1,2,3)
 //
 // A key given more than once is read once, from its last occurrence, and the others are warned
@@ -70,6 +73,7 @@ const INSTEAD = {
   speed: 'the speed is 1',
   date: 'iDate is the real date',
   fps: 'iTimeDelta and iFrameRate are measured',
+  media: "the site's media a shader names stay black",
   shader: 'the built-in raytracer runs',
 };
 
@@ -82,7 +86,7 @@ const RESERVED_NAME = /^gl_|__/;
 
 /**
  * @typedef {{shader?: string, time?: number, mouse?: number[], size?: {width:number, height:number},
- *   scale?: number, cap?: number, speed?: number, date?: number, fps?: number, channels: (string|undefined)[],
+ *   scale?: number, cap?: number, speed?: number, date?: number, fps?: number, channels: (string|undefined)[], media?: string,
  *   controls: Record<string, string>, warnings: string[], refusedShader?: {url: string, why: string}}} UrlParams
  */
 
@@ -158,6 +162,10 @@ export function parseUrlParams(search, base = 'http://localhost/') {
     } else if (key === 'fps') {
       const f = number(key, value, MIN_FPS, MAX_FPS, `frames a second, ${MIN_FPS} .. ${MAX_FPS}`);
       if (f !== undefined) out.fps = f;
+    } else if (key === 'media') {
+      const checked = value.trim() ? sameOriginUrl(value.trim(), base) : { url: null, why: 'empty' };
+      if (checked.url === null) warn(key, value, checked.why);
+      else out.media = value.trim();
     } else if (key === 'shader' || CHANNEL_PARAMS.includes(key)) {
       const checked = value.trim() ? sameOriginUrl(value.trim(), base) : { url: null, why: 'empty' };
       if (checked.url === null) {
@@ -193,10 +201,22 @@ function formatNumber(v) {
  * @param {number | null} [state.date] a fixed iDate at iTime 0, ms since 1970 (omitted: the real date)
  * @param {number | null} [state.fps] a fixed frame schedule (omitted: measured)
  * @param {(string | null | undefined)[]} [state.channels] image URLs
+ * @param {string | null} [state.media] the site's media folder's URL
  * @param {Record<string, unknown>} [state.controls] control values to write (vectors as arrays, a
  *   choice by its name as a string)
  */
-export function formatUrlParams({ shader, size, time, mouse, speed = 1, date = null, fps = null, channels = [], controls = {} }) {
+export function formatUrlParams({
+  shader,
+  size,
+  time,
+  mouse,
+  speed = 1,
+  date = null,
+  fps = null,
+  channels = [],
+  media = null,
+  controls = {},
+}) {
   const query = new URLSearchParams();
   if (shader) query.set('shader', shader);
   if (size) query.set('size', `${size.width}x${size.height}`);
@@ -206,6 +226,7 @@ export function formatUrlParams({ shader, size, time, mouse, speed = 1, date = n
   if (date !== null) query.set('date', new Date(date).toISOString());
   if (fps !== null) query.set('fps', formatNumber(fps));
   channels.forEach((url, i) => url && query.set(CHANNEL_PARAMS[i], url));
+  if (media) query.set('media', media);
   for (const [name, value] of Object.entries(controls)) {
     const text = Array.isArray(value)
       ? value.map(formatNumber).join(',')

@@ -25,6 +25,7 @@ import { FrameLoop } from './frame-loop.js';
 import { watchContext } from './gpu-context.js';
 import { CompileJob } from './compile-job.js';
 import { Channels } from './channels.js';
+import { MediaLibrary } from '../inputs/media-library.js';
 
 /** @typedef {import('../../shadertoy/controls.js').Control} Control */
 /** @typedef {import('./events.js').AppEvents} AppEvents */
@@ -55,13 +56,14 @@ export class RaytracerApp extends Emitter {
    * @param {RenderClient} options.gpu a started render worker's client
    * @param {HTMLCanvasElement} options.canvas
    * @param {import('./channels.js').ChannelLoader} options.loadChannel the channels' files fetched, images decoded (io/shader-loader.js)
+   * @param {import('../inputs/media-library.js').FetchMedia} options.fetchMedia a media file's bytes (io/shader-loader.js)
    * @param {string} options.fileName the shader's name in error messages
    * @param {{width:number, height:number} | null} [options.size] fixed drawing-buffer size (device px)
    * @param {number} [options.scale] resolution scale of the device pixels (without a fixed size)
    * @param {number} [options.cap] cap on the drawing buffer's longer side (device px; 0: none)
    * @param {boolean} [options.playing]
    */
-  constructor({ gpu, canvas, loadChannel, fileName, size = null, scale = 1, cap = 0, playing = true }) {
+  constructor({ gpu, canvas, loadChannel, fetchMedia, fileName, size = null, scale = 1, cap = 0, playing = true }) {
     super();
     this.canvas = canvas;
     /** The shader's name in messages and downloads. */
@@ -77,6 +79,8 @@ export class RaytracerApp extends Emitter {
     this.canvasSize = new CanvasSize(canvas, { maxSide: () => this.gpu.maxSize, fixed: size, scale, cap });
     /** The images in iChannel0..3. */
     this.channels = new Channels(gpu, loadChannel);
+    /** The site's media the shader's channels name, from a media folder (none until setBase). */
+    this.media = new MediaLibrary(gpu, fetchMedia);
     /** Shadertoy's keyboard texture, for the passes that read it (the page's keys: ui/keys.js). */
     this.keyboard = new KeyboardState();
 
@@ -111,7 +115,11 @@ export class RaytracerApp extends Emitter {
       canvasSize: this.canvasSize,
       keyboard: this.keyboard,
       readsKeyboard: () => this.readsKeyboard,
-      withMedia: (frame, running) => this.channels.withMedia(frame, running),
+      // a frame waits for the site's media its shader names (the first frame of a shader, mostly)
+      withMedia: (frame, running) =>
+        this.media.pending
+          ? this.media.pending.then(() => this.channels.withMedia(frame, running))
+          : this.channels.withMedia(frame, running),
       isMultipass: () => this.isMultipass,
       hasProgram: () => this.compiles.hasProgram,
       versionOf: (serial) => this.compiles.versionOf(serial),
@@ -220,6 +228,8 @@ export class RaytracerApp extends Emitter {
     this.project = project;
     this.projectInfo = from.info ?? null;
     this.notes = frameSchedule(project).flatMap((step) => step.bindings.flatMap((binding) => (binding.note ? [binding.note] : [])));
+    this.media.load(project);
+    this.media.pending?.then(() => this.project === project && this.emit('notes'));
     this.liveForm.reset();
     this.converge.drop();
     if (from.name) this.fileName = from.name;

@@ -23,6 +23,7 @@
  * @property {[error: (Error & {report?: string, messages?: Array<{severity: string, line: number | null, message: string}>}) | null, fileName: string]} compile the latest compile ended: null on
  *   success, else its error (app.compiles.hasProgram tells whether an older shader still runs)
  * @property {[]} source a new source was loaded (its controls read)
+ * @property {[]} notes what the shader goes without changed (its media came, or could not)
  * @property {[lost: boolean]} context the GPU context was lost (true) or restored (false)
  * @property {[seconds: number | null, phase?: import('./render-client.js').HangPhase]} hang a frame has gone that long without finishing a band
  *   ('compiling': a program's first draw, which compiles it on SwiftShader)

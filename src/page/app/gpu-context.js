@@ -37,6 +37,7 @@ export function watchContext(app) {
 function resend(app) {
   app.gpu.tell('controlUniforms', { controls: app.controls, values: app.values });
   app.channels.resend();
+  app.media.resend();
 }
 
 /**

@@ -25,13 +25,22 @@ export function ownChannelUniforms(black) {
 }
 
 /**
+ * The key of a pass's channel among the media textures: one per pass and channel.
+ * @param {string} passName
+ * @param {number} channel
+ */
+export const mediaKey = (passName, channel) => `${passName}:${channel}`;
+
+/**
  * Binds what a pass reads into its material's channel uniforms, for a frame of width × height.
  * @param {Step} step
  * @param {number} width
  * @param {number} height
- * @param {{buffers: import('./pass-buffers.js').PassBuffers, keyboard: THREE.Texture, channels: Array<THREE.Texture | null>, black: THREE.Texture}} sources
+ * @param {{buffers: import('./pass-buffers.js').PassBuffers, keyboard: THREE.Texture, channels: Array<THREE.Texture | null>,
+ *   black: THREE.Texture, media: Map<string, {texture: THREE.Texture, size: [number, number, number]}>}} sources media: the
+ *   site's media each pass's channels name, by mediaKey (media-textures.js)
  */
-export function bindChannels(step, width, height, { buffers, keyboard, channels, black }) {
+export function bindChannels(step, width, height, { buffers, keyboard, channels, black, media }) {
   const uniforms = step.material.uniforms;
   const resolution = uniforms.iChannelResolution.value;
   const times = uniforms.iChannelTime.value;
@@ -42,7 +51,11 @@ export function bindChannels(step, width, height, { buffers, keyboard, channels,
     let size = binding.resolution === 'canvas' ? [width, height, 1] : binding.resolution;
     if (binding.source === 'buffer') texture = buffers.read(/** @type {string} */ (binding.buffer));
     else if (binding.source === 'keyboard') texture = keyboard;
-    else if (binding.source === 'none' && step.target === 'screen' && channels[i]) {
+    else if (binding.source === 'black' && media.has(mediaKey(step.pass.name, i))) {
+      const loaded = /** @type {{texture: THREE.Texture, size: [number, number, number]}} */ (media.get(mediaKey(step.pass.name, i)));
+      texture = loaded.texture;
+      size = loaded.size;
+    } else if (binding.source === 'none' && step.target === 'screen' && channels[i]) {
       texture = channels[i]; // an image the page put into this channel, or a moving one's frame
       size = [texture.image.width, texture.image.height, 1];
       times[i] = texture.userData.time ?? 0; // a video's or music's iChannelTime (media-input.js)

@@ -95,6 +95,9 @@ import { ShaderCompileError, WebGL2UnavailableError } from './errors.js';
  *   controls as uniforms, with their values
  * @property {{name: string, value: unknown}} controlUniform one live control's new value
  * @property {{index: number, image: ImageBitmap | null}} channel an image into iChannel0..3 (null: black)
+ * @property {{entries: Array<{key: string, payload: import('./media-textures.js').MediaPayload,
+ *   sampler: import('../../shadertoy/multipass.js').Sampler}>}} passMedia the site's media the
+ *   shader's channels name, in place of what was there (key: channel-bindings.js mediaKey)
  * @property {{bitmaps: number}} settled the answer to `awaitingPaint`: the page has shown (or
  *   closed) and painted the first `bitmaps` ImageBitmaps the worker sent it
  * @property {{}} loseContext WEBGL_lose_context, for tests of a lost context

@@ -443,6 +443,11 @@ const tell = serve(
       changed();
     },
 
+    passMedia({ entries }) {
+      renderer().setPassMedia(entries);
+      changed();
+    },
+
     settled({ bitmaps: count }) {
       paints.settle(count);
     },

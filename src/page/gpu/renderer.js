@@ -18,6 +18,7 @@ import { blackTexture, shadertoyUniforms } from './uniforms.js';
 import { PassBuffers } from './pass-buffers.js';
 import { WebGL2UnavailableError } from './errors.js';
 import { PassCompiler, VERTEX_SHADER } from './pass-compiler.js';
+import { mediaTexture } from './media-textures.js';
 import { ChannelSamplers, bindChannels, imageTexture, ownChannelUniforms, setMedia } from './channel-bindings.js';
 import { PixelProbe } from './probe.js';
 import { SoundPass } from '../sound/sound-pass.js';
@@ -112,6 +113,8 @@ export class ShaderRenderer {
     this._black = this.uniforms.iChannel0.value;
     /** The textures loaded into iChannel0..3. @type {Array<THREE.Texture | null>} */
     this._channels = [null, null, null, null];
+    /** The site's media the passes' channels name, by mediaKey (media-textures.js). @type {Map<string, {texture: THREE.Texture, size: [number, number, number]}>} */
+    this._media = new Map();
 
     /** The passes of a frame, in order, with their compiled materials (the last is Image). @type {Step[]} */
     this.steps = [];
@@ -223,7 +226,13 @@ export class ShaderRenderer {
   beginStep(step, width, height) {
     const uniforms = step.material.uniforms;
     for (const name of Object.keys(this.uniforms)) if (!(name in uniforms)) uniforms[name] = this.uniforms[name]; // controls added later
-    bindChannels(step, width, height, { buffers: this.buffers, keyboard: this.keyboard, channels: this._channels, black: this._black });
+    bindChannels(step, width, height, {
+      buffers: this.buffers,
+      keyboard: this.keyboard,
+      channels: this._channels,
+      black: this._black,
+      media: this._media,
+    });
     this.mesh.material = step.material;
     step.material.uniformsNeedUpdate = true; // the same material drawn again may read other textures
     this.samplers.use(step);
@@ -276,6 +285,15 @@ export class ShaderRenderer {
     this.uniforms[`iChannel${index}`].value = texture ?? this._black;
     const resolution = this.uniforms.iChannelResolution.value;
     resolution.splice(index * 3, 3, image?.width ?? 0, image?.height ?? 0, image ? 1 : 0);
+  }
+
+  /**
+   * The site's media of the shader's channels, in place of what was there (media-textures.js).
+   * @param {Array<{key: string, payload: import('./media-textures.js').MediaPayload, sampler: import('../../shadertoy/multipass.js').Sampler}>} entries
+   */
+  setPassMedia(entries) {
+    for (const { texture } of this._media.values()) texture.dispose();
+    this._media = new Map(entries.map(({ key, payload, sampler }) => [key, mediaTexture(payload, sampler)]));
   }
 
   /**

@@ -120,6 +120,19 @@ export async function loadChannel(source, { timeoutMs = TIMEOUTS.loadMs } = {}) 
   return { kind, blob: body, name };
 }
 
+/**
+ * A media file's bytes (the site's media from a media folder: inputs/media-library.js), from the
+ * page's own server as every file, within `timeoutMs`.
+ * @param {string} url
+ * @param {LoadOptions} [options]
+ * @returns {Promise<Blob>} rejects with a readable reason
+ */
+export async function fetchMedia(url, { timeoutMs = TIMEOUTS.loadMs } = {}) {
+  const { response, body } = await fetchOwn(url, { accept: '*/*', timeoutMs }, (r) => r.blob());
+  if (isWebPage(response)) throw new Error(NO_SUCH_FILE);
+  return body;
+}
+
 /** @type {ImageBitmapOptions} */
 const IMAGE_DECODING = { imageOrientation: 'flipY', colorSpaceConversion: 'none', premultiplyAlpha: 'none' };
 

@@ -197,6 +197,7 @@ export function installUi(app, { builtinSource, recorder }) {
     document.title = `${app.fileName} · Shadertoy runner`;
     showState();
   });
+  app.on('notes', showNotes);
   app.on('compile', () => {
     editor.setErrors(app.compiles.errors);
     showState(); // a paused restart or time change shows once drawn

@@ -1,0 +1,134 @@
+// The site's media a shader's channels name (a texture, a cubemap, a volume, by the site's paths
+// `/media/a/<hash>.<ext>`), from a media folder the page is pointed at: `?media=URL` of a folder
+// its own server serves, laid out as the site's paths (`<folder>/a/<hash>.<ext>`). The command
+// line's `--media DIR` serves one there. Each channel's files are fetched and decoded here (the
+// images flipped as its sampler's vflip says), then given to the render worker
+// (gpu/media-textures.js), which makes each channel's texture with its own sampler.
+//
+// What could not be had is said: every channel the library could not fill keeps the page's note
+// that it is black, with the file and why (no folder given, no such file, not an image).
+
+import { LIBRARY_KINDS, cubeFaceOrder, isOneChannelTexture, mediaFiles, parseVolume } from '../../shadertoy/media.js';
+import { unsupportedNote } from '../../shadertoy/multipass.js';
+import { mediaKey } from '../gpu/channel-bindings.js';
+
+/** @typedef {import('../../shadertoy/multipass.js').MultipassShader} MultipassShader */
+/** @typedef {import('../../shadertoy/multipass.js').MediaChannel} MediaChannel */
+/** @typedef {import('../gpu/media-textures.js').MediaPayload} MediaPayload */
+/** @typedef {{key: string, payload: MediaPayload, sampler: import('../../shadertoy/multipass.js').Sampler}} MediaEntry */
+
+/** The library's fetches: a file's bytes by URL, rejecting with a readable reason. @typedef {(url: string) => Promise<Blob>} FetchMedia */
+
+/** Decoded as the site uploads: no colour-space conversion, no premultiplied alpha. */
+const decoding = (/** @type {boolean} */ vflip) =>
+  /** @type {ImageBitmapOptions} */ ({
+    imageOrientation: vflip ? 'flipY' : 'from-image',
+    colorSpaceConversion: 'none',
+    premultiplyAlpha: 'none',
+  });
+
+export class MediaLibrary {
+  /**
+   * @param {{tell: (type: 'passMedia', params: {entries: MediaEntry[]}) => void}} gpu the render worker
+   * @param {FetchMedia} fetchFile
+   */
+  constructor(gpu, fetchFile) {
+    this.gpu = gpu;
+    this.fetchFile = fetchFile;
+    /** The media folder's URL (ending in /), or null: none given. @type {string | null} */
+    this.base = null;
+    /** The entries the worker has, kept to give a new worker again. @type {MediaEntry[]} */
+    this._entries = [];
+    /** The page's note on each channel the library filled, and the line that replaces the note of each it could not. @type {Map<string, string | null>} */
+    this._lines = new Map();
+    /** The load under way (resolves when the worker has its media). @type {Promise<void> | null} */
+    this.pending = null;
+    this._loads = 0;
+  }
+
+  /** @param {string | null} url the media folder, absolute or relative to the page (null: none) */
+  setBase(url) {
+    this.base = url ? new URL(url.endsWith('/') ? url : `${url}/`, location.href).href : null;
+  }
+
+  /**
+   * Loads the media a shader's channels name, in place of the last shader's; `pending` resolves
+   * once the worker has them (a frame drawn before would draw the channels black).
+   * @param {MultipassShader} project
+   */
+  load(project) {
+    const load = ++this._loads;
+    const wanted = project.passes.flatMap((pass) =>
+      pass.channels.flatMap((channel, i) =>
+        channel && LIBRARY_KINDS.includes(channel.kind)
+          ? [{ pass: pass.name, index: i, channel: /** @type {MediaChannel} */ (channel) }]
+          : [],
+      ),
+    );
+    if (!wanted.length && !this._entries.length) {
+      this._lines = new Map();
+      this.pending = null;
+      return;
+    }
+    this.pending = (async () => {
+      const results = await Promise.all(wanted.map((want) => this._channel(want.channel).then((payload) => ({ ...want, payload }))));
+      if (load !== this._loads) return; // a newer shader came meanwhile
+      this._entries = results.flatMap(({ pass, index, channel, payload }) =>
+        typeof payload === 'string' ? [] : [{ key: mediaKey(pass, index), payload, sampler: channel.sampler }],
+      );
+      this._lines = new Map(
+        results.map(({ pass, index, channel, payload }) => [
+          unsupportedNote(pass, index, channel),
+          typeof payload === 'string' ? `${pass}, iChannel${index}: ${payload}; the channel is black` : null,
+        ]),
+      );
+      this.resend();
+      this.pending = null;
+    })();
+  }
+
+  /** Gives the worker the media again (a new worker, a restored context). */
+  resend() {
+    this.gpu.tell('passMedia', { entries: this._entries });
+  }
+
+  /**
+   * The lines of the page's note on what the shader goes without, with those of the channels the
+   * library filled taken out and those it could not fill said with why.
+   * @param {string[]} lines
+   */
+  adjust(lines) {
+    return lines.flatMap((line) => {
+      if (!this._lines.has(line)) return [line];
+      const instead = this._lines.get(line);
+      return instead ? [instead] : [];
+    });
+  }
+
+  /**
+   * One channel's media decoded, or why it could not be (a string).
+   * @param {MediaChannel} channel
+   * @returns {Promise<MediaPayload | string>}
+   */
+  async _channel(channel) {
+    const files = mediaFiles(channel);
+    const what = `the site's ${channel.kind} ${channel.src || '(no file)'}`;
+    if (!files.length) return `${what} is not a path of the site's media (/media/…)`;
+    if (!this.base) return `${what} needs the site's media: give a media folder (shaderproof --media DIR, or the page's ?media=URL)`;
+    const base = this.base;
+    const fetched = await Promise.allSettled(files.map((file) => this.fetchFile(new URL(file, base).href)));
+    const failed = fetched.findIndex((result) => result.status === 'rejected');
+    if (failed >= 0)
+      return `${what}: could not fetch ${files[failed]} from the media folder (${/** @type {PromiseRejectedResult} */ (fetched[failed]).reason.message})`;
+    const blobs = fetched.map((result) => /** @type {PromiseFulfilledResult<Blob>} */ (result).value);
+    const vflip = channel.sampler.vflip;
+    try {
+      if (channel.kind === 'volume') return { kind: 'volume', volume: parseVolume(await blobs[0].arrayBuffer()) };
+      const images = await Promise.all(blobs.map((blob) => createImageBitmap(blob, decoding(vflip))));
+      if (channel.kind === 'cubemap') return { kind: 'cubemap', faces: cubeFaceOrder(images, vflip) };
+      return { kind: 'texture', image: images[0], oneChannel: isOneChannelTexture(channel.extra?.id) };
+    } catch (error) {
+      return `${what} cannot be read (${error.message})`;
+    }
+  }
+}
