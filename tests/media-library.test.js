@@ -8,7 +8,8 @@
 //   (effect.js / piLibs.js, src/shadertoy/media.js: faces in file order, each flipped with vflip,
 //   +Y and −Y traded);
 // - volumes of the site's .bin format (bytes of three channels, float of one), every texel;
-// - a grey-noise texture the site uploads as one channel by its asset id.
+// - a grey-noise texture the site uploads as one channel by its asset id;
+// - music a buffer pass names: its 512 x 2 texture and iChannelTime (music-fixture.js).
 // No file of the site's media is used: every one is made here.
 
 import { execFile } from 'node:child_process';
@@ -22,6 +23,7 @@ import { describe, expect, test } from 'vitest';
 import { REPO_ROOT } from './harness/config.js';
 import { cubeFaceOrder, mediaFiles, mediaPath, parseVolume, writeVolume } from '../src/shadertoy/media.js';
 import { pixel, readPixels, sharePageAcrossTests, withPage, withServedDir } from './page-helpers.js';
+import { MUSIC_READER, checkMusic, toneSamples, wav } from './music-fixture.js';
 
 const BIN = path.join(REPO_ROOT, 'bin', 'shaderproof.js');
 const run = promisify(execFile);
@@ -196,6 +198,36 @@ const VOLUME_SHADER = shaderJson(
   probeCode(VOLUME_CASES.map(([probe]) => probe)),
 );
 
+/**
+ * Music a Buffer A pass names (not the Image pass: every pass's channels read the library), copied
+ * to the screen by the Image pass: the 512 x 2 texture and iChannelTime as music-fixture.js reads them.
+ */
+const MUSIC_TIME = 1.9;
+const MUSIC_SHADER = JSON.stringify({
+  Shader: {
+    ver: '0.1',
+    info: { name: 'music in a buffer' },
+    renderpass: [
+      {
+        inputs: [input(0, 'music', '/media/a/tone.wav', { filter: 'linear', vflip: false })],
+        outputs: [{ id: '4dXGR8', channel: 0 }],
+        code: MUSIC_READER,
+        name: 'Buffer A',
+        description: '',
+        type: 'buffer',
+      },
+      {
+        inputs: [{ ...input(0, 'buffer', '/media/previz/buffer00.png'), id: '4dXGR8' }],
+        outputs: [{ id: '4dfGRr', channel: 0 }],
+        code: 'void mainImage(out vec4 c, in vec2 p) { c = texelFetch(iChannel0, ivec2(p), 0); }\n',
+        name: 'Image',
+        description: '',
+        type: 'image',
+      },
+    ],
+  },
+});
+
 /** Checks one row of probes against [expected RGB, tolerance] each. */
 function checkRow(image, cases, where) {
   cases.forEach(([expected, tolerance, what], i) => {
@@ -259,16 +291,21 @@ describe('the site’s media paths and volume format', () => {
 describe('the site’s media from a folder, against what the test computes', () => {
   sharePageAcrossTests();
 
-  test('the page: textures through four samplers, a cubemap both ways, volumes and a one-channel texture', async () => {
+  test('the page: textures through four samplers, a cubemap both ways, volumes, a one-channel texture, music in a buffer', async () => {
     await withServedDir('test-media-library', async (dir, base) => {
       writeMedia(path.join(dir, 'media'));
       for (const [name, json] of SHADERS) fs.writeFileSync(path.join(dir, name), json);
+      const samples = toneSamples();
+      fs.writeFileSync(path.join(dir, 'media', 'a', 'tone.wav'), wav(samples));
+      fs.writeFileSync(path.join(dir, 'music.json'), MUSIC_SHADER);
       await withPage(async ({ page, goto, errors }) => {
         for (const [name, , cases] of SHADERS) {
           const expected = cases();
           await goto(`?shader=/${base}/${name}&size=${expected.length}x1&time=0&media=/${base}/media/`);
           checkRow(await readPixels(page), expected, `page, ${name}`);
         }
+        await goto(`?shader=/${base}/music.json&size=512x2&time=${MUSIC_TIME}&media=/${base}/media/`);
+        checkMusic(await readPixels(page), samples, MUSIC_TIME, 'page, music a buffer pass names');
         expect(errors).toEqual([]);
       });
     });

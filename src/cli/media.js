@@ -9,7 +9,7 @@ import fs from 'node:fs';
 import os from 'node:os';
 import path from 'node:path';
 import { fromShadertoyJson } from '../shadertoy/multipass-json.js';
-import { LIBRARY_KINDS, mediaFiles } from '../shadertoy/media.js';
+import { LIBRARY_KINDS, MOVING_LIBRARY_KINDS, mediaFiles } from '../shadertoy/media.js';
 
 /** Where the site's media is downloaded from: its own origin, or SHADERPROOF_MEDIA_ORIGIN (a mirror, a test's server). */
 const mediaOrigin = () => process.env.SHADERPROOF_MEDIA_ORIGIN || 'https://www.shadertoy.com';
@@ -38,7 +38,13 @@ function namedMedia(file) {
     return [];
   }
   const channels = model.passes.flatMap((pass) => pass.channels);
-  return [...new Set(channels.flatMap((c) => (c && LIBRARY_KINDS.includes(c.kind) ? mediaFiles(/** @type {any} */ (c)) : [])))];
+  return [
+    ...new Set(
+      channels.flatMap((c) =>
+        c && (LIBRARY_KINDS.includes(c.kind) || MOVING_LIBRARY_KINDS.includes(c.kind)) ? mediaFiles(/** @type {any} */ (c)) : [],
+      ),
+    ),
+  ];
 }
 
 /**

@@ -64,11 +64,13 @@ export function mediaFiles({ kind, src }) {
   return [path, ...[1, 2, 3, 4, 5].map((i) => `${stem}_${i}${ext}`)];
 }
 
-/**
- * The kinds read from the media library (the moving ones, video and music, and the devices,
- * come in through the channels of the page and the command line: src/page/inputs/).
- */
+/** The kinds the media library holds that are still: uploaded once (src/page/gpu/media-textures.js). */
 export const LIBRARY_KINDS = Object.freeze(['texture', 'cubemap', 'volume']);
+/**
+ * The kinds it holds that move: a video's frame and music's 512 × 2 texture at each frame's iTime
+ * (src/page/inputs/media-input.js). A music stream (SoundCloud) and the devices are not files.
+ */
+export const MOVING_LIBRARY_KINDS = Object.freeze(['video', 'music']);
 
 /**
  * Whether the site uploads a texture as one channel (R8), by the input's asset id.

@@ -116,10 +116,13 @@ export class RaytracerApp extends Emitter {
       keyboard: this.keyboard,
       readsKeyboard: () => this.readsKeyboard,
       // a frame waits for the site's media its shader names (the first frame of a shader, mostly)
-      withMedia: (frame, running) =>
-        this.media.pending
-          ? this.media.pending.then(() => this.channels.withMedia(frame, running))
-          : this.channels.withMedia(frame, running),
+      withMedia: (frame, running) => {
+        const withChannels = () => {
+          const inputs = this.channels.withMedia(frame, running);
+          return inputs instanceof Promise ? inputs.then((i) => this.media.withFrames(i, running)) : this.media.withFrames(inputs, running);
+        };
+        return this.media.pending ? this.media.pending.then(withChannels) : withChannels();
+      },
       isMultipass: () => this.isMultipass,
       hasProgram: () => this.compiles.hasProgram,
       versionOf: (serial) => this.compiles.versionOf(serial),
@@ -325,6 +328,7 @@ export class RaytracerApp extends Emitter {
   pause() {
     this.inputs.pause();
     this.channels.silence();
+    this.media.silence();
     this.emit('state');
   }
 

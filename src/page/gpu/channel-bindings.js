@@ -55,6 +55,7 @@ export function bindChannels(step, width, height, { buffers, keyboard, channels,
       const loaded = /** @type {{texture: THREE.Texture, size: [number, number, number]}} */ (media.get(mediaKey(step.pass.name, i)));
       texture = loaded.texture;
       size = loaded.size;
+      times[i] = texture.userData.time ?? 0; // a video's or music's iChannelTime
     } else if (binding.source === 'none' && step.target === 'screen' && channels[i]) {
       texture = channels[i]; // an image the page put into this channel, or a moving one's frame
       size = [texture.image.width, texture.image.height, 1];
@@ -118,24 +119,52 @@ function audioTexture() {
 export function setMedia(channels, uniforms, media) {
   media.forEach((frame, index) => {
     if (!frame) return;
-    let texture = channels[index];
-    if (!texture || texture.userData.media !== frame.kind) {
-      texture?.dispose();
-      texture = frame.kind === 'audio' ? audioTexture() : imageTexture(frame.image);
-      texture.userData.media = frame.kind;
+    const texture = movingTexture(channels[index], frame);
+    if (texture !== channels[index]) {
       channels[index] = texture;
       uniforms[`iChannel${index}`].value = texture;
     }
-    if (frame.kind === 'audio') texture.image.data.set(frame.bytes);
-    else if (texture.image !== frame.image) {
-      const old = texture.image;
-      texture.image = frame.image;
-      old?.close?.(); // this thread's copy of an earlier frame, uploaded already
-    }
-    texture.needsUpdate = true;
-    texture.userData.time = frame.time;
     uniforms.iChannelResolution.value.splice(index * 3, 3, frame.width, frame.height, 1);
   });
+}
+
+/**
+ * A moving channel's texture with a frame in it: `texture` itself, or a new one (the old one
+ * disposed) when there was none or it held another kind. Its iChannelTime is kept on it
+ * (userData.time) for the passes that read it (bindChannels).
+ * @param {THREE.Texture | null} texture
+ * @param {import('./protocol.js').MediaFrame} frame
+ * @param {import('../../shadertoy/multipass.js').Sampler} [sampler] a channel's own (a shader's
+ *   JSON names the file); without: as the site samples an image, and music (audioTexture)
+ */
+export function movingTexture(texture, frame, sampler) {
+  if (!texture || texture.userData.media !== frame.kind) {
+    texture?.dispose();
+    texture = frame.kind === 'audio' ? audioTexture() : imageTexture(frame.image);
+    texture.userData.media = frame.kind;
+    if (sampler) {
+      const nearest = sampler.filter === 'nearest';
+      texture.magFilter = nearest ? THREE.NearestFilter : THREE.LinearFilter;
+      texture.minFilter = nearest
+        ? THREE.NearestFilter
+        : sampler.filter === 'linear' || frame.kind === 'audio'
+          ? THREE.LinearFilter
+          : THREE.LinearMipmapLinearFilter;
+      texture.generateMipmaps = texture.minFilter === THREE.LinearMipmapLinearFilter;
+      // music takes no repeat on the site (GetAcceptsWrapRepeat)
+      texture.wrapS = texture.wrapT =
+        sampler.wrap === 'repeat' && frame.kind !== 'audio' ? THREE.RepeatWrapping : THREE.ClampToEdgeWrapping;
+    }
+  }
+  if (frame.kind === 'audio') texture.image.data.set(frame.bytes);
+  else if (texture.image !== frame.image) {
+    const old = texture.image;
+    texture.image = frame.image;
+    old?.close?.(); // this thread's copy of an earlier frame, uploaded already
+  }
+  texture.needsUpdate = true;
+  texture.userData.time = frame.time;
+  return texture;
 }
 
 /** The sampler objects of the pass being drawn, bound around its draws. */

@@ -30,6 +30,8 @@ import { ShaderCompileError, WebGL2UnavailableError } from './errors.js';
  * @property {Uint8Array} [keyboard] Shadertoy's keyboard texture (keyboard.js), for the passes that read it
  * @property {Array<MediaFrame | null>} [media] the moving channels' textures for this frame, by
  *   channel (null: not a moving one): src/page/inputs/media-input.js
+ * @property {Array<{key: string, frame: MediaFrame}>} [passMedia] the textures of the videos and
+ *   music the shader's own channels name, by channel-bindings.js mediaKey (inputs/media-library.js)
  */
 
 /**
@@ -96,8 +98,11 @@ import { ShaderCompileError, WebGL2UnavailableError } from './errors.js';
  * @property {{name: string, value: unknown}} controlUniform one live control's new value
  * @property {{index: number, image: ImageBitmap | null}} channel an image into iChannel0..3 (null: black)
  * @property {{entries: Array<{key: string, payload: import('./media-textures.js').MediaPayload,
+ *   sampler: import('../../shadertoy/multipass.js').Sampler}>, moving: Array<{key: string,
  *   sampler: import('../../shadertoy/multipass.js').Sampler}>}} passMedia the site's media the
- *   shader's channels name, in place of what was there (key: channel-bindings.js mediaKey)
+ *   shader's channels name, in place of what was there (key: channel-bindings.js mediaKey): the
+ *   still ones, and the channels of the moving ones, whose frames come with each frame
+ *   (FrameInputs.passMedia)
  * @property {{bitmaps: number}} settled the answer to `awaitingPaint`: the page has shown (or
  *   closed) and painted the first `bitmaps` ImageBitmaps the worker sent it
  * @property {{}} loseContext WEBGL_lose_context, for tests of a lost context

@@ -138,8 +138,9 @@ function pump() {
   const step = steps[job.step];
   const first = job.step === 0 && job.y === 0;
   const last = job.step === steps.length - 1;
-  if (job.inputs.media && !job.mediaSet) {
-    renderer().setMedia(job.inputs.media);
+  if ((job.inputs.media || job.inputs.passMedia) && !job.mediaSet) {
+    if (job.inputs.media) renderer().setMedia(job.inputs.media);
+    if (job.inputs.passMedia) renderer().setPassMoving(job.inputs.passMedia);
     job.mediaSet = true;
   }
   if (first && job.kind === 'frame') {
@@ -443,8 +444,8 @@ const tell = serve(
       changed();
     },
 
-    passMedia({ entries }) {
-      renderer().setPassMedia(entries);
+    passMedia(media) {
+      renderer().setPassMedia(media);
       changed();
     },
 

@@ -19,7 +19,7 @@ import { PassBuffers } from './pass-buffers.js';
 import { WebGL2UnavailableError } from './errors.js';
 import { PassCompiler, VERTEX_SHADER } from './pass-compiler.js';
 import { mediaTexture } from './media-textures.js';
-import { ChannelSamplers, bindChannels, imageTexture, ownChannelUniforms, setMedia } from './channel-bindings.js';
+import { ChannelSamplers, bindChannels, imageTexture, movingTexture, ownChannelUniforms, setMedia } from './channel-bindings.js';
 import { PixelProbe } from './probe.js';
 import { SoundPass } from '../sound/sound-pass.js';
 import { sendVerbatimSources } from './verbatim-source.js';
@@ -115,6 +115,8 @@ export class ShaderRenderer {
     this._channels = [null, null, null, null];
     /** The site's media the passes' channels name, by mediaKey (media-textures.js). @type {Map<string, {texture: THREE.Texture, size: [number, number, number]}>} */
     this._media = new Map();
+    /** The samplers of the channels that hold a video or music, by mediaKey. @type {Map<string, import('../../shadertoy/multipass.js').Sampler>} */
+    this._movingSamplers = new Map();
 
     /** The passes of a frame, in order, with their compiled materials (the last is Image). @type {Step[]} */
     this.steps = [];
@@ -289,11 +291,24 @@ export class ShaderRenderer {
 
   /**
    * The site's media of the shader's channels, in place of what was there (media-textures.js).
-   * @param {Array<{key: string, payload: import('./media-textures.js').MediaPayload, sampler: import('../../shadertoy/multipass.js').Sampler}>} entries
+   * @param {import('./protocol.js').Commands['passMedia']} media
    */
-  setPassMedia(entries) {
+  setPassMedia({ entries, moving }) {
     for (const { texture } of this._media.values()) texture.dispose();
     this._media = new Map(entries.map(({ key, payload, sampler }) => [key, mediaTexture(payload, sampler)]));
+    this._movingSamplers = new Map(moving.map(({ key, sampler }) => [key, sampler]));
+  }
+
+  /**
+   * The frames of the videos and music the shader's channels name, for the frame about to be
+   * drawn (inputs/media-library.js), each into its channel's texture.
+   * @param {Array<{key: string, frame: import('./protocol.js').MediaFrame}>} passMedia
+   */
+  setPassMoving(passMedia) {
+    for (const { key, frame } of passMedia) {
+      const texture = movingTexture(this._media.get(key)?.texture ?? null, frame, this._movingSamplers.get(key));
+      this._media.set(key, { texture, size: [frame.width, frame.height, 1] });
+    }
   }
 
   /**

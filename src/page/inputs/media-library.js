@@ -1,14 +1,17 @@
-// The site's media a shader's channels name (a texture, a cubemap, a volume, by the site's paths
+// The site's media a shader's channels name (a texture, a cubemap, a volume, a video, music, by the site's paths
 // `/media/a/<hash>.<ext>`), from a media folder the page is pointed at: `?media=URL` of a folder
 // its own server serves, laid out as the site's paths (`<folder>/a/<hash>.<ext>`). The command
 // line's `--media DIR` serves one there. Each channel's files are fetched and decoded here (the
 // images flipped as its sampler's vflip says), then given to the render worker
-// (gpu/media-textures.js), which makes each channel's texture with its own sampler.
+// (gpu/media-textures.js), which makes each channel's texture with its own sampler. A video or
+// music is opened as the page's own channels open one (media-input.js), and gives its texture
+// at each frame's iTime (withFrames), as a channel of the panel does.
 //
 // What could not be had is said: every channel the library could not fill keeps the page's note
 // that it is black, with the file and why (no folder given, no such file, not an image).
 
-import { LIBRARY_KINDS, cubeFaceOrder, isOneChannelTexture, mediaFiles, parseVolume } from '../../shadertoy/media.js';
+import { LIBRARY_KINDS, MOVING_LIBRARY_KINDS, cubeFaceOrder, isOneChannelTexture, mediaFiles, parseVolume } from '../../shadertoy/media.js';
+import { MediaInput } from './media-input.js';
 import { unsupportedNote } from '../../shadertoy/multipass.js';
 import { mediaKey } from '../gpu/channel-bindings.js';
 
@@ -29,7 +32,7 @@ const decoding = (/** @type {boolean} */ vflip) =>
 
 export class MediaLibrary {
   /**
-   * @param {{tell: (type: 'passMedia', params: {entries: MediaEntry[]}) => void}} gpu the render worker
+   * @param {{tell: (type: 'passMedia', params: import('../gpu/protocol.js').Commands['passMedia']) => void}} gpu the render worker
    * @param {FetchMedia} fetchFile
    */
   constructor(gpu, fetchFile) {
@@ -39,6 +42,8 @@ export class MediaLibrary {
     this.base = null;
     /** The entries the worker has, kept to give a new worker again. @type {MediaEntry[]} */
     this._entries = [];
+    /** The videos and music of the shader's channels. @type {Array<{key: string, input: MediaInput, sampler: import('../../shadertoy/multipass.js').Sampler}>} */
+    this._moving = [];
     /** The page's note on each channel the library filled, and the line that replaces the note of each it could not. @type {Map<string, string | null>} */
     this._lines = new Map();
     /** The load under way (resolves when the worker has its media). @type {Promise<void> | null} */
@@ -60,21 +65,30 @@ export class MediaLibrary {
     const load = ++this._loads;
     const wanted = project.passes.flatMap((pass) =>
       pass.channels.flatMap((channel, i) =>
-        channel && LIBRARY_KINDS.includes(channel.kind)
+        channel && (LIBRARY_KINDS.includes(channel.kind) || MOVING_LIBRARY_KINDS.includes(channel.kind))
           ? [{ pass: pass.name, index: i, channel: /** @type {MediaChannel} */ (channel) }]
           : [],
       ),
     );
-    if (!wanted.length && !this._entries.length) {
+    if (!wanted.length && !this._entries.length && !this._moving.length) {
       this._lines = new Map();
       this.pending = null;
       return;
     }
     this.pending = (async () => {
       const results = await Promise.all(wanted.map((want) => this._channel(want.channel).then((payload) => ({ ...want, payload }))));
-      if (load !== this._loads) return; // a newer shader came meanwhile
+      if (load !== this._loads) {
+        for (const { payload } of results) if (payload instanceof MediaInput) payload.close();
+        return; // a newer shader came meanwhile
+      }
+      for (const { input } of this._moving) input.close();
+      this._moving = results.flatMap(({ pass, index, channel, payload }) =>
+        payload instanceof MediaInput ? [{ key: mediaKey(pass, index), input: payload, sampler: channel.sampler }] : [],
+      );
       this._entries = results.flatMap(({ pass, index, channel, payload }) =>
-        typeof payload === 'string' ? [] : [{ key: mediaKey(pass, index), payload, sampler: channel.sampler }],
+        typeof payload === 'string' || payload instanceof MediaInput
+          ? []
+          : [{ key: mediaKey(pass, index), payload, sampler: channel.sampler }],
       );
       this._lines = new Map(
         results.map(({ pass, index, channel, payload }) => [
@@ -87,9 +101,31 @@ export class MediaLibrary {
     })();
   }
 
+  /**
+   * A frame's inputs with the textures of the shader's videos and music at its iTime (none: the
+   * same inputs at once).
+   * @param {import('../gpu/protocol.js').FrameInputs} frame
+   * @param {boolean | null} running the live page's clock plays at 1× (music is heard), null
+   *   for a frame drawn apart from it (a recording, a capture)
+   */
+  withFrames(frame, running) {
+    if (!this._moving.length) return frame;
+    return Promise.all(
+      this._moving.map(async ({ key, input, sampler }) => {
+        if (running !== null) input.follow(frame.time, running);
+        return { key, frame: await input.frameAt(frame.time, frame.delta, sampler.vflip) };
+      }),
+    ).then((passMedia) => ({ ...frame, passMedia }));
+  }
+
+  /** Stops the music, when the page's clock stops. */
+  silence() {
+    for (const { input } of this._moving) input.follow(0, false);
+  }
+
   /** Gives the worker the media again (a new worker, a restored context). */
   resend() {
-    this.gpu.tell('passMedia', { entries: this._entries });
+    this.gpu.tell('passMedia', { entries: this._entries, moving: this._moving.map(({ key, sampler }) => ({ key, sampler })) });
   }
 
   /**
@@ -108,7 +144,7 @@ export class MediaLibrary {
   /**
    * One channel's media decoded, or why it could not be (a string).
    * @param {MediaChannel} channel
-   * @returns {Promise<MediaPayload | string>}
+   * @returns {Promise<MediaPayload | MediaInput | string>}
    */
   async _channel(channel) {
     const files = mediaFiles(channel);
@@ -123,6 +159,7 @@ export class MediaLibrary {
     const blobs = fetched.map((result) => /** @type {PromiseFulfilledResult<Blob>} */ (result).value);
     const vflip = channel.sampler.vflip;
     try {
+      if (channel.kind === 'video' || channel.kind === 'music') return await MediaInput.open(channel.kind, blobs[0], files[0]);
       if (channel.kind === 'volume') return { kind: 'volume', volume: parseVolume(await blobs[0].arrayBuffer()) };
       const images = await Promise.all(blobs.map((blob) => createImageBitmap(blob, decoding(vflip))));
       if (channel.kind === 'cubemap') return { kind: 'cubemap', faces: cubeFaceOrder(images, vflip) };
