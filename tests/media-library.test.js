@@ -311,7 +311,7 @@ describe('the site’s media from a folder, against what the test computes', () 
     });
   });
 
-  test('the command line: --media draws them, a missing file is said, --fetch-media downloads once into its cache', async () => {
+  test('the command line: --media draws them, a missing file is said, --fetch-media downloads once into its cache, --channelN takes a cubemap and a volume', async () => {
     const folder = fs.mkdtempSync(path.join(os.tmpdir(), 'shaderproof-library-'));
     const site = path.join(folder, 'site');
     writeMedia(path.join(site, 'media'));
@@ -374,6 +374,34 @@ describe('the site’s media from a folder, against what the test computes', () 
       expect(cached.code, cached.stderr).toBe(0);
       expect(cached.stderr).not.toMatch(/downloaded|warning/);
       checkRow(readOut('e.png'), cubeRow, 'render --fetch-media from the cache');
+
+      // --channelN: a cubemap (its faces beside it, as the site names them) and a volume, for a
+      // .glsl, with the site's sampler for a new input of each kind (mipmapped: level 0 read here)
+      const probes = [
+        ...CUBE_DIRECTIONS.map((d) => [`textureLod(iChannel0, ${glslVec(d)}, 0.0)`, cubeExpected(d, false)]),
+        ...CORNERS.map((v) => [`textureLod(iChannel1, ${centre(v)}, 0.0)`, byteTexel(...v)]),
+      ];
+      fs.writeFileSync(path.join(folder, 'channels.glsl'), probeCode(probes.map(([probe]) => probe)));
+      const media = path.join(site, 'media', 'a');
+      const channelled = await shaderproof(
+        'render',
+        'channels.glsl',
+        '--channel0',
+        path.join(media, 'cube.png'),
+        '--channel1',
+        path.join(media, 'bytes.bin'),
+        '--size',
+        `${probes.length}x1`,
+        '-o',
+        'f.png',
+      );
+      expect(channelled.code, channelled.stderr).toBe(0);
+      expect(channelled.stderr).not.toMatch(/warning/);
+      checkRow(
+        readOut('f.png'),
+        probes.map(([, expected]) => [expected, 0]),
+        'render --channel0 cube.png --channel1 bytes.bin',
+      );
     } finally {
       server.close();
       fs.rmSync(folder, { recursive: true, force: true });

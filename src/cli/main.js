@@ -46,7 +46,9 @@ const VIEW_HELP = `  --size WxH            canvas size in pixels (default 640x36
   --set NAME=VALUE      a control of the shader (repeatable), as the page's panel has it
   --channel0..3 FILE    an image, video or music file for iChannel0..3, by its type (a video's
                         frame and a music's spectrum are those at the frame's iTime; the
-                        webcam and microphone are the page's only)
+                        webcam and microphone are the page's only); a volume (the site's
+                        .bin) as sampler3D; a cubemap as samplerCube: an image whose other
+                        faces lie beside it as the site names them (sky_1.png ... sky_5.png)
   --date ISO|now        iDate at iTime 0 (default 2024-01-15T12:00:00Z, so that a clock draws
                         the same on every run; "now" for the real date)
 ${MEDIA_HELP}`;
@@ -102,7 +104,7 @@ iFrame = i, whatever a frame costs to draw.
   --size WxH            the frames' size in pixels (default 640x360)
   --mouse x,y[,z,w]     iMouse in pixels
   --set NAME=VALUE      a control of the shader (repeatable)
-  --channel0..3 FILE    an image, video or music file for iChannel0..3, by its type
+  --channel0..3 FILE    an image, video, music, volume (.bin) or cubemap file, as for render
   --date ISO|now        iDate at iTime 0 (default 2024-01-15T12:00:00Z; "now": the real date)
 ${MEDIA_HELP}
   -o, --output FILE     OUT.webm (VP9 or VP8) or OUT.zip (frame-0000.png, ...) (required)

@@ -11,6 +11,7 @@ import { writePng, writeWhole } from '../engine/png.js';
 import { fromBase64 } from '../shared/pixels.js';
 import { io, progressBar } from './io.js';
 import { mediaFolders } from './media.js';
+import { withLibraryChannels } from './channel-files.js';
 import { CliError, shaderKind } from './session.js';
 import { UsageError, viewQuery } from './view-options.js';
 
@@ -30,15 +31,22 @@ export async function renderShader(session, file, view, { converge = null, progr
     if (!fs.existsSync(f)) throw new CliError(`${f}: no such file`);
     return session.server.mount(f);
   };
-  const shaderUrl = session.server.mount(path.resolve(file));
-  const folders = await mediaFolders(file, view.media, io.err);
-  const query = viewQuery(shaderUrl, view, mount, folders.length ? session.server.mountFolders(folders) : null);
+  // a volume or a cubemap in --channelN: the shader as the JSON whose Image pass reads it (channel-files.js)
+  const wrapped = withLibraryChannels(file, view.channels);
+  const shaderUrl = wrapped
+    ? session.server.mountText(wrapped.json, /\.json$/i.test(file) ? path.basename(file) : `${path.basename(file)}.json`)
+    : session.server.mount(path.resolve(file));
+  const folders = [...(await mediaFolders(file, view.media, io.err)), ...(wrapped?.folders ?? [])];
+  const drawnView = wrapped ? { ...view, channels: wrapped.rest } : view;
+  const query = viewQuery(shaderUrl, drawnView, mount, folders.length ? session.server.mountFolders(folders) : null);
   let image;
   try {
     image = await session.draw(query);
   } catch (error) {
     if (error instanceof CliError)
-      error.message = error.hung ? `${file}: ${error.message}` : userMessage(error.message.replaceAll(shaderUrl, file), file);
+      error.message = error.hung
+        ? `${file}: ${error.message}`
+        : userMessage(error.message.replaceAll(shaderUrl, file).replaceAll(path.basename(shaderUrl), file), file);
     throw error;
   }
   const missing = view.controls.filter(([name]) => !(name in (image.info.controls ?? {}))).map(([name]) => name);
