@@ -306,6 +306,8 @@ describe('the site’s media from a folder, against what the test computes', () 
         }
         await goto(`?shader=/${base}/music.json&size=512x2&time=${MUSIC_TIME}&media=/${base}/media/`);
         checkMusic(await readPixels(page), samples, MUSIC_TIME, 'page, music a buffer pass names');
+        // the page's "Copy link" keeps the media folder, so the link draws the same
+        expect(await page.evaluate(() => window.raytracer.shareUrl())).toContain(`media=/${base}/media/`);
         expect(errors).toEqual([]);
       });
     });

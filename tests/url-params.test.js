@@ -130,11 +130,12 @@ test('formatUrlParams writes what parseUrlParams reads', () => {
     date: Date.UTC(2024, 0, 15, 12),
     fps: 30,
     channels: [null, 'img/a.png'],
+    media: '/site-media/',
     controls: { TWIST: 2.2, ALBEDO: [0.5, 0.25, 1], MAX_STEPS: 64, FLAG: true },
   };
   const query = formatUrlParams(state);
   expect(query).toBe(
-    '?shader=examples/raymarch.glsl&size=160x90&time=3.3&mouse=40,59,-40,-59&speed=2&date=2024-01-15T12%3A00%3A00.000Z&fps=30&iChannel1=img/a.png&TWIST=2.2&ALBEDO=0.5,0.25,1&MAX_STEPS=64&FLAG=true',
+    '?shader=examples/raymarch.glsl&size=160x90&time=3.3&mouse=40,59,-40,-59&speed=2&date=2024-01-15T12%3A00%3A00.000Z&fps=30&iChannel1=img/a.png&media=/site-media/&TWIST=2.2&ALBEDO=0.5,0.25,1&MAX_STEPS=64&FLAG=true',
   );
   const back = parseUrlParams(query, BASE);
   expect(back.warnings).toEqual([]);
@@ -148,6 +149,11 @@ test('formatUrlParams writes what parseUrlParams reads', () => {
     fps: 30,
   });
   expect(back.channels[1]).toBe('img/a.png');
+  expect(back.media).toBe('/site-media/');
+  // a media folder of another origin is refused, and said
+  expect(parseUrlParams('?media=https://elsewhere.example/media/', BASE).warnings[0]).toMatch(
+    /media=.* ignored: only files served by this page's server .*; the site's media a shader names stay black/,
+  );
   expect(back.controls).toEqual({ TWIST: '2.2', ALBEDO: '0.5,0.25,1', MAX_STEPS: '64', FLAG: 'true' });
   // the built-in shader, no mouse, real time: only size and time
   expect(formatUrlParams({ size: { width: 8, height: 4 }, time: 0, mouse: [0, 0, 0, 0] })).toBe('?size=8x4&time=0');

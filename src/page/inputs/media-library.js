@@ -40,6 +40,8 @@ export class MediaLibrary {
     this.fetchFile = fetchFile;
     /** The media folder's URL (ending in /), or null: none given. @type {string | null} */
     this.base = null;
+    /** @type {string | null} */
+    this.given = null;
     /** The entries the worker has, kept to give a new worker again. @type {MediaEntry[]} */
     this._entries = [];
     /** The videos and music of the shader's channels. @type {Array<{key: string, input: MediaInput, sampler: import('../../shadertoy/multipass.js').Sampler}>} */
@@ -53,6 +55,8 @@ export class MediaLibrary {
 
   /** @param {string | null} url the media folder, absolute or relative to the page (null: none) */
   setBase(url) {
+    /** The folder as the page's URL gave it (a shared link carries it so). */
+    this.given = url;
     this.base = url ? new URL(url.endsWith('/') ? url : `${url}/`, location.href).href : null;
   }
 

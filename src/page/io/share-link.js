@@ -161,6 +161,7 @@ export async function shareLink(app, shipped = null) {
     date: app.inputs.fixedDate,
     fps: app.inputs.fixedFps,
     channels: app.channels.urls,
+    media: app.media.given,
     controls: linkValues(app.controls, app.values),
   });
   let fragment = '';
