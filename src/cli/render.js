@@ -10,8 +10,7 @@ import { runLong } from '../engine/long-work.js';
 import { writePng, writeWhole } from '../engine/png.js';
 import { fromBase64 } from '../shared/pixels.js';
 import { io, progressBar } from './io.js';
-import { mediaFolders } from './media.js';
-import { withLibraryChannels } from './channel-files.js';
+import { mediaFolders, withLibraryChannels } from './media.js';
 import { CliError, shaderKind } from './session.js';
 import { UsageError, viewQuery } from './view-options.js';
 
@@ -31,7 +30,7 @@ export async function renderShader(session, file, view, { converge = null, progr
     if (!fs.existsSync(f)) throw new CliError(`${f}: no such file`);
     return session.server.mount(f);
   };
-  // a volume or a cubemap in --channelN: the shader as the JSON whose Image pass reads it (channel-files.js)
+  // a volume or a cubemap in --channelN: the shader as the JSON whose Image pass reads it (media.js)
   const wrapped = withLibraryChannels(file, view.channels);
   const shaderUrl = wrapped
     ? session.server.mountText(wrapped.json, /\.json$/i.test(file) ? path.basename(file) : `${path.basename(file)}.json`)
