@@ -377,6 +377,18 @@ describe('the site’s media from a folder, against what the test computes', () 
       expect(cached.stderr).not.toMatch(/downloaded|warning/);
       checkRow(readOut('e.png'), cubeRow, 'render --fetch-media from the cache');
 
+      // test: --media holds for every case; without it the case fails and no reference is written
+      fs.mkdirSync(path.join(folder, 'cases'));
+      fs.writeFileSync(path.join(folder, 'cases', 'cube.json'), CUBE_SHADER);
+      const updated = await shaderproof('test', 'cases', '--update', '--media', path.join(site, 'media'));
+      expect(updated.code, updated.stdout + updated.stderr).toBe(0);
+      const reference = path.join(folder, 'cases', '__references__', 'cube.json.png');
+      const written = fs.readFileSync(reference);
+      const bare = await shaderproof('test', 'cases');
+      expect(bare.code).toBe(1);
+      expect(bare.stdout + bare.stderr).toMatch(/needs the site's media/);
+      expect(fs.readFileSync(reference).equals(written)).toBe(true);
+
       // --channelN: a cubemap (its faces beside it, as the site names them) and a volume, for a
       // .glsl, with the site's sampler for a new input of each kind (mipmapped: level 0 read here)
       const probes = [
