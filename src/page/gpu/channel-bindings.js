@@ -29,9 +29,10 @@ export function ownChannelUniforms(black) {
  * @param {Step} step
  * @param {number} width
  * @param {number} height
- * @param {{buffers: import('./pass-buffers.js').PassBuffers, keyboard: THREE.Texture, channels: Array<THREE.Texture | null>, black: THREE.Texture}} sources
+ * @param {{buffers: import('./pass-buffers.js').PassBuffers, cube: import('./cube-buffer.js').CubeBuffer, keyboard: THREE.Texture,
+ *   channels: Array<THREE.Texture | null>, black: THREE.Texture}} sources
  */
-export function bindChannels(step, width, height, { buffers, keyboard, channels, black }) {
+export function bindChannels(step, width, height, { buffers, cube, keyboard, channels, black }) {
   const uniforms = step.material.uniforms;
   const resolution = uniforms.iChannelResolution.value;
   const times = uniforms.iChannelTime.value;
@@ -41,6 +42,7 @@ export function bindChannels(step, width, height, { buffers, keyboard, channels,
     times[i] = 0;
     let size = binding.resolution === 'canvas' ? [width, height, 1] : binding.resolution;
     if (binding.source === 'buffer') texture = buffers.read(/** @type {string} */ (binding.buffer));
+    else if (binding.source === 'cubebuffer') texture = cube.read();
     else if (binding.source === 'keyboard') texture = keyboard;
     else if (binding.source === 'none' && step.target === 'screen' && channels[i]) {
       texture = channels[i]; // an image the page put into this channel, or a moving one's frame
@@ -179,7 +181,7 @@ export class ChannelSamplers {
       unit++;
     }
     return step.bindings
-      .filter((binding) => (binding.source === 'buffer' || binding.source === 'keyboard') && binding.sampler && units.has(binding.channel))
+      .filter((binding) => ['buffer', 'keyboard', 'cubebuffer'].includes(binding.source) && binding.sampler && units.has(binding.channel))
       .map((binding) => ({ unit: units.get(binding.channel), sampler: this._samplerObject(/** @type {any} */ (binding.sampler)) }));
   }
 

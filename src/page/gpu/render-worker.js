@@ -173,8 +173,9 @@ function pump() {
     startBand(0, { warmUp: true, compiling: true });
     return;
   }
-  const rows = planner.rows(job.width, job.height - job.y);
-  renderer().drawRows(job.y, job.y + rows, target);
+  // the Cube A pass is its six faces stacked, and a band stops at a face's top (renderer.js)
+  const extent = renderer().extent(drawn, job.width, job.height);
+  const rows = renderer().drawRows(job.y, job.y + planner.rows(extent.width, extent.height - job.y), target);
   if (last && job.y + rows >= job.height && job.kind === 'frame') renderer().gpuTimer.end();
   startBand(rows);
 }
@@ -254,10 +255,11 @@ function bandDone(rows, ms) {
     probe.resolve(probed);
     return;
   }
-  planner.measured(job.width, rows, ms);
+  const extent = renderer().extent(renderer().steps[job.step], job.width, job.height);
+  planner.measured(extent.width, rows, ms);
   if (job.redo) job.redo = false;
   else job.y += rows;
-  if (job.y >= job.height && job.step < renderer().steps.length - 1) {
+  if (job.y >= extent.height && job.step < renderer().steps.length - 1) {
     renderer().endStep(renderer().steps[job.step]); // a buffer is done: the next pass reads it
     job.step++;
     job.y = 0;
@@ -425,6 +427,7 @@ const tell = serve(
 
     clearBuffers() {
       renderer().buffers.clear();
+      renderer().cube.clear();
       changed();
     },
 

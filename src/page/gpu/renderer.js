@@ -16,6 +16,7 @@ import * as THREE from 'three';
 import { GpuTimer } from './gpu-timer.js';
 import { blackTexture, shadertoyUniforms } from './uniforms.js';
 import { PassBuffers } from './pass-buffers.js';
+import { CubeBuffer } from './cube-buffer.js';
 import { WebGL2UnavailableError } from './errors.js';
 import { PassCompiler, VERTEX_SHADER } from './pass-compiler.js';
 import { ChannelSamplers, bindChannels, imageTexture, ownChannelUniforms, setMedia } from './channel-bindings.js';
@@ -117,6 +118,8 @@ export class ShaderRenderer {
     this.steps = [];
     /** Buffer A–D of a multipass shader. */
     this.buffers = new PassBuffers(this.three, (source, target, width, height) => this._copy(source, target, width, height));
+    /** The Cube A pass's cube maps. */
+    this.cube = new CubeBuffer(this.three);
     /** Shadertoy's keyboard texture: 256 × 3 bytes, nearest (keyboard.js). */
     this._keyboardBytes = new Uint8Array(256 * 3);
     this.keyboard = new THREE.DataTexture(this._keyboardBytes, 256, 3, THREE.RedFormat, THREE.UnsignedByteType);
@@ -187,6 +190,12 @@ export class ShaderRenderer {
         if (binding.source === 'buffer' && binding.sampler?.filter === 'mipmap')
           wanted.set(binding.buffer, { filter: 'mipmap', wrap: 'clamp', vflip: false });
     this.buffers.use(wanted);
+    const readsCube = (/** @type {string} */ filter) =>
+      steps.some((step) => step.bindings.some((b) => b.source === 'cubebuffer' && b.sampler.filter === filter));
+    this.cube.use(
+      steps.some((step) => step.target === 'cube'),
+      readsCube('mipmap'),
+    );
   }
 
   /**
@@ -223,16 +232,29 @@ export class ShaderRenderer {
   beginStep(step, width, height) {
     const uniforms = step.material.uniforms;
     for (const name of Object.keys(this.uniforms)) if (!(name in uniforms)) uniforms[name] = this.uniforms[name]; // controls added later
-    bindChannels(step, width, height, { buffers: this.buffers, keyboard: this.keyboard, channels: this._channels, black: this._black });
+    bindChannels(step, width, height, { buffers: this.buffers, cube: this.cube, keyboard: this.keyboard, channels: this._channels, black: this._black });
     this.mesh.material = step.material;
     step.material.uniformsNeedUpdate = true; // the same material drawn again may read other textures
     this.samplers.use(step);
+    if (step.target === 'cube') return this.cube.writeTarget();
     return step.target === 'screen' ? null : this.buffers.writeTarget(step.target);
   }
 
   /** A pass has drawn all of its rows. @param {Step} step */
   endStep(step) {
-    if (step.target !== 'screen') this.buffers.swap(step.target);
+    if (step.target === 'cube') this.cube.swap();
+    else if (step.target !== 'screen') this.buffers.swap(step.target);
+  }
+
+  /**
+   * The picture a pass draws, as bands cut it: the frame's width × height, or the Cube A pass's
+   * six faces stacked (cube-buffer.js).
+   * @param {Step} step
+   * @param {number} width
+   * @param {number} height
+   */
+  extent(step, width, height) {
+    return step.target === 'cube' ? CubeBuffer.extent() : { width, height };
   }
 
   /** The keyboard texture's bytes for the next frame (Shadertoy's 256 × 3: keyboard.js). @param {Uint8Array} data */
@@ -336,15 +358,23 @@ export class ShaderRenderer {
 
   /**
    * Draws rows [y0, y1) of the current shader into `target` (default: the frame target): one
-   * draw, scissored to those rows. The caller writes the uniforms first.
+   * draw, scissored to those rows; into a cube map, the rows of the six faces stacked, up to the
+   * top of the face of y0. The caller writes the uniforms first.
    * @param {number} y0 first row, from the bottom
    * @param {number} y1 one past the last row
    * @param {THREE.WebGLRenderTarget} [target]
+   * @returns {number} the rows drawn (0 before any shader compiled)
    */
   drawRows(y0, y1, target = this.frameTarget) {
-    if (!this.hasProgram) return false;
-    this.drawRegion(target, 0, y0, target.width, y1 - y0);
-    return true;
+    if (!this.hasProgram) return 0;
+    if (!(target instanceof THREE.WebGLCubeRenderTarget)) {
+      this.drawRegion(target, 0, y0, target.width, y1 - y0);
+      return y1 - y0;
+    }
+    const { face, y, rows } = CubeBuffer.band(y0, y1);
+    CubeBuffer.aim(/** @type {THREE.RawShaderMaterial} */ (this.mesh.material), face);
+    this.drawRegion(target, 0, y, target.width, rows, face);
+    return rows;
   }
 
   /**
@@ -355,11 +385,12 @@ export class ShaderRenderer {
    * @param {number} y
    * @param {number} width
    * @param {number} height
+   * @param {number} [face] the face of a cube map drawn into
    */
-  drawRegion(target, x, y, width, height) {
+  drawRegion(target, x, y, width, height, face = 0) {
     target.scissor.set(x, y, width, height);
     target.scissorTest = x > 0 || y > 0 || width < target.width || height < target.height;
-    this.three.setRenderTarget(target);
+    this.three.setRenderTarget(target, face);
     this.samplers.bind();
     try {
       this.three.render(this.scene, this.camera);
@@ -372,7 +403,9 @@ export class ShaderRenderer {
   /** Draws the whole frame at once, each pass in one draw (the benchmark's way). */
   render() {
     for (const step of this.steps) {
-      this.drawRows(0, this.height, this.beginStep(step, this.width, this.height) ?? this.frameTarget);
+      const target = this.beginStep(step, this.width, this.height) ?? this.frameTarget;
+      const { height } = this.extent(step, this.width, this.height);
+      for (let y = 0; y < height; ) y += this.drawRows(y, height, target);
       this.endStep(step);
     }
     return this.hasProgram;
