@@ -81,11 +81,16 @@ const DIRECTION_CUBE = `void mainCubemap(out vec4 fragColor, in vec2 fragCoord, 
     fragColor = vec4(rayDir * 0.5 + 0.5, 1.0);
 }`;
 
-/** Directions to read back, one per cell of a 4 × 4 grid: the six axes, corners, and off-axis rays on every face (a flipped face shows there). */
+/**
+ * Directions to read back, one per cell of a 4 × 4 grid: the six axes, rays near three corners,
+ * and off-axis rays on every face (a face drawn flipped or turned shows there). None lies exactly
+ * on an edge or a corner: there the texels the filter takes from the neighbouring faces are the
+ * driver's choice (SwiftShader reads (1, 1, 1) as the colour of (1, 1, −1)), not the site's.
+ */
 const DIRECTIONS = [
   [1, 0, 0], [-1, 0, 0], [0, 1, 0], [0, -1, 0],
-  [0, 0, 1], [0, 0, -1], [1, 1, 1], [-1, 1, -1],
-  [1, -1, -1], [1, 0.5, 0.25], [-1, 0.25, -0.5], [0.3, 1, -0.6],
+  [0, 0, 1], [0, 0, -1], [1, 0.9, 0.8], [-0.8, 1, -0.9],
+  [0.9, -0.8, -1], [1, 0.5, 0.25], [-1, 0.25, -0.5], [0.3, 1, -0.6],
   [0.5, -1, 0.2], [-0.4, 0.2, 1], [0.6, -0.3, -1], [-0.7, -0.8, 0.75],
 ]; // prettier-ignore
 
@@ -113,17 +118,17 @@ const expectedBytes = (d) => {
   return d.map((v) => 255 * (v / length / 2 + 0.5));
 };
 
-/** Checks each cell's centre pixel of a 32 × 32 picture (rows top to bottom) against its direction. */
+/** Checks each cell's centre pixel of a 32 × 32 picture (rows top to bottom) against its direction: every direction off by more than the tolerance is listed. */
 function expectDirections(image) {
+  const wrong = [];
   DIRECTIONS.forEach((d, i) => {
     const x = (i % GRID) * CELL + CELL / 2;
     const yFromBottom = Math.floor(i / GRID) * CELL + CELL / 2;
     const got = pixel(image, x, image.height - 1 - yFromBottom);
     const want = expectedBytes(d);
-    got.forEach((value, c) =>
-      expect(Math.abs(value - want[c]), `direction ${d}: got ${got}, want ${want.map(Math.round)}`).toBeLessThanOrEqual(BYTE_TOLERANCE),
-    );
+    if (got.some((value, c) => Math.abs(value - want[c]) > BYTE_TOLERANCE)) wrong.push(`(${d}): got ${got}, want ${want.map(Math.round)}`);
   });
+  expect(wrong).toEqual([]);
 }
 
 describe('Cube A in the site’s JSON and the schedule', () => {

@@ -143,7 +143,7 @@ export const soundPass = (model) => model.passes.find((p) => p.kind === 'sound')
  * The Cube A pass, or null when the shader has none.
  * @param {MultipassShader} model
  */
-export const cubemapPass = (model) => model.passes.find((p) => p.kind === 'cubemap') ?? null;
+const cubemapPass = (model) => model.passes.find((p) => p.kind === 'cubemap') ?? null;
 
 /**
  * The passes in the order they paint every frame: the buffers A, B, C, D (those present), the

@@ -264,11 +264,13 @@ function bandDone(rows, ms) {
     job.step++;
     job.y = 0;
   }
-  const done = job.y >= job.height;
+  // the pass now under way: the next one's rows start at 0 (the Cube A pass has more than the frame)
+  const { height } = renderer().extent(renderer().steps[job.step], job.width, job.height);
+  const done = job.y >= height;
   const now = performance.now();
   const show = !done && job.kind === 'frame' && now - lastPresent > PRESENT_EVERY_MS;
   if (show) lastPresent = now;
-  tell('band', { kind: job.kind, y: job.y, height: job.height, bitmap: show ? renderer().present() : null });
+  tell('band', { kind: job.kind, y: job.y, height, bitmap: show ? renderer().present() : null });
   if (!done) return;
   const finished = job;
   job = null;

@@ -232,7 +232,13 @@ export class ShaderRenderer {
   beginStep(step, width, height) {
     const uniforms = step.material.uniforms;
     for (const name of Object.keys(this.uniforms)) if (!(name in uniforms)) uniforms[name] = this.uniforms[name]; // controls added later
-    bindChannels(step, width, height, { buffers: this.buffers, cube: this.cube, keyboard: this.keyboard, channels: this._channels, black: this._black });
+    bindChannels(step, width, height, {
+      buffers: this.buffers,
+      cube: this.cube,
+      keyboard: this.keyboard,
+      channels: this._channels,
+      black: this._black,
+    });
     this.mesh.material = step.material;
     step.material.uniformsNeedUpdate = true; // the same material drawn again may read other textures
     this.samplers.use(step);
@@ -249,12 +255,12 @@ export class ShaderRenderer {
   /**
    * The picture a pass draws, as bands cut it: the frame's width × height, or the Cube A pass's
    * six faces stacked (cube-buffer.js).
-   * @param {Step} step
+   * @param {Step | undefined} step (none: a band ended after a new shader with fewer passes came)
    * @param {number} width
    * @param {number} height
    */
   extent(step, width, height) {
-    return step.target === 'cube' ? CubeBuffer.extent() : { width, height };
+    return step?.target === 'cube' ? CubeBuffer.extent() : { width, height };
   }
 
   /** The keyboard texture's bytes for the next frame (Shadertoy's 256 × 3: keyboard.js). @param {Uint8Array} data */
@@ -405,7 +411,7 @@ export class ShaderRenderer {
     for (const step of this.steps) {
       const target = this.beginStep(step, this.width, this.height) ?? this.frameTarget;
       const { height } = this.extent(step, this.width, this.height);
-      for (let y = 0; y < height; ) y += this.drawRows(y, height, target);
+      for (let y = 0; y < height;) y += this.drawRows(y, height, target);
       this.endStep(step);
     }
     return this.hasProgram;
