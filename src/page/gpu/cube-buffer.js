@@ -47,12 +47,14 @@ export class CubeBuffer {
   }
 
   /**
-   * Whether the shader has a Cube A pass, and whether a reader samples it with mipmaps. New cube
-   * maps start cleared; the same wish keeps the ones there (a recompile is not a Restart).
-   * @param {boolean} present
-   * @param {boolean} mipmaps
+   * The cube maps a frame's passes need: none without a Cube A pass, with mipmap levels when
+   * some reader samples it with the "mipmap" filter. New cube maps start cleared; the same need
+   * keeps the ones there (a recompile is not a Restart).
+   * @param {import('./pass-compiler.js').Step[]} steps
    */
-  use(present, mipmaps) {
+  use(steps) {
+    const present = steps.some((step) => step.target === 'cube');
+    const mipmaps = steps.some((step) => step.bindings.some((b) => b.source === 'cubebuffer' && b.sampler.filter === 'mipmap'));
     if (this.targets.length && (!present || mipmaps !== this.mipmaps)) this.dispose();
     if (!present || this.targets.length) return;
     this.mipmaps = mipmaps;
@@ -93,35 +95,32 @@ export class CubeBuffer {
   }
 
   /**
-   * The size of the pass as the render worker cuts it in bands: the six faces stacked.
-   * @returns {{width: number, height: number}}
+   * The picture a pass draws, as the render worker cuts it in bands: the frame's width × height,
+   * or the Cube A pass's six faces stacked.
+   * @param {import('./pass-compiler.js').Step | undefined} step (none: a band ended after a new
+   *   shader with fewer passes came)
+   * @param {number} width
+   * @param {number} height
    */
-  static extent() {
-    return { width: CUBE_A_SIZE, height: STACKED_HEIGHT };
+  static extent(step, width, height) {
+    return step?.target === 'cube' ? { width: CUBE_A_SIZE, height: STACKED_HEIGHT } : { width, height };
   }
 
   /**
-   * Where rows [y0, y1) of the stacked picture land: the face of row y0, its rows from the
-   * face's bottom, cut at the face's top.
+   * Points the pass's material at the face of row y0 of the stacked picture
+   * (EffectPass.Paint_Cubemap: unCorners, and the viewport [0, 0, 1024, 1024] as unViewport), and
+   * says where rows [y0, y1) land: that face, its rows from the face's bottom, cut at its top.
+   * @param {THREE.RawShaderMaterial} material
    * @param {number} y0
    * @param {number} y1
    */
-  static band(y0, y1) {
+  static aim(material, y0, y1) {
     const face = Math.floor(y0 / CUBE_A_SIZE);
     const y = y0 - face * CUBE_A_SIZE;
-    return { face, y, rows: Math.min(y1 - y0, CUBE_A_SIZE - y) };
-  }
-
-  /**
-   * Points the pass's material at face `face` (EffectPass.Paint_Cubemap: unCorners and the
-   * viewport [0, 0, 1024, 1024] as unViewport).
-   * @param {THREE.RawShaderMaterial} material
-   * @param {number} face
-   */
-  static aim(material, face) {
     material.uniforms.unCorners.value = faceCorners(face);
     material.uniforms.unViewport.value = [0, 0, CUBE_A_SIZE, CUBE_A_SIZE];
     material.uniformsNeedUpdate = true;
+    return { face, y, rows: Math.min(y1 - y0, CUBE_A_SIZE - y) };
   }
 
   /**

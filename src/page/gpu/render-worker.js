@@ -14,6 +14,7 @@ import { BandPlanner } from './band-planner.js';
 import { flipRows } from '../../shared/pixels.js';
 import { serve } from './protocol.js';
 import { PaintGate } from './paint-gate.js';
+import { CubeBuffer } from './cube-buffer.js';
 import { TILE_OFFSET_UNIFORM } from '../../shadertoy/header.js';
 
 /** @typedef {import('./protocol.js').FrameInputs} FrameInputs */
@@ -174,7 +175,7 @@ function pump() {
     return;
   }
   // the Cube A pass is its six faces stacked, and a band stops at a face's top (renderer.js)
-  const extent = renderer().extent(drawn, job.width, job.height);
+  const extent = CubeBuffer.extent(drawn, job.width, job.height);
   const rows = renderer().drawRows(job.y, job.y + planner.rows(extent.width, extent.height - job.y), target);
   if (last && job.y + rows >= job.height && job.kind === 'frame') renderer().gpuTimer.end();
   startBand(rows);
@@ -255,7 +256,7 @@ function bandDone(rows, ms) {
     probe.resolve(probed);
     return;
   }
-  const extent = renderer().extent(renderer().steps[job.step], job.width, job.height);
+  const extent = CubeBuffer.extent(renderer().steps[job.step], job.width, job.height);
   planner.measured(extent.width, rows, ms);
   if (job.redo) job.redo = false;
   else job.y += rows;
@@ -265,7 +266,7 @@ function bandDone(rows, ms) {
     job.y = 0;
   }
   // the pass now under way: the next one's rows start at 0 (the Cube A pass has more than the frame)
-  const { height } = renderer().extent(renderer().steps[job.step], job.width, job.height);
+  const { height } = CubeBuffer.extent(renderer().steps[job.step], job.width, job.height);
   const done = job.y >= height;
   const now = performance.now();
   const show = !done && job.kind === 'frame' && now - lastPresent > PRESENT_EVERY_MS;

@@ -15,10 +15,11 @@
 import * as THREE from 'three';
 import { GpuTimer } from './gpu-timer.js';
 import { blackTexture, shadertoyUniforms } from './uniforms.js';
-import { PassBuffers } from './pass-buffers.js';
+import { PassBuffers, buffersWanted } from './pass-buffers.js';
 import { CubeBuffer } from './cube-buffer.js';
 import { WebGL2UnavailableError } from './errors.js';
-import { PassCompiler, VERTEX_SHADER } from './pass-compiler.js';
+import { PassCompiler } from './pass-compiler.js';
+import { copyScene, fullscreenTriangle } from './frame-copy.js';
 import { ChannelSamplers, bindChannels, imageTexture, ownChannelUniforms, setMedia } from './channel-bindings.js';
 import { PixelProbe } from './probe.js';
 import { SoundPass } from '../sound/sound-pass.js';
@@ -26,23 +27,6 @@ import { sendVerbatimSources } from './verbatim-source.js';
 import { TILE_OFFSET_UNIFORM } from '../../shadertoy/header.js';
 
 /** @typedef {import('./pass-compiler.js').Step} Step */
-
-/** Copies the frame target to the canvas pixel for pixel (texelFetch: no filtering, no flip). */
-const COPY_SHADER = `
-precision highp float;
-uniform highp sampler2D frame;
-out vec4 color;
-void main() {
-    color = texelFetch(frame, ivec2(gl_FragCoord.xy), 0);
-}
-`;
-
-/** One triangle whose middle covers clip space [-1, 1]². */
-function fullscreenTriangle() {
-  const geometry = new THREE.BufferGeometry();
-  geometry.setAttribute('position', new THREE.Float32BufferAttribute([-1, -1, 0, 3, -1, 0, -1, 3, 0], 3));
-  return geometry;
-}
 
 export class ShaderRenderer {
   /** @param {OffscreenCanvas} canvas the worker's own canvas */
@@ -94,21 +78,9 @@ export class ShaderRenderer {
 
     /** Where frames are drawn and kept (RGBA8, as the page's canvas): the page shows copies of it. */
     this.frameTarget = this.makeTarget(1, 1);
-    this.copyScene = new THREE.Scene();
-    const copy = new THREE.Mesh(
-      geometry,
-      new THREE.RawShaderMaterial({
-        glslVersion: THREE.GLSL3,
-        vertexShader: VERTEX_SHADER,
-        fragmentShader: COPY_SHADER,
-        uniforms: { frame: { value: this.frameTarget.texture } },
-        depthTest: false,
-        depthWrite: false,
-      }),
-    );
-    copy.frustumCulled = false;
-    this.copyScene.add(copy);
-    this._copySource = /** @type {THREE.RawShaderMaterial} */ (copy.material).uniforms.frame;
+    const copy = copyScene(geometry, this.frameTarget.texture);
+    this.copyScene = copy.scene;
+    this._copySource = copy.source;
 
     this._black = this.uniforms.iChannel0.value;
     /** The textures loaded into iChannel0..3. @type {Array<THREE.Texture | null>} */
@@ -124,6 +96,8 @@ export class ShaderRenderer {
     this._keyboardBytes = new Uint8Array(256 * 3);
     this.keyboard = new THREE.DataTexture(this._keyboardBytes, 256, 3, THREE.RedFormat, THREE.UnsignedByteType);
     this.keyboard.needsUpdate = true;
+    /** What passes read in their channels (channel-bindings.js: bindChannels). */
+    this._sources = { buffers: this.buffers, cube: this.cube, keyboard: this.keyboard, channels: this._channels, black: this._black };
     /** The sampler objects of the pass being drawn (channel-bindings.js). */
     this.samplers = new ChannelSamplers(gl, this.three);
 
@@ -182,20 +156,8 @@ export class ShaderRenderer {
     this._onScreen = { project, hostBlock, fileName };
     this.tiledStep = null;
     this.mesh.material = steps[steps.length - 1].material;
-    /** @type {Map<string, import('../../shadertoy/multipass.js').Sampler>} */
-    const wanted = new Map();
-    for (const step of steps) if (step.target !== 'screen') wanted.set(step.target, { filter: 'nearest', wrap: 'clamp', vflip: false });
-    for (const step of steps)
-      for (const binding of step.bindings)
-        if (binding.source === 'buffer' && binding.sampler?.filter === 'mipmap')
-          wanted.set(binding.buffer, { filter: 'mipmap', wrap: 'clamp', vflip: false });
-    this.buffers.use(wanted);
-    const readsCube = (/** @type {string} */ filter) =>
-      steps.some((step) => step.bindings.some((b) => b.source === 'cubebuffer' && b.sampler.filter === filter));
-    this.cube.use(
-      steps.some((step) => step.target === 'cube'),
-      readsCube('mipmap'),
-    );
+    this.buffers.use(buffersWanted(steps));
+    this.cube.use(steps);
   }
 
   /**
@@ -232,13 +194,7 @@ export class ShaderRenderer {
   beginStep(step, width, height) {
     const uniforms = step.material.uniforms;
     for (const name of Object.keys(this.uniforms)) if (!(name in uniforms)) uniforms[name] = this.uniforms[name]; // controls added later
-    bindChannels(step, width, height, {
-      buffers: this.buffers,
-      cube: this.cube,
-      keyboard: this.keyboard,
-      channels: this._channels,
-      black: this._black,
-    });
+    bindChannels(step, width, height, this._sources);
     this.mesh.material = step.material;
     step.material.uniformsNeedUpdate = true; // the same material drawn again may read other textures
     this.samplers.use(step);
@@ -250,17 +206,6 @@ export class ShaderRenderer {
   endStep(step) {
     if (step.target === 'cube') this.cube.swap();
     else if (step.target !== 'screen') this.buffers.swap(step.target);
-  }
-
-  /**
-   * The picture a pass draws, as bands cut it: the frame's width × height, or the Cube A pass's
-   * six faces stacked (cube-buffer.js).
-   * @param {Step | undefined} step (none: a band ended after a new shader with fewer passes came)
-   * @param {number} width
-   * @param {number} height
-   */
-  extent(step, width, height) {
-    return step?.target === 'cube' ? CubeBuffer.extent() : { width, height };
   }
 
   /** The keyboard texture's bytes for the next frame (Shadertoy's 256 × 3: keyboard.js). @param {Uint8Array} data */
@@ -377,8 +322,7 @@ export class ShaderRenderer {
       this.drawRegion(target, 0, y0, target.width, y1 - y0);
       return y1 - y0;
     }
-    const { face, y, rows } = CubeBuffer.band(y0, y1);
-    CubeBuffer.aim(/** @type {THREE.RawShaderMaterial} */ (this.mesh.material), face);
+    const { face, y, rows } = CubeBuffer.aim(/** @type {THREE.RawShaderMaterial} */ (this.mesh.material), y0, y1);
     this.drawRegion(target, 0, y, target.width, rows, face);
     return rows;
   }
@@ -410,7 +354,7 @@ export class ShaderRenderer {
   render() {
     for (const step of this.steps) {
       const target = this.beginStep(step, this.width, this.height) ?? this.frameTarget;
-      const { height } = this.extent(step, this.width, this.height);
+      const { height } = CubeBuffer.extent(step, this.width, this.height);
       for (let y = 0; y < height;) y += this.drawRows(y, height, target);
       this.endStep(step);
     }
