@@ -112,6 +112,13 @@ void mainImage(out vec4 fragColor, in vec2 fragCoord) {
  */
 const BYTE_TOLERANCE = 1;
 
+/**
+ * The smallest mipmap level is made by ten halvings in half float: each may round by half a
+ * half-float step (2^-12 of a value under 1, 0.06 of a byte), 0.6 of a byte in all, plus the 8-bit
+ * frame's 0.5: under two bytes.
+ */
+const MIPMAP_TOLERANCE = 2;
+
 /** The colour DIRECTION_CUBE stores for direction `d`, as 0–255. */
 const expectedBytes = (d) => {
   const length = Math.hypot(...d);
@@ -172,13 +179,48 @@ describe('Cube A in the site’s JSON and the schedule', () => {
 });
 
 describe('Cube A on the page', () => {
-  test('a Cube A whose faces encode their ray direction reads back along 16 directions as computed here', async () => {
+  // within a cell the direction is one constant, so the mipmap filter reads level 0 as linear
+  // does; nearest reads a texel whose ray is at most half a texel away
+  test.each(['linear', 'nearest', 'mipmap'])(
+    'a Cube A whose faces encode their ray direction, read with the %s filter, reads back along 16 directions as computed here',
+    async (filter) => {
+      await withPage(async ({ page, goto }) => {
+        await goto('?size=32x32&time=0');
+        const json = exportOf({ cube: DIRECTION_CUBE, image: SAMPLE_IMAGE, imageInputs: [cubeInput(0, filter)] });
+        const outcome = await page.evaluate((j) => window.raytracer.setProject(j), json);
+        expect(outcome.error ?? null).toBe(null);
+        expect(outcome.notes ?? []).toEqual([]);
+        expectDirections(await readPixels(page));
+      });
+    },
+  );
+
+  test('read with the mipmap filter, its smallest level is each face’s mean colour, made after the faces are drawn', async () => {
+    // every face stores (rayDir * 0.5 + 0.5); by symmetry its mean is 0.5 but along the face's own
+    // axis, 0.5 ± 0.5 m, where m is the mean over the texels of the axis component 1/|(1, a, b)|
+    let sum = 0;
+    for (let y = 0; y < CUBE_A_SIZE; y++)
+      for (let x = 0; x < CUBE_A_SIZE; x++) sum += 1 / Math.hypot(...faceDirection(0, x + 0.5, y + 0.5));
+    const m = sum / CUBE_A_SIZE ** 2;
+    const axes = DIRECTIONS.slice(0, 6);
+    const image = SAMPLE_IMAGE.replace(
+      'texture(iChannel0, DIRECTIONS[cell.y * 4 + cell.x])',
+      'textureLod(iChannel0, DIRECTIONS[cell.y * 4 + cell.x], 10.0)',
+    );
+    expect(image).not.toBe(SAMPLE_IMAGE);
     await withPage(async ({ page, goto }) => {
       await goto('?size=32x32&time=0');
-      const outcome = await page.evaluate((j) => window.raytracer.setProject(j), exportOf({ cube: DIRECTION_CUBE, image: SAMPLE_IMAGE }));
-      expect(outcome.error ?? null).toBe(null);
-      expect(outcome.notes ?? []).toEqual([]);
-      expectDirections(await readPixels(page));
+      const json = exportOf({ cube: DIRECTION_CUBE, image, imageInputs: [cubeInput(0, 'mipmap')] });
+      expect((await page.evaluate((j) => window.raytracer.setProject(j), json)).error ?? null).toBe(null);
+      const frame = await readPixels(page);
+      const wrong = axes.flatMap((d, i) => {
+        const got = pixel(frame, (i % GRID) * CELL + CELL / 2, frame.height - 1 - (Math.floor(i / GRID) * CELL + CELL / 2));
+        const want = d.map((v) => 255 * (0.5 + 0.5 * m * v));
+        return got.some((value, c) => Math.abs(value - want[c]) > MIPMAP_TOLERANCE)
+          ? [`(${d}): got ${got}, want ${want.map(Math.round)}`]
+          : [];
+      });
+      expect(wrong).toEqual([]);
     });
   });
 
