@@ -15,6 +15,7 @@ import { composePassShader } from '../src/shadertoy/header.js';
 import { frameSchedule } from '../src/shadertoy/multipass.js';
 import { fromShadertoyJson, toShadertoyJson } from '../src/shadertoy/multipass-json.js';
 import { builtPage } from '../src/engine/page-server.js';
+import { deserializeProject } from '../src/page/io/project-files.js';
 import { REPO_ROOT } from './harness/config.js';
 import { readPng } from './harness/images.js';
 import { editorTabs, exportJsonFile } from './page-multipass-helpers.js';
@@ -161,6 +162,19 @@ describe('Cube A in the site’s JSON and the schedule', () => {
     expect(code).toContain('uniform vec3 unCorners[5];');
     expect(code).toContain('uniform samplerCube iChannel1;');
     expect(code).not.toContain('void mainImage(out vec4 c, in vec2 f);');
+  });
+  test('a shader kept in the browser before Cube A ran here (its cubemap pass in `extra`) comes back with the pass', () => {
+    const json = exportOf({ cube: DIRECTION_CUBE, image: SAMPLE_IMAGE });
+    const [image, cube] = json.Shader.renderpass;
+    // as the page kept it then: the pass aside, and the input reading it a cubemap it could not have
+    const old = fromShadertoyJson({ Shader: { ...json.Shader, renderpass: [{ ...image, inputs: [] }] } }).model;
+    const sampler = { filter: 'linear', wrap: 'clamp', vflip: false };
+    old.passes[0].channels[0] = { kind: 'cubemap', src: '/media/previz/cubemap00.png', supported: false, sampler, extra: { id: '4dX3Rr' } };
+    old.extra = { ...old.extra, unsupportedPasses: [cube] };
+    const kept = deserializeProject(JSON.stringify(old));
+    expect(kept.passes.map((p) => p.kind)).toEqual(['image', 'cubemap']);
+    expect(kept.passes[0].channels[0]?.kind).toBe('cubebuffer');
+    expect(kept.extra?.unsupportedPasses).toBeUndefined();
   });
   test.each([
     ['site', (json) => json],

@@ -147,7 +147,9 @@ export function serializeProject(model) {
 export function deserializeProject(text) {
   if (looksLikeJson(text)) {
     try {
-      return validateModel(JSON.parse(text));
+      const model = validateModel(JSON.parse(text));
+      // kept before Cube A ran here, its cubemap pass rode in `extra` as the file had it: read again
+      return model.extra?.unsupportedPasses ? fromShadertoyJson(toShadertoyJson(model)).model : model;
     } catch {
       // not a model: taken as it is
     }
