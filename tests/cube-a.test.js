@@ -168,7 +168,7 @@ describe('Cube A in the site’s JSON and the schedule', () => {
     const [image, cube] = json.Shader.renderpass;
     // as the page kept it then: the pass aside, and the input reading it a cubemap it could not have
     const old = fromShadertoyJson({ Shader: { ...json.Shader, renderpass: [{ ...image, inputs: [] }] } }).model;
-    const sampler = { filter: 'linear', wrap: 'clamp', vflip: false };
+    const sampler = /** @type {const} */ ({ filter: 'linear', wrap: 'clamp', vflip: false });
     old.passes[0].channels[0] = { kind: 'cubemap', src: '/media/previz/cubemap00.png', supported: false, sampler, extra: { id: '4dX3Rr' } };
     old.extra = { ...old.extra, unsupportedPasses: [cube] };
     const kept = deserializeProject(JSON.stringify(old));
