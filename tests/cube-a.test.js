@@ -156,6 +156,25 @@ describe('Cube A in the site’s JSON and the schedule', () => {
     expect(image).toMatchObject({ source: 'cubebuffer', frame: 'current', samplerType: 'Cube', resolution: [1024, 1024, 1] });
     expect(schedule[0].bindings[1]).toMatchObject({ source: 'cubebuffer', frame: 'previous', samplerType: 'Cube' });
   });
+  test('a buffer reads Cube A as of last frame (the site paints the buffers first), and Cube A reads a buffer as of this frame', () => {
+    const json = exportOf({
+      cube: DIRECTION_CUBE,
+      cubeInputs: [{ ...cubeInput(0), id: '4dXGR8', type: 'buffer', filepath: '/media/previz/buffer00.png' }],
+      image: SAMPLE_IMAGE,
+    });
+    json.Shader.renderpass.push({
+      inputs: [cubeInput(0)],
+      outputs: [{ id: '4dXGR8', channel: 0 }],
+      code: 'void mainImage(out vec4 c, in vec2 f) { c = vec4(0.0); }',
+      name: 'Buffer A',
+      description: '',
+      type: 'buffer',
+    });
+    const schedule = frameSchedule(fromShadertoyJson(json).model);
+    expect(schedule.map((s) => s.pass.name)).toEqual(['Buffer A', 'Cube A', 'Image']);
+    expect(schedule[0].bindings[0]).toMatchObject({ source: 'cubebuffer', frame: 'previous' });
+    expect(schedule[1].bindings[0]).toMatchObject({ source: 'buffer', buffer: 'A', frame: 'current' });
+  });
   test('its header declares mainCubemap, the face uniforms, and samplerCube for the channel reading it', () => {
     const { code } = composePassShader(DIRECTION_CUBE, { kind: 'cubemap', channelTypes: ['2D', 'Cube', '2D', '2D'] });
     expect(code).toContain('void mainCubemap(out vec4 c, in vec2 f, in vec3 ro, in vec3 rd);');
