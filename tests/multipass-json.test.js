@@ -169,11 +169,12 @@ describe('Shadertoy JSON: loading', () => {
     });
   });
 
-  test('media the page cannot have: black channels and a note each; a cubemap pass noted, not run; the Sound tab a pass', () => {
+  test('media the page cannot have: black channels and a note each; the Cube A and Sound tabs passes of their own', () => {
     const { model, notes } = fromShadertoyJson(MEDIA_EXPORT);
     expect(model.passes.map((p) => [p.name, p.kind])).toEqual([
       ['Image', 'image'],
       ['Sound', 'sound'],
+      ['Cube A', 'cubemap'],
     ]);
     expect(model.passes[0].channels.map((c) => [c.kind, 'supported' in c ? c.supported : true])).toEqual([
       ['texture', false],
@@ -181,11 +182,11 @@ describe('Shadertoy JSON: loading', () => {
       ['cubemap', false],
       ['webcam', false],
     ]);
-    expect(notes).toHaveLength(5);
+    expect(notes).toHaveLength(4);
     expect(notes[0]).toMatch(/^Image, iChannel0: the site's texture \/media\/a\/0a4056.*is not available here; the channel is black$/);
     expect(notes.join('\n')).not.toMatch(/Sound/); // it plays (sound.js)
-    expect(notes.join('\n')).toMatch(/Cube A: cubemap passes are not rendered here/);
-    const bindings = frameSchedule(model)[0].bindings;
+    expect(notes.join('\n')).not.toMatch(/Cube A/); // it runs (tests/cube-a.test.js)
+    const bindings = frameSchedule(model).at(-1).bindings;
     expect(bindings.map((b) => [b.source, b.samplerType])).toEqual([
       ['black', '2D'],
       ['black', '2D'],

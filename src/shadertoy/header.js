@@ -15,6 +15,8 @@
 // and a macro the user defines (e.g. one renaming mainImage to supersample it) never reaches
 // them. The Image pass's `main` writes alpha 1; a buffer's stores the colour as it is.
 
+import { CUBE_A_NAME, CUBE_A_UNIFORMS } from './cube-a.js';
+
 /** Shadertoy's header for a WebGL2 Image pass, line for line. */
 export const SHADERTOY_HEADER = `#version 300 es
 precision highp float;
@@ -181,6 +183,29 @@ const SHADERTOY_BUFFER_MAIN = `void main(void) {
 }
 `;
 
+/**
+ * Shadertoy's `main` for the Cube A pass (cube-a.js: EffectPass.MakeHeader_Cubemap): the ray of
+ * the texel from the face's corners, mainCubemap called with it, the colour stored as it is. Its
+ * colour starts at vec4(1e20) as the buffer's does here (the copy of effect.js read starts all
+ * three at vec4(0, 0, 0, 1); the site's current Image header starts at 1e20).
+ */
+const SHADERTOY_CUBEMAP_MAIN = `uniform vec4 ${CUBE_A_UNIFORMS.viewport};
+uniform vec3 ${CUBE_A_UNIFORMS.corners}[5];
+void main(void) {
+    vec4 color = vec4(1e20);
+    vec3 ro = ${CUBE_A_UNIFORMS.corners}[4];
+    vec2 uv = (gl_FragCoord.xy - ${CUBE_A_UNIFORMS.viewport}.xy) / ${CUBE_A_UNIFORMS.viewport}.zw;
+    vec3 rd = normalize(mix(mix(${CUBE_A_UNIFORMS.corners}[0], ${CUBE_A_UNIFORMS.corners}[1], uv.x),
+                            mix(${CUBE_A_UNIFORMS.corners}[3], ${CUBE_A_UNIFORMS.corners}[2], uv.x), uv.y) - ro);
+    mainCubemap(color, gl_FragCoord.xy - ${CUBE_A_UNIFORMS.viewport}.xy, ro, rd);
+    shadertoy_out_color = color;
+}
+`;
+
+/** The Cube A pass declares mainCubemap where the others declare mainImage (MakeHeader_Cubemap). */
+const MAIN_IMAGE_DECLARATION = 'void mainImage(out vec4 c, in vec2 f);';
+const MAIN_CUBEMAP_DECLARATION = 'void mainCubemap(out vec4 c, in vec2 f, in vec3 ro, in vec3 rd);';
+
 const SAMPLER_DECLARATIONS = Object.freeze({ '2D': 'sampler2D', Cube: 'samplerCube', '3D': 'sampler3D' });
 
 /**
@@ -207,7 +232,7 @@ const TILED_IMAGE_MAIN = SHADERTOY_IMAGE_MAIN.replace('gl_FragCoord.xy', `gl_Fra
  * line break, and the pass's tab. With no Common, no channel types and kind 'image' it is exactly
  * composeImageShader(code, {hostBlock}).
  * @param {string} code the pass's tab text
- * @param {{common?: string | null, hostBlock?: string, kind?: 'image' | 'buffer', name?: string,
+ * @param {{common?: string | null, hostBlock?: string, kind?: 'image' | 'buffer' | 'cubemap', name?: string,
  *   channelTypes?: Array<'2D' | 'Cube' | '3D'>, tiled?: boolean}} [options] name: the pass's name
  *   in error messages (default "Image", or "Buffer" for a buffer); tiled: an Image pass drawn as
  *   a tile of a larger picture (TILE_OFFSET_UNIFORM)
@@ -223,11 +248,13 @@ export function composePassShader(code, { common = null, hostBlock = '', kind = 
     if (!declaration) throw new Error(`composePassShader: unknown sampler type ${JSON.stringify(type)} for iChannel${i}`);
     header = header.replace(`uniform sampler2D iChannel${i};`, `uniform ${declaration} iChannel${i};`);
   });
-  const main = kind === 'buffer' ? SHADERTOY_BUFFER_MAIN : tiled ? TILED_IMAGE_MAIN : SHADERTOY_IMAGE_MAIN;
+  if (kind === 'cubemap') header = header.replace(MAIN_IMAGE_DECLARATION, MAIN_CUBEMAP_DECLARATION);
+  const main =
+    { buffer: SHADERTOY_BUFFER_MAIN, cubemap: SHADERTOY_CUBEMAP_MAIN }[kind] ?? (tiled ? TILED_IMAGE_MAIN : SHADERTOY_IMAGE_MAIN);
   // the tile's uniform is declared before the `main` that reads it
   const before = header + (tiled ? `uniform vec2 ${TILE_OFFSET_UNIFORM};\n` : '') + main + hostBlock;
   const commonText = common === null ? '' : common + '\n';
-  const passName = name ?? (kind === 'buffer' ? 'Buffer' : 'Image');
+  const passName = name ?? { buffer: 'Buffer', cubemap: CUBE_A_NAME }[kind] ?? 'Image';
   /** @type {PassSection[]} */
   const sections = [];
   if (common !== null) sections.push({ name: 'Common', firstLine: 1, lineCount: countNewlines(common) + 1 });

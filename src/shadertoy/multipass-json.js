@@ -15,18 +15,20 @@
 // file is written back in the style it came in, a new one in the site's current style.
 //
 // Lossless: fromShadertoyJson(toShadertoyJson(model)).model equals model, and fields the model
-// does not hold (descriptions, `published`, `srgb`, `internal`, a media input's id, unknown keys,
-// cubemap passes) ride along in `extra` and are written back. The Sound tab is a pass of kind
-// 'sound' (sound.js renders it).
+// does not hold (descriptions, `published`, `srgb`, `internal`, a media input's id, unknown keys)
+// ride along in `extra` and are written back. The Sound tab is a pass of kind 'sound' (sound.js
+// renders it); the Cube A pass (type "cubemap", output id '4dX3Rr', or 41 in the older style) one
+// of kind 'cubemap', and an input reading it (type "cubemap" with that id, its file the site's
+// '/media/previz/cubemap00.png') a channel of kind 'cubebuffer' (cube-a.js).
 
 import { BUFFER_NAMES, DEFAULT_SAMPLER, MultipassError, bufferPassName, unsupportedNote, validateModel } from './multipass.js';
+import { CUBE_A_FILE, CUBE_A_ID, CUBE_A_LEGACY_ID, CUBE_A_NAME } from './cube-a.js';
 
-const SITE_IDS = { A: '4dXGR8', B: 'XsXGR8', C: '4sXGR8', D: 'XdfGR8', keyboard: '4dXGRr', image: '4dfGRr' };
-const LEGACY_IDS = { A: 257, B: 258, C: 259, D: 260, keyboard: 33, image: 37 };
+const SITE_IDS = { A: '4dXGR8', B: 'XsXGR8', C: '4sXGR8', D: 'XdfGR8', keyboard: '4dXGRr', image: '4dfGRr', cube: CUBE_A_ID };
+const LEGACY_IDS = { A: 257, B: 258, C: 259, D: 260, keyboard: 33, image: 37, cube: CUBE_A_LEGACY_ID };
 const BUFFER_FILE = (/** @type {string} */ b) => `/media/previz/buffer0${BUFFER_NAMES.indexOf(/** @type {any} */ (b))}.png`;
 const KEYBOARD_FILE = '/presets/tex00.jpg';
 const MEDIA_TYPES = ['texture', 'cubemap', 'volume', 'video', 'webcam', 'music', 'musicstream', 'mic'];
-const UNSUPPORTED_PASSES = { cubemap: 'cubemap passes are not rendered here' };
 
 /**
  * How a file writes ids and keys: the site's current style or the older one.
@@ -39,7 +41,7 @@ const SITE_STYLE = Object.freeze({ ids: 'site', typeKey: 'type', srcKey: 'filepa
  * @param {string | object} json the text or the parsed value: `{Shader: {info, renderpass}}`,
  *   `{info, renderpass}`, or an array of one of those (as the API's batch answers)
  * @returns {{model: import('./multipass.js').MultipassShader, info: Record<string, any>, notes: string[]}}
- *   notes: what the page will not do (media it cannot have, cubemap passes)
+ *   notes: what the page will not do (media it cannot have)
  * @throws {MultipassError} for a file that is not a shader, naming the pass at fault
  */
 export function fromShadertoyJson(json) {
@@ -64,15 +66,9 @@ export function fromShadertoyJson(json) {
   /** @type {import('./multipass.js').MultipassShader} */
   const model = { common: null, passes: [] };
   const extra = {};
-  const unsupported = [];
   shader.renderpass.forEach((raw, index) => {
     const where = typeof raw?.name === 'string' && raw.name ? raw.name : `render pass ${index + 1}`;
     if (!raw || typeof raw !== 'object') throw new MultipassError(`${where}: not an object`);
-    if (Object.hasOwn(UNSUPPORTED_PASSES, String(raw.type))) {
-      notes.push(`${where}: ${UNSUPPORTED_PASSES[raw.type]}`);
-      unsupported.push(raw);
-      return;
-    }
     if (typeof raw.code !== 'string') throw new MultipassError(`${where}: has no code`);
     if (raw.type === 'common') {
       if (model.common !== null) throw new MultipassError(`${where}: a second Common tab`);
@@ -81,10 +77,10 @@ export function fromShadertoyJson(json) {
       if (Object.keys(commonExtra).length) extra.commonPass = commonExtra;
       return;
     }
-    if (raw.type !== 'image' && raw.type !== 'buffer' && raw.type !== 'sound')
+    if (!['image', 'buffer', 'sound', 'cubemap'].includes(raw.type))
       throw new MultipassError(`${where}: unknown pass type ${JSON.stringify(raw.type)}`);
     const buffer = raw.type === 'buffer' ? bufferWritten(raw, where) : null;
-    const name = buffer ? bufferPassName(buffer) : raw.type === 'sound' ? 'Sound' : 'Image';
+    const name = buffer ? bufferPassName(buffer) : ({ sound: 'Sound', cubemap: CUBE_A_NAME }[raw.type] ?? 'Image');
     const channels = readInputs(raw.inputs, name, style, notes);
     /** @type {import('./multipass.js').Pass} */
     const pass = /** @type {import('./multipass.js').Pass} */ ({ name, kind: raw.type, buffer, code: raw.code, channels });
@@ -92,7 +88,6 @@ export function fromShadertoyJson(json) {
     if (Object.keys(passExtra).length) pass.extra = passExtra;
     model.passes.push(pass);
   });
-  if (unsupported.length) extra.unsupportedPasses = unsupported;
   if (style.ids !== SITE_STYLE.ids || style.typeKey !== SITE_STYLE.typeKey || style.srcKey !== SITE_STYLE.srcKey) extra.style = style;
   const shaderExtra = leftover(shader, { ver: '0.1', info: shader.info, renderpass: shader.renderpass });
   if (Object.keys(shaderExtra).length) extra.shader = shaderExtra;
@@ -126,6 +121,7 @@ export function toShadertoyJson(model, info = { name: 'untitled', description: '
       ...(model.extra?.commonPass ?? {}),
     });
   }
+  // a model kept before Cube A ran here holds its cubemap pass as the file had it
   for (const raw of model.extra?.unsupportedPasses ?? []) renderpass.push(raw);
   return { Shader: { ver: '0.1', info, renderpass, ...(model.extra?.shader ?? {}) } };
 }
@@ -199,6 +195,8 @@ function readInputs(inputs, passName, style, notes) {
       channel = { kind: 'buffer', buffer, sampler };
     } else if (type === 'keyboard') {
       channel = { kind: 'keyboard', sampler };
+    } else if (type === 'cubemap' && readsCubeA(raw)) {
+      channel = { kind: 'cubebuffer', sampler };
     } else if (MEDIA_TYPES.includes(type)) {
       channel = { kind: type, src: String(raw.filepath ?? raw.src ?? ''), supported: false, sampler };
       notes.push(unsupportedNote(passName, index, channel));
@@ -212,6 +210,12 @@ function readInputs(inputs, passName, style, notes) {
   return channels;
 }
 
+/** Whether a "cubemap" input reads the Cube A pass: its id, else its file (the site's preview of it). */
+function readsCubeA(raw) {
+  if (raw.id !== undefined) return raw.id === CUBE_A_ID || Number(raw.id) === CUBE_A_LEGACY_ID;
+  return String(raw.filepath ?? raw.src ?? '').endsWith(CUBE_A_FILE);
+}
+
 function bufferOfFile(file) {
   const m = String(file ?? '').match(/buffer0([0-3])\.png$/);
   return m ? BUFFER_NAMES[Number(m[1])] : null;
@@ -220,12 +224,14 @@ function bufferOfFile(file) {
 /** One channel as the site writes it (before the channel's extra fields). */
 function writeChannel(channel, index, style) {
   const ids = style.ids === 'legacy' ? LEGACY_IDS : SITE_IDS;
-  const file = channel.kind === 'buffer' ? BUFFER_FILE(channel.buffer) : channel.kind === 'keyboard' ? KEYBOARD_FILE : channel.src;
+  const file =
+    { buffer: () => BUFFER_FILE(channel.buffer), keyboard: () => KEYBOARD_FILE, cubebuffer: () => CUBE_A_FILE }[channel.kind]?.() ??
+    channel.src;
   const out = {
-    id: channel.kind === 'buffer' ? ids[channel.buffer] : channel.kind === 'keyboard' ? ids.keyboard : undefined,
+    id: { buffer: () => ids[channel.buffer], keyboard: () => ids.keyboard, cubebuffer: () => ids.cube }[channel.kind]?.(),
     [style.srcKey]: file,
     ...(style.srcKey === 'filepath' ? { previewfilepath: file } : {}),
-    [style.typeKey]: channel.kind,
+    [style.typeKey]: channel.kind === 'cubebuffer' ? 'cubemap' : channel.kind,
     channel: index,
     sampler: {
       filter: channel.sampler.filter,
@@ -252,7 +258,7 @@ function writePass(pass, style) {
   return {
     inputs,
     // the Sound tab writes no texture: its outputs, if a file has any, ride in its extra
-    outputs: pass.kind === 'sound' ? [] : [{ id: pass.kind === 'image' ? ids.image : ids[pass.buffer], channel: 0 }],
+    outputs: pass.kind === 'sound' ? [] : [{ id: { image: ids.image, cubemap: ids.cube }[pass.kind] ?? ids[pass.buffer], channel: 0 }],
     code: pass.code,
     name: pass.name,
     description: '',

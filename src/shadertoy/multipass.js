@@ -4,7 +4,8 @@
 //
 // How the site runs the passes (its own player, https://www.shadertoy.com/js/effect.js, read in
 // Effect.prototype.Paint, EffectPass.prototype.Paint and Effect.prototype.ResizeBuffer):
-// - every frame the buffer passes paint first, then the Image pass (the Common tab is not a pass:
+// - every frame the buffer passes paint first, then the Cube A pass (cube-a.js), then the Image
+//   pass (the Common tab is not a pass:
 //   its text is prepended to every other pass's code, EffectPass.NewShader; the site also
 //   compiles it alone with only iDate and iSampleRate declared, to report its errors:
 //   composeCommonShader in header.js);
@@ -24,6 +25,8 @@
 //   only for textures (applied when the image is uploaded); a buffer read with the "mipmap"
 //   filter gets its mipmaps regenerated after it paints.
 
+import { CUBE_A_SIZE } from './cube-a.js';
+
 /** The four buffers, in the order they paint. */
 export const BUFFER_NAMES = Object.freeze(/** @type {const} */ (['A', 'B', 'C', 'D']));
 
@@ -32,15 +35,18 @@ export const BUFFER_NAMES = Object.freeze(/** @type {const} */ (['A', 'B', 'C', 
  * @typedef {{filter: 'nearest' | 'linear' | 'mipmap', wrap: 'clamp' | 'repeat', vflip: boolean}} Sampler
  * @typedef {{kind: 'buffer', buffer: BufferName, sampler: Sampler, extra?: Record<string, any>}} BufferChannel
  * @typedef {{kind: 'keyboard', sampler: Sampler, extra?: Record<string, any>}} KeyboardChannel
+ * @typedef {{kind: 'cubebuffer', sampler: Sampler, extra?: Record<string, any>}} CubeBufferChannel the
+ *   Cube A pass's cube map (in the site's JSON an input of type "cubemap" with Cube A's id)
  * @typedef {{kind: 'texture' | 'cubemap' | 'volume' | 'video' | 'webcam' | 'music' | 'musicstream' | 'mic', src: string,
  *   supported: false, sampler: Sampler, extra?: Record<string, any>}} MediaChannel media the page cannot
  *   have: the renderer binds a black texture (of the sampler type the kind needs) and shows a note
- * @typedef {BufferChannel | KeyboardChannel | MediaChannel} Channel
+ * @typedef {BufferChannel | KeyboardChannel | CubeBufferChannel | MediaChannel} Channel
  * @typedef {{name: string, code: string, channels: Array<Channel | null>, extra?: Record<string, any>}
- *   & ({kind: 'buffer', buffer: BufferName} | {kind: 'image' | 'sound', buffer: null})} Pass four channels, null = nothing bound;
- *   a buffer pass writes its buffer, the Image pass none; the Sound tab (kind 'sound', at most
- *   one) is no part of a frame: sound.js renders it
- * @typedef {Pass & {kind: 'image' | 'buffer'}} FramePass a pass drawn every frame (not the Sound tab)
+ *   & ({kind: 'buffer', buffer: BufferName} | {kind: 'image' | 'sound' | 'cubemap', buffer: null})} Pass four channels, null = nothing bound;
+ *   a buffer pass writes its buffer, the Image pass none; the Cube A pass (kind 'cubemap', at
+ *   most one, named "Cube A") its cube map; the Sound tab (kind 'sound', at most one) is no part
+ *   of a frame: sound.js renders it
+ * @typedef {Pass & {kind: 'image' | 'buffer' | 'cubemap'}} FramePass a pass drawn every frame (not the Sound tab)
  * @typedef {{common: string | null, passes: Pass[], extra?: Record<string, any>}} MultipassShader
  */
 
@@ -86,11 +92,13 @@ export function validateModel(model) {
     const where = pass.name || '(unnamed pass)';
     // as a file may have them: what the checks are for
     const { kind, buffer } = /** @type {{kind: string, buffer: string | null}} */ (pass);
-    if (kind !== 'image' && kind !== 'buffer' && kind !== 'sound')
+    if (kind !== 'image' && kind !== 'buffer' && kind !== 'sound' && kind !== 'cubemap')
       throw new MultipassError(`${where}: unknown pass kind ${JSON.stringify(kind)}`);
     if (kind === 'sound' && (seen.has('sound') || buffer !== null))
       throw new MultipassError(`${where}: a shader has one Sound tab, which writes no buffer`);
-    if (kind === 'sound') seen.add('sound');
+    if (kind === 'cubemap' && (seen.has('cubemap') || buffer !== null))
+      throw new MultipassError(`${where}: a shader has one Cube A pass, which writes no buffer A–D`);
+    if (kind === 'sound' || kind === 'cubemap') seen.add(kind);
     if (typeof pass.code !== 'string') throw new MultipassError(`${where}: its code is not text`);
     if (pass.kind === 'buffer') {
       if (!BUFFER_NAMES.includes(pass.buffer)) throw new MultipassError(`${where}: writes no buffer A–D (${JSON.stringify(pass.buffer)})`);
@@ -108,7 +116,7 @@ export function validateModel(model) {
       if (typeof channel.sampler.vflip !== 'boolean') throw new MultipassError(`${at}: vflip must be true or false`);
       if (channel.kind === 'buffer' && !BUFFER_NAMES.includes(channel.buffer))
         throw new MultipassError(`${at}: no buffer ${JSON.stringify(channel.buffer)}`);
-      if (channel.kind !== 'buffer' && channel.kind !== 'keyboard' && !MEDIA_KINDS.includes(channel.kind)) {
+      if (!['buffer', 'keyboard', 'cubebuffer'].includes(channel.kind) && !MEDIA_KINDS.includes(channel.kind)) {
         throw new MultipassError(`${at}: unknown input kind ${JSON.stringify(channel.kind)}`);
       }
     });
@@ -118,6 +126,8 @@ export function validateModel(model) {
       if (channel?.kind === 'buffer' && !seen.has(channel.buffer)) {
         throw new MultipassError(`${pass.name}, iChannel${i}: reads Buffer ${channel.buffer}, which no pass writes`);
       }
+      if (channel?.kind === 'cubebuffer' && !seen.has('cubemap'))
+        throw new MultipassError(`${pass.name}, iChannel${i}: reads Cube A, which no pass writes`);
     });
   }
   return model;
@@ -130,9 +140,16 @@ export function validateModel(model) {
 export const soundPass = (model) => model.passes.find((p) => p.kind === 'sound') ?? null;
 
 /**
- * The passes in the order they paint every frame: the buffers A, B, C, D (those present), then
- * Image. (The site paints the buffer passes in the order of its pass list, Effect.Paint; A–D is
- * the order its editor adds them in and the order this project fixes.)
+ * The Cube A pass, or null when the shader has none.
+ * @param {MultipassShader} model
+ */
+const cubemapPass = (model) => model.passes.find((p) => p.kind === 'cubemap') ?? null;
+
+/**
+ * The passes in the order they paint every frame: the buffers A, B, C, D (those present), the
+ * Cube A pass, then Image. (The site paints the buffer passes in the order of its pass list,
+ * Effect.Paint; A–D is the order its editor adds them in and the order this project fixes. Then
+ * every "cubemap" pass, then "image".)
  * @param {MultipassShader} model
  * @returns {FramePass[]}
  */
@@ -140,7 +157,8 @@ export function renderOrder(model) {
   const buffers = BUFFER_NAMES.map((b) => model.passes.find((p) => p.kind === 'buffer' && p.buffer === b)).filter((p) => p !== undefined);
   const image = model.passes.find((p) => p.kind === 'image');
   if (!image) throw new MultipassError('a shader needs exactly one Image pass, this one has 0');
-  return /** @type {FramePass[]} */ ([...buffers, image]);
+  const cube = cubemapPass(model);
+  return /** @type {FramePass[]} */ ([...buffers, ...(cube ? [cube] : []), image]);
 }
 
 /**
@@ -148,6 +166,7 @@ export function renderOrder(model) {
  * have. For a buffer, `frame` is the texture written this frame before this pass ('current') or
  * the one from last frame ('previous': the pass itself, or a buffer that paints after it).
  * @typedef {ChannelBindingBase & ({source: 'buffer', buffer: BufferName, frame: 'current' | 'previous', sampler: Sampler}
+ *   | {source: 'cubebuffer', buffer?: undefined, frame: 'current' | 'previous', sampler: Sampler}
  *   | {source: 'keyboard' | 'black', buffer?: undefined, frame?: undefined, sampler: Sampler}
  *   | {source: 'none', buffer?: undefined, frame?: undefined, sampler?: undefined})} ChannelBinding
  */
@@ -157,7 +176,8 @@ export function renderOrder(model) {
  * @property {number} channel 0..3
  * @property {'2D' | 'Cube' | '3D'} samplerType the GLSL sampler the header declares
  * @property {[number, number, number] | 'canvas'} resolution iChannelResolution: 'canvas' for a
- *   buffer ((width, height, 1) of the canvas), (256, 3, 1) for the keyboard, 0 for nothing; a
+ *   buffer ((width, height, 1) of the canvas), (256, 3, 1) for the keyboard, (1024, 1024, 1) for
+ *   Cube A (EffectPass.Paint_Image: its mResolution), 0 for nothing; a
  *   black stand-in texture is (1, 1, 1)
  * @property {string} [note] why a channel is black
  */
@@ -165,17 +185,19 @@ export function renderOrder(model) {
 /**
  * The schedule: for each pass in render order, what each of its channels reads. A renderer
  * follows it literally: render `pass` into its buffer's texture not written last (or the canvas
- * for Image), with channel i bound to `bindings[i]`; after a buffer pass, swap its textures.
+ * for Image, the six faces of the cube map for Cube A), with channel i bound to `bindings[i]`;
+ * after a buffer or Cube A pass, swap its textures.
  * @param {MultipassShader} model
- * @returns {Array<{pass: FramePass, target: BufferName | 'screen', bindings: ChannelBinding[]}>}
+ * @returns {Array<{pass: FramePass, target: BufferName | 'cube' | 'screen', bindings: ChannelBinding[]}>}
  */
 export function frameSchedule(model) {
   const order = renderOrder(model);
   // where in the order buffer b is written (-1: no pass writes it, as validateModel rules out)
   const written = (/** @type {BufferName} */ b) => order.findIndex((p) => p.buffer === b);
+  const cubeAt = order.findIndex((p) => p.kind === 'cubemap');
   return order.map((pass, index) => ({
     pass,
-    target: pass.kind === 'buffer' ? pass.buffer : 'screen',
+    target: pass.kind === 'buffer' ? pass.buffer : pass.kind === 'cubemap' ? 'cube' : 'screen',
     bindings: pass.channels.map((channel, i) => {
       /** @type {ChannelBinding} */
       if (channel === null) return { channel: i, source: 'none', samplerType: '2D', resolution: [0, 0, 0] };
@@ -190,6 +212,16 @@ export function frameSchedule(model) {
           samplerType: '2D',
           sampler: { ...channel.sampler, vflip: false },
           resolution: 'canvas',
+        };
+      }
+      if (channel.kind === 'cubebuffer') {
+        return {
+          channel: i,
+          source: 'cubebuffer',
+          frame: cubeAt >= 0 && cubeAt < index ? 'current' : 'previous',
+          samplerType: 'Cube',
+          sampler: { ...channel.sampler, vflip: false },
+          resolution: [CUBE_A_SIZE, CUBE_A_SIZE, 1],
         };
       }
       if (channel.kind === 'keyboard') {
@@ -229,12 +261,13 @@ export function buffersNeedingMipmaps(model) {
 
 /**
  * The GLSL sampler type the site declares for a channel (EffectPass.MakeHeader_*: samplerCube
- * for a cubemap input, sampler3D for a volume, sampler2D for everything else and for nothing).
+ * for a cubemap input, Cube A's included, sampler3D for a volume, sampler2D for everything else
+ * and for nothing).
  * @param {Channel | null} channel
  * @returns {'2D' | 'Cube' | '3D'}
  */
 function samplerTypeOf(channel) {
-  if (channel?.kind === 'cubemap') return 'Cube';
+  if (channel?.kind === 'cubemap' || channel?.kind === 'cubebuffer') return 'Cube';
   if (channel?.kind === 'volume') return '3D';
   return '2D';
 }

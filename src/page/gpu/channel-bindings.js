@@ -36,11 +36,11 @@ export const mediaKey = (passName, channel) => `${passName}:${channel}`;
  * @param {Step} step
  * @param {number} width
  * @param {number} height
- * @param {{buffers: import('./pass-buffers.js').PassBuffers, keyboard: THREE.Texture, channels: Array<THREE.Texture | null>,
- *   black: THREE.Texture, media: Map<string, {texture: THREE.Texture, size: [number, number, number]}>}} sources media: the
- *   site's media each pass's channels name, by mediaKey (media-textures.js)
+ * @param {{buffers: import('./pass-buffers.js').PassBuffers, cube: import('./cube-buffer.js').CubeBuffer, keyboard: THREE.Texture,
+ *   channels: Array<THREE.Texture | null>, black: THREE.Texture, media: Map<string, {texture: THREE.Texture, size: [number, number, number]}>}} sources
+ *   media: the site's media each pass's channels name, by mediaKey (media-textures.js)
  */
-export function bindChannels(step, width, height, { buffers, keyboard, channels, black, media }) {
+export function bindChannels(step, width, height, { buffers, cube, keyboard, channels, black, media }) {
   const uniforms = step.material.uniforms;
   const resolution = uniforms.iChannelResolution.value;
   const times = uniforms.iChannelTime.value;
@@ -50,6 +50,7 @@ export function bindChannels(step, width, height, { buffers, keyboard, channels,
     times[i] = 0;
     let size = binding.resolution === 'canvas' ? [width, height, 1] : binding.resolution;
     if (binding.source === 'buffer') texture = buffers.read(/** @type {string} */ (binding.buffer));
+    else if (binding.source === 'cubebuffer') texture = cube.read();
     else if (binding.source === 'keyboard') texture = keyboard;
     else if (binding.source === 'black' && media.has(mediaKey(step.pass.name, i))) {
       const loaded = /** @type {{texture: THREE.Texture, size: [number, number, number]}} */ (media.get(mediaKey(step.pass.name, i)));
@@ -221,7 +222,7 @@ export class ChannelSamplers {
       unit++;
     }
     return step.bindings
-      .filter((binding) => (binding.source === 'buffer' || binding.source === 'keyboard') && binding.sampler && units.has(binding.channel))
+      .filter((binding) => ['buffer', 'keyboard', 'cubebuffer'].includes(binding.source) && binding.sampler && units.has(binding.channel))
       .map((binding) => ({ unit: units.get(binding.channel), sampler: this._samplerObject(/** @type {any} */ (binding.sampler)) }));
   }
 

@@ -4,6 +4,7 @@
 // A channel's texture is its own: two passes that read one file with two samplers get two.
 
 import * as THREE from 'three';
+import { movingTexture } from './channel-bindings.js';
 
 /**
  * What the page sends for one channel: decoded, rows already in upload order (the page flips
@@ -22,13 +23,48 @@ const FILTERS = {
 
 const VOLUME_FORMATS = /** @type {const} */ ([THREE.RedFormat, THREE.RGFormat, THREE.RGBAFormat, THREE.RGBAFormat]);
 
+/** @typedef {{texture: THREE.Texture, size: [number, number, number]}} ChannelTexture size: its iChannelResolution */
+
+/** The site's media of the shader's channels, by channel-bindings.js mediaKey, as bindChannels reads them. */
+export class PassMedia {
+  constructor() {
+    /** The textures (one map for good: bindChannels's sources hold it). @type {Map<string, ChannelTexture>} */
+    this.textures = new Map();
+    /** The samplers of the channels that hold a video or music. @type {Map<string, import('../../shadertoy/multipass.js').Sampler>} */
+    this._movingSamplers = new Map();
+  }
+
+  /**
+   * The shader's media, in place of what was there.
+   * @param {import('./protocol.js').Commands['passMedia']} media
+   */
+  set({ entries, moving }) {
+    for (const { texture } of this.textures.values()) texture.dispose();
+    this.textures.clear();
+    for (const { key, payload, sampler } of entries) this.textures.set(key, mediaTexture(payload, sampler));
+    this._movingSamplers = new Map(moving.map(({ key, sampler }) => [key, sampler]));
+  }
+
+  /**
+   * The frames of the videos and music the shader's channels name, for the frame about to be
+   * drawn (inputs/media-library.js), each into its channel's texture.
+   * @param {Array<{key: string, frame: import('./protocol.js').MediaFrame}>} frames
+   */
+  setFrames(frames) {
+    for (const { key, frame } of frames) {
+      const texture = movingTexture(this.textures.get(key)?.texture ?? null, frame, this._movingSamplers.get(key));
+      this.textures.set(key, { texture, size: [frame.width, frame.height, 1] });
+    }
+  }
+}
+
 /**
  * A three.js texture of a channel's media, with the channel's sampler.
  * @param {MediaPayload} payload
  * @param {import('../../shadertoy/multipass.js').Sampler} sampler
- * @returns {{texture: THREE.Texture, size: [number, number, number]}} size: its iChannelResolution
+ * @returns {ChannelTexture}
  */
-export function mediaTexture(payload, sampler) {
+function mediaTexture(payload, sampler) {
   /** @type {THREE.Texture} */
   let texture;
   /** @type {[number, number, number]} */

@@ -42,6 +42,23 @@ function floatTarget(width, height, sampler) {
   });
 }
 
+/**
+ * The buffers a frame's passes write, with the sampler their texture needs: the "mipmap" filter
+ * where some reader asks for it (its mipmaps are made after each draw), else nearest.
+ * @param {import('./pass-compiler.js').Step[]} steps
+ * @returns {Map<string, Sampler>}
+ */
+export function buffersWanted(steps) {
+  const wanted = new Map();
+  for (const step of steps)
+    if (step.target !== 'screen' && step.target !== 'cube') wanted.set(step.target, { filter: 'nearest', wrap: 'clamp', vflip: false });
+  for (const step of steps)
+    for (const binding of step.bindings)
+      if (binding.source === 'buffer' && binding.sampler?.filter === 'mipmap')
+        wanted.set(binding.buffer, { filter: 'mipmap', wrap: 'clamp', vflip: false });
+  return wanted;
+}
+
 export class PassBuffers {
   /**
    * @param {THREE.WebGLRenderer} three

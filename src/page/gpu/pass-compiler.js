@@ -14,6 +14,7 @@ import { formatPassMessages, parsePassShaderLog } from '../../shadertoy/pass-err
 import { channelTypes, frameSchedule } from '../../shadertoy/multipass.js';
 import { ShaderCompileError } from './errors.js';
 import { verbatimStandIn } from './verbatim-source.js';
+import { CubeBuffer } from './cube-buffer.js';
 
 /** Compiled materials kept for switching back without a compile: a uniform form, a constant form, and one spare, for each of up to five passes. */
 const MATERIALS_KEPT = 15;
@@ -99,7 +100,9 @@ export class PassCompiler {
         sections: multipass ? composed.sections : null,
       };
       try {
-        steps.push({ ...step, material: await this._compileMaterial(composed, check, passUniforms) });
+        // the Cube A pass has uniforms of its own (cube-buffer.js), its iResolution among them
+        const uniforms = pass.kind === 'cubemap' ? () => ({ ...passUniforms(), ...CubeBuffer.ownUniforms() }) : passUniforms;
+        steps.push({ ...step, material: await this._compileMaterial(composed, check, uniforms) });
       } catch (error) {
         if (!error.messages) throw error;
         // an error in Common is the same error in every pass that includes it: said once

@@ -14,6 +14,7 @@ import { BandPlanner } from './band-planner.js';
 import { flipRows } from '../../shared/pixels.js';
 import { serve } from './protocol.js';
 import { PaintGate } from './paint-gate.js';
+import { CubeBuffer } from './cube-buffer.js';
 import { TILE_OFFSET_UNIFORM } from '../../shadertoy/header.js';
 
 /** @typedef {import('./protocol.js').FrameInputs} FrameInputs */
@@ -140,7 +141,7 @@ function pump() {
   const last = job.step === steps.length - 1;
   if ((job.inputs.media || job.inputs.passMedia) && !job.mediaSet) {
     if (job.inputs.media) renderer().setMedia(job.inputs.media);
-    if (job.inputs.passMedia) renderer().setPassMoving(job.inputs.passMedia);
+    if (job.inputs.passMedia) renderer().passMedia.setFrames(job.inputs.passMedia);
     job.mediaSet = true;
   }
   if (first && job.kind === 'frame') {
@@ -174,8 +175,9 @@ function pump() {
     startBand(0, { warmUp: true, compiling: true });
     return;
   }
-  const rows = planner.rows(job.width, job.height - job.y);
-  renderer().drawRows(job.y, job.y + rows, target);
+  // the Cube A pass is its six faces stacked, and a band stops at a face's top (renderer.js)
+  const extent = CubeBuffer.extent(drawn, job.width, job.height);
+  const rows = renderer().drawRows(job.y, job.y + planner.rows(extent.width, extent.height - job.y), target);
   if (last && job.y + rows >= job.height && job.kind === 'frame') renderer().gpuTimer.end();
   startBand(rows);
 }
@@ -255,19 +257,22 @@ function bandDone(rows, ms) {
     probe.resolve(probed);
     return;
   }
-  planner.measured(job.width, rows, ms);
+  const extent = CubeBuffer.extent(renderer().steps[job.step], job.width, job.height);
+  planner.measured(extent.width, rows, ms);
   if (job.redo) job.redo = false;
   else job.y += rows;
-  if (job.y >= job.height && job.step < renderer().steps.length - 1) {
+  if (job.y >= extent.height && job.step < renderer().steps.length - 1) {
     renderer().endStep(renderer().steps[job.step]); // a buffer is done: the next pass reads it
     job.step++;
     job.y = 0;
   }
-  const done = job.y >= job.height;
+  // the pass now under way: the next one's rows start at 0 (the Cube A pass has more than the frame)
+  const { height } = CubeBuffer.extent(renderer().steps[job.step], job.width, job.height);
+  const done = job.y >= height;
   const now = performance.now();
   const show = !done && job.kind === 'frame' && now - lastPresent > PRESENT_EVERY_MS;
   if (show) lastPresent = now;
-  tell('band', { kind: job.kind, y: job.y, height: job.height, bitmap: show ? renderer().present() : null });
+  tell('band', { kind: job.kind, y: job.y, height, bitmap: show ? renderer().present() : null });
   if (!done) return;
   const finished = job;
   job = null;
@@ -426,6 +431,7 @@ const tell = serve(
 
     clearBuffers() {
       renderer().buffers.clear();
+      renderer().cube.clear();
       changed();
     },
 
@@ -445,7 +451,7 @@ const tell = serve(
     },
 
     passMedia(media) {
-      renderer().setPassMedia(media);
+      renderer().passMedia.set(media);
       changed();
     },
 

@@ -15,34 +15,19 @@
 import * as THREE from 'three';
 import { GpuTimer } from './gpu-timer.js';
 import { blackTexture, shadertoyUniforms } from './uniforms.js';
-import { PassBuffers } from './pass-buffers.js';
+import { PassBuffers, buffersWanted } from './pass-buffers.js';
+import { CubeBuffer } from './cube-buffer.js';
 import { WebGL2UnavailableError } from './errors.js';
-import { PassCompiler, VERTEX_SHADER } from './pass-compiler.js';
-import { mediaTexture } from './media-textures.js';
-import { ChannelSamplers, bindChannels, imageTexture, movingTexture, ownChannelUniforms, setMedia } from './channel-bindings.js';
+import { PassCompiler } from './pass-compiler.js';
+import { copyScene, fullscreenTriangle } from './frame-copy.js';
+import { PassMedia } from './media-textures.js';
+import { ChannelSamplers, bindChannels, imageTexture, ownChannelUniforms, setMedia } from './channel-bindings.js';
 import { PixelProbe } from './probe.js';
 import { SoundPass } from '../sound/sound-pass.js';
 import { sendVerbatimSources } from './verbatim-source.js';
 import { TILE_OFFSET_UNIFORM } from '../../shadertoy/header.js';
 
 /** @typedef {import('./pass-compiler.js').Step} Step */
-
-/** Copies the frame target to the canvas pixel for pixel (texelFetch: no filtering, no flip). */
-const COPY_SHADER = `
-precision highp float;
-uniform highp sampler2D frame;
-out vec4 color;
-void main() {
-    color = texelFetch(frame, ivec2(gl_FragCoord.xy), 0);
-}
-`;
-
-/** One triangle whose middle covers clip space [-1, 1]². */
-function fullscreenTriangle() {
-  const geometry = new THREE.BufferGeometry();
-  geometry.setAttribute('position', new THREE.Float32BufferAttribute([-1, -1, 0, 3, -1, 0, -1, 3, 0], 3));
-  return geometry;
-}
 
 export class ShaderRenderer {
   /** @param {OffscreenCanvas} canvas the worker's own canvas */
@@ -94,38 +79,35 @@ export class ShaderRenderer {
 
     /** Where frames are drawn and kept (RGBA8, as the page's canvas): the page shows copies of it. */
     this.frameTarget = this.makeTarget(1, 1);
-    this.copyScene = new THREE.Scene();
-    const copy = new THREE.Mesh(
-      geometry,
-      new THREE.RawShaderMaterial({
-        glslVersion: THREE.GLSL3,
-        vertexShader: VERTEX_SHADER,
-        fragmentShader: COPY_SHADER,
-        uniforms: { frame: { value: this.frameTarget.texture } },
-        depthTest: false,
-        depthWrite: false,
-      }),
-    );
-    copy.frustumCulled = false;
-    this.copyScene.add(copy);
-    this._copySource = /** @type {THREE.RawShaderMaterial} */ (copy.material).uniforms.frame;
+    const copy = copyScene(geometry, this.frameTarget.texture);
+    this.copyScene = copy.scene;
+    this._copySource = copy.source;
 
     this._black = this.uniforms.iChannel0.value;
     /** The textures loaded into iChannel0..3. @type {Array<THREE.Texture | null>} */
     this._channels = [null, null, null, null];
-    /** The site's media the passes' channels name, by mediaKey (media-textures.js). @type {Map<string, {texture: THREE.Texture, size: [number, number, number]}>} */
-    this._media = new Map();
-    /** The samplers of the channels that hold a video or music, by mediaKey. @type {Map<string, import('../../shadertoy/multipass.js').Sampler>} */
-    this._movingSamplers = new Map();
+    /** The site's media the passes' channels name (media-textures.js). */
+    this.passMedia = new PassMedia();
 
     /** The passes of a frame, in order, with their compiled materials (the last is Image). @type {Step[]} */
     this.steps = [];
     /** Buffer A–D of a multipass shader. */
     this.buffers = new PassBuffers(this.three, (source, target, width, height) => this._copy(source, target, width, height));
+    /** The Cube A pass's cube maps. */
+    this.cube = new CubeBuffer(this.three);
     /** Shadertoy's keyboard texture: 256 × 3 bytes, nearest (keyboard.js). */
     this._keyboardBytes = new Uint8Array(256 * 3);
     this.keyboard = new THREE.DataTexture(this._keyboardBytes, 256, 3, THREE.RedFormat, THREE.UnsignedByteType);
     this.keyboard.needsUpdate = true;
+    /** What passes read in their channels (channel-bindings.js: bindChannels). */
+    this._sources = {
+      buffers: this.buffers,
+      cube: this.cube,
+      keyboard: this.keyboard,
+      channels: this._channels,
+      black: this._black,
+      media: this.passMedia.textures,
+    };
     /** The sampler objects of the pass being drawn (channel-bindings.js). */
     this.samplers = new ChannelSamplers(gl, this.three);
 
@@ -184,14 +166,8 @@ export class ShaderRenderer {
     this._onScreen = { project, hostBlock, fileName };
     this.tiledStep = null;
     this.mesh.material = steps[steps.length - 1].material;
-    /** @type {Map<string, import('../../shadertoy/multipass.js').Sampler>} */
-    const wanted = new Map();
-    for (const step of steps) if (step.target !== 'screen') wanted.set(step.target, { filter: 'nearest', wrap: 'clamp', vflip: false });
-    for (const step of steps)
-      for (const binding of step.bindings)
-        if (binding.source === 'buffer' && binding.sampler?.filter === 'mipmap')
-          wanted.set(binding.buffer, { filter: 'mipmap', wrap: 'clamp', vflip: false });
-    this.buffers.use(wanted);
+    this.buffers.use(buffersWanted(steps));
+    this.cube.use(steps);
   }
 
   /**
@@ -228,22 +204,18 @@ export class ShaderRenderer {
   beginStep(step, width, height) {
     const uniforms = step.material.uniforms;
     for (const name of Object.keys(this.uniforms)) if (!(name in uniforms)) uniforms[name] = this.uniforms[name]; // controls added later
-    bindChannels(step, width, height, {
-      buffers: this.buffers,
-      keyboard: this.keyboard,
-      channels: this._channels,
-      black: this._black,
-      media: this._media,
-    });
+    bindChannels(step, width, height, this._sources);
     this.mesh.material = step.material;
     step.material.uniformsNeedUpdate = true; // the same material drawn again may read other textures
     this.samplers.use(step);
+    if (step.target === 'cube') return this.cube.writeTarget();
     return step.target === 'screen' ? null : this.buffers.writeTarget(step.target);
   }
 
   /** A pass has drawn all of its rows. @param {Step} step */
   endStep(step) {
-    if (step.target !== 'screen') this.buffers.swap(step.target);
+    if (step.target === 'cube') this.cube.swap();
+    else if (step.target !== 'screen') this.buffers.swap(step.target);
   }
 
   /** The keyboard texture's bytes for the next frame (Shadertoy's 256 × 3: keyboard.js). @param {Uint8Array} data */
@@ -287,28 +259,6 @@ export class ShaderRenderer {
     this.uniforms[`iChannel${index}`].value = texture ?? this._black;
     const resolution = this.uniforms.iChannelResolution.value;
     resolution.splice(index * 3, 3, image?.width ?? 0, image?.height ?? 0, image ? 1 : 0);
-  }
-
-  /**
-   * The site's media of the shader's channels, in place of what was there (media-textures.js).
-   * @param {import('./protocol.js').Commands['passMedia']} media
-   */
-  setPassMedia({ entries, moving }) {
-    for (const { texture } of this._media.values()) texture.dispose();
-    this._media = new Map(entries.map(({ key, payload, sampler }) => [key, mediaTexture(payload, sampler)]));
-    this._movingSamplers = new Map(moving.map(({ key, sampler }) => [key, sampler]));
-  }
-
-  /**
-   * The frames of the videos and music the shader's channels name, for the frame about to be
-   * drawn (inputs/media-library.js), each into its channel's texture.
-   * @param {Array<{key: string, frame: import('./protocol.js').MediaFrame}>} passMedia
-   */
-  setPassMoving(passMedia) {
-    for (const { key, frame } of passMedia) {
-      const texture = movingTexture(this._media.get(key)?.texture ?? null, frame, this._movingSamplers.get(key));
-      this._media.set(key, { texture, size: [frame.width, frame.height, 1] });
-    }
   }
 
   /**
@@ -369,15 +319,22 @@ export class ShaderRenderer {
 
   /**
    * Draws rows [y0, y1) of the current shader into `target` (default: the frame target): one
-   * draw, scissored to those rows. The caller writes the uniforms first.
+   * draw, scissored to those rows; into a cube map, the rows of the six faces stacked, up to the
+   * top of the face of y0. The caller writes the uniforms first.
    * @param {number} y0 first row, from the bottom
    * @param {number} y1 one past the last row
    * @param {THREE.WebGLRenderTarget} [target]
+   * @returns {number} the rows drawn (0 before any shader compiled)
    */
   drawRows(y0, y1, target = this.frameTarget) {
-    if (!this.hasProgram) return false;
-    this.drawRegion(target, 0, y0, target.width, y1 - y0);
-    return true;
+    if (!this.hasProgram) return 0;
+    if (!(target instanceof THREE.WebGLCubeRenderTarget)) {
+      this.drawRegion(target, 0, y0, target.width, y1 - y0);
+      return y1 - y0;
+    }
+    const { face, y, rows } = CubeBuffer.aim(/** @type {THREE.RawShaderMaterial} */ (this.mesh.material), y0, y1);
+    this.drawRegion(target, 0, y, target.width, rows, face);
+    return rows;
   }
 
   /**
@@ -388,11 +345,12 @@ export class ShaderRenderer {
    * @param {number} y
    * @param {number} width
    * @param {number} height
+   * @param {number} [face] the face of a cube map drawn into
    */
-  drawRegion(target, x, y, width, height) {
+  drawRegion(target, x, y, width, height, face = 0) {
     target.scissor.set(x, y, width, height);
     target.scissorTest = x > 0 || y > 0 || width < target.width || height < target.height;
-    this.three.setRenderTarget(target);
+    this.three.setRenderTarget(target, face);
     this.samplers.bind();
     try {
       this.three.render(this.scene, this.camera);
@@ -405,7 +363,9 @@ export class ShaderRenderer {
   /** Draws the whole frame at once, each pass in one draw (the benchmark's way). */
   render() {
     for (const step of this.steps) {
-      this.drawRows(0, this.height, this.beginStep(step, this.width, this.height) ?? this.frameTarget);
+      const target = this.beginStep(step, this.width, this.height) ?? this.frameTarget;
+      const { height } = CubeBuffer.extent(step, this.width, this.height);
+      for (let y = 0; y < height;) y += this.drawRows(y, height, target);
       this.endStep(step);
     }
     return this.hasProgram;

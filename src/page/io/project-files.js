@@ -1,4 +1,4 @@
-// A shader as the page's files hold it: its tabs (Common, Buffer A–D, Image, Sound) as the editor shows
+// A shader as the page's files hold it: its tabs (Common, Buffer A–D, Cube A, Image, Sound) as the editor shows
 // them, a text that may be a plain Image-tab shader or Shadertoy's JSON export, the text kept in
 // the browser's storage, and the names of the files the page saves. Pure: no DOM here.
 
@@ -18,7 +18,8 @@ function isSinglePass(model) {
 }
 
 /**
- * The model's tabs in the editor's order: Common (if any), the buffers A–D it has, Image, Sound (if any).
+ * The model's tabs in the editor's order: Common (if any), the buffers A–D it has, Cube A (if
+ * any), Image, Sound (if any).
  * @param {MultipassShader} model
  * @returns {Tab[]}
  */
@@ -30,6 +31,8 @@ export function projectTabs(model) {
     const pass = model.passes.find((p) => p.kind === 'buffer' && p.buffer === b);
     if (pass) tabs.push({ name: bufferPassName(b), code: pass.code });
   }
+  const cube = model.passes.find((p) => p.kind === 'cubemap');
+  if (cube) tabs.push({ name: cube.name, code: cube.code });
   const image = model.passes.find((p) => p.kind === 'image');
   if (image) tabs.push({ name: 'Image', code: image.code });
   const sound = model.passes.find((p) => p.kind === 'sound');
@@ -102,8 +105,8 @@ export function exportJson(model, info, name, indent = 2) {
 }
 
 /**
- * What the page cannot give a shader, in the words of the JSON loader: media its channels name,
- * its sound and cubemap passes (kept in the model, so the notes follow the shader through edits).
+ * What the page cannot give a shader, in the words of the JSON loader: media its channels name
+ * (kept in the model, so the notes follow the shader through edits).
  * @param {MultipassShader} model
  * @returns {string[]}
  */
@@ -145,7 +148,9 @@ export function serializeProject(model) {
 export function deserializeProject(text) {
   if (looksLikeJson(text)) {
     try {
-      return validateModel(JSON.parse(text));
+      const model = validateModel(JSON.parse(text));
+      // kept before Cube A ran here, its cubemap pass rode in `extra` as the file had it: read again
+      return model.extra?.unsupportedPasses ? fromShadertoyJson(toShadertoyJson(model)).model : model;
     } catch {
       // not a model: taken as it is
     }

@@ -73,7 +73,7 @@ function showNote(stage, id, title, lines, kind = 'note') {
 }
 
 /**
- * The note on a loaded shader: what it cannot have (media its JSON names, its cubemap passes), or
+ * The note on a loaded shader: what it cannot have (media its JSON names), or
  * why a file could not be read as a shader (`kind` 'error').
  * @param {HTMLElement} stage
  * @param {string} title
