@@ -21,6 +21,7 @@ import { promisify } from 'node:util';
 import { PNG } from 'pngjs';
 import { describe, expect, test } from 'vitest';
 import { REPO_ROOT } from './harness/config.js';
+import { decodeWav } from '../src/shared/wav.js';
 import { cubeFaceOrder, mediaFiles, mediaPath, parseVolume, writeVolume } from '../src/shadertoy/media.js';
 import { pixel, readPixels, sharePageAcrossTests, withPage, withServedDir } from './page-helpers.js';
 import { MUSIC_READER, checkMusic, toneSamples, wav } from './music-fixture.js';
@@ -376,6 +377,38 @@ describe('the site’s media from a folder, against what the test computes', () 
       expect(cached.code, cached.stderr).toBe(0);
       expect(cached.stderr).not.toMatch(/downloaded|warning/);
       checkRow(readOut('e.png'), cubeRow, 'render --fetch-media from the cache');
+
+      // a Sound tab reads the site's media too: a volume's texel and a texture's, as constant tones
+      const soundJson = JSON.parse(shaderJson([], 'void mainImage(out vec4 c, in vec2 p) { c = vec4(0.0); }\n'));
+      soundJson.Shader.renderpass.push({
+        inputs: [input(0, 'volume', '/media/a/bytes.bin'), input(1, 'texture', '/media/a/tex.png')],
+        outputs: [],
+        code: 'vec2 mainSound(int s, float t) { return 0.5 * vec2(texture(iChannel0, vec3(0.25)).r, texture(iChannel1, vec2(0.25, 0.75)).r); }\n',
+        name: 'Sound',
+        description: '',
+        type: 'sound',
+      });
+      fs.writeFileSync(path.join(folder, 'sound.json'), JSON.stringify(soundJson));
+      const sounded = await shaderproof(
+        'render',
+        'sound.json',
+        '--media',
+        path.join(site, 'media'),
+        '--duration',
+        '0.05',
+        '-o',
+        'sound.wav',
+      );
+      expect(sounded.code, sounded.stderr).toBe(0);
+      expect(sounded.stderr).not.toMatch(/warning/);
+      const { pcm } = decodeWav(fs.readFileSync(path.join(folder, 'sound.wav')));
+      // the site's 16-bit packing of y (src/shadertoy/sound.js): floor((0.5 + 0.5 y) 65536) - 32768
+      const word = (y) => Math.floor((0.5 + 0.5 * y) * 65536) - 32768;
+      const [left, right] = [word((0.5 * byteTexel(0, 0, 0)[0]) / 255), word((0.5 * TEXELS[0][0][0]) / 255)];
+      for (let i = 0; i < pcm.length; i += 2) {
+        expect(Math.abs(pcm[i] - left), `sample ${i / 2}, left: the volume's texel`).toBeLessThanOrEqual(1);
+        expect(Math.abs(pcm[i + 1] - right), `sample ${i / 2}, right: the texture's texel`).toBeLessThanOrEqual(1);
+      }
 
       // test: --media holds for every case; without it the case fails and no reference is written
       fs.mkdirSync(path.join(folder, 'cases'));

@@ -206,7 +206,7 @@ void main(void) {
 const MAIN_IMAGE_DECLARATION = 'void mainImage(out vec4 c, in vec2 f);';
 const MAIN_CUBEMAP_DECLARATION = 'void mainCubemap(out vec4 c, in vec2 f, in vec3 ro, in vec3 rd);';
 
-const SAMPLER_DECLARATIONS = Object.freeze({ '2D': 'sampler2D', Cube: 'samplerCube', '3D': 'sampler3D' });
+export const SAMPLER_DECLARATIONS = Object.freeze({ '2D': 'sampler2D', Cube: 'samplerCube', '3D': 'sampler3D' });
 
 /**
  * A tiled still (the command line's --tile: a picture larger than one draw may be) draws each

@@ -27,7 +27,7 @@
 //   iChannelResolution and iChannel0..3, and nothing else (no iTime, iResolution, iMouse,
 //   iFrame); Common is included before the tab, as in every pass.
 
-import { countNewlines } from './header.js';
+import { SAMPLER_DECLARATIONS, countNewlines } from './header.js';
 
 /** Samples a second (the site's mSampleRate and iSampleRate). */
 export const SAMPLE_RATE = 44_100;
@@ -79,7 +79,7 @@ void main() {
 export function composeSoundShader(code, { common = null, channelTypes } = {}) {
   let header = SOUND_HEADER;
   (channelTypes ?? []).forEach((type, i) => {
-    if (type === 'Cube') header = header.replace(`uniform sampler2D iChannel${i};`, `uniform samplerCube iChannel${i};`);
+    header = header.replace(`uniform sampler2D iChannel${i};`, `uniform ${SAMPLER_DECLARATIONS[type]} iChannel${i};`);
   });
   const commonText = common === null ? '' : common + '\n';
   const sections = [];

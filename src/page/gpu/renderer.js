@@ -83,7 +83,8 @@ export class ShaderRenderer {
     this.copyScene = copy.scene;
     this._copySource = copy.source;
 
-    this._black = this.uniforms.iChannel0.value;
+    /** The 1×1 black texture an empty 2D channel reads. @type {THREE.Texture} */
+    this.black = this.uniforms.iChannel0.value;
     /** The textures loaded into iChannel0..3. @type {Array<THREE.Texture | null>} */
     this._channels = [null, null, null, null];
     /** The site's media the passes' channels name (media-textures.js). */
@@ -105,7 +106,7 @@ export class ShaderRenderer {
       cube: this.cube,
       keyboard: this.keyboard,
       channels: this._channels,
-      black: this._black,
+      black: this.black,
       media: this.passMedia.textures,
     };
     /** The sampler objects of the pass being drawn (channel-bindings.js). */
@@ -191,7 +192,7 @@ export class ShaderRenderer {
    * all), but its own channels and their resolutions.
    */
   passUniforms() {
-    return { ...this.uniforms, ...ownChannelUniforms(this._black) };
+    return { ...this.uniforms, ...ownChannelUniforms(this.black) };
   }
 
   /**
@@ -256,7 +257,7 @@ export class ShaderRenderer {
     this._channels[index]?.dispose();
     const texture = image ? imageTexture(image) : null;
     this._channels[index] = texture;
-    this.uniforms[`iChannel${index}`].value = texture ?? this._black;
+    this.uniforms[`iChannel${index}`].value = texture ?? this.black;
     const resolution = this.uniforms.iChannelResolution.value;
     resolution.splice(index * 3, 3, image?.width ?? 0, image?.height ?? 0, image ? 1 : 0);
   }

@@ -11,6 +11,7 @@ import * as THREE from 'three';
 import { ShaderCompileError } from '../gpu/errors.js';
 import { formatPassMessages } from '../../shadertoy/pass-errors.js';
 import { channelTypes, soundPass } from '../../shadertoy/multipass.js';
+import { mediaKey } from '../gpu/channel-bindings.js';
 import {
   BLOCK_SAMPLES,
   BLOCK_SIDE,
@@ -55,7 +56,9 @@ export class SoundPass {
     const composed = composeSoundShader(pass.code, { common: project.common, channelTypes: channelTypes(pass) });
     const check = { userText: (project.common === null ? '' : project.common + '\n') + pass.code, sections: composed.sections };
     try {
-      return await this.renderer.compiler.compileOne(composed, check, () => this.uniforms());
+      const material = await this.renderer.compiler.compileOne(composed, check, () => this.uniforms());
+      material.userData.channelTypes = channelTypes(pass); // what each channel is declared: bindMedia
+      return material;
     } catch (error) {
       if (!error.messages) throw error;
       // said as the other tabs' errors are: "Sound:3: ERROR: ..." with the line under it
@@ -72,7 +75,7 @@ export class SoundPass {
 
   /** The sound header's uniforms: the offsets, iDate, iSampleRate, black channels. */
   uniforms() {
-    const black = this.renderer.uniforms.iChannel0.value;
+    const black = this.renderer.black;
     return {
       [TIME_OFFSET_UNIFORM]: { value: 0 },
       [SAMPLE_OFFSET_UNIFORM]: { value: 0 },
@@ -112,6 +115,22 @@ export class SoundPass {
     return words;
   }
 
+  /**
+   * The site's media the Sound tab's channels name (media-textures.js PassMedia, by the pass's
+   * name), else black for a 2D channel and nothing for a cube or 3D one (three.js binds an empty
+   * texture of the declared type: a 2D texture there would fail the draw).
+   * @param {THREE.RawShaderMaterial} material
+   */
+  _bindMedia(material) {
+    const types = material.userData.channelTypes ?? ['2D', '2D', '2D', '2D'];
+    const resolution = material.uniforms.iChannelResolution.value;
+    for (let i = 0; i < 4; i++) {
+      const media = this.renderer.passMedia.textures.get(mediaKey('Sound', i));
+      material.uniforms[`iChannel${i}`].value = media?.texture ?? (types[i] === '2D' ? this.renderer.black : null);
+      resolution.splice(i * 3, 3, ...(media?.size ?? [0, 0, 0]));
+    }
+  }
+
   /** Block `index`, drawn and read back (or kept from before). */
   _block(index) {
     const kept = this.blocks.get(index);
@@ -129,6 +148,7 @@ export class SoundPass {
     material.uniforms[SAMPLE_OFFSET_UNIFORM].value = offset;
     material.uniforms[TIME_OFFSET_UNIFORM].value = offset / SAMPLE_RATE;
     material.uniforms.iDate.value.fromArray(this.date);
+    this._bindMedia(material);
     this.mesh.material = material;
     const three = this.renderer.three;
     three.setRenderTarget(this.target);
