@@ -190,7 +190,8 @@ describe('never a silent half-render (issue 37, item 4)', () => {
       ],
     },
   });
-  const VIDEO_LINE = /Image, iChannel1: a video input is not available here; the channel is black/;
+  const VIDEO_LINE =
+    /Image, iChannel1: the site's video \/media\/a\/video\.webm needs the site's media: give a media folder .*; the channel is black/;
 
   test('render and record say each missing input and pass as a warning; --strict fails and writes nothing', async () => {
     write('half.json', HALF);
@@ -200,7 +201,7 @@ describe('never a silent half-render (issue 37, item 4)', () => {
     expect(warnings.length, out.stderr).toBe(2);
     expect(warnings.every((w) => w.startsWith('warning: half.json: half.json runs without some of what it asks for: '))).toBe(true);
     expect(out.stderr).toMatch(VIDEO_LINE);
-    expect(out.stderr).toMatch(/Sound, iChannel0: the site's texture \/media\/a\/noise\.png is not available here/);
+    expect(out.stderr).toMatch(/Sound, iChannel0: the site's texture \/media\/a\/noise\.png needs the site's media/);
 
     fs.rmSync(path.join(folder, 'strict.png'), { force: true });
     const strict = await shaderproof('render', 'half.json', '-o', 'strict.png', '--size', '8x8', '--strict');
@@ -217,7 +218,7 @@ describe('never a silent half-render (issue 37, item 4)', () => {
     write('half/half.json', HALF);
     const refused = await shaderproof('test', 'half', '--update', '--out', 'half-report');
     expect(refused.code).toBe(1);
-    expect(refused.stdout).toMatch(/^FAIL {2}half\.json .*went without: Image, iChannel1: a video input/m);
+    expect(refused.stdout).toMatch(/^FAIL {2}half\.json .*went without: Image, iChannel1: the site's video/m);
     expect(refused.stdout).toMatch(/no reference written from a render that went without/);
     expect(fs.existsSync(path.join(folder, 'half/__references__/half.json.png'))).toBe(false);
 
