@@ -354,7 +354,7 @@ describe('the site’s media from a folder, against what the test computes', () 
       const without = await shaderproof('render', 'cube.json', '--size', size, '--media', 'empty', '-o', 'b.png');
       expect(without.code).toBe(0);
       expect(without.stderr).toMatch(
-        /warning: .*Image, iChannel0: the site's cubemap \/media\/a\/cube\.png: could not fetch a\/cube\.png from the media folder/,
+        /warning: .*Image, iChannel0: the site's cubemap \/media\/a\/cube\.png: a\/cube\.png is not in the media folder; the channel is black/,
       );
       expect(without.stderr).toMatch(/Image, iChannel1: /);
       const strict = await shaderproof('render', 'cube.json', '--size', size, '--strict', '-o', 'c.png');

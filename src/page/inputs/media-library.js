@@ -158,8 +158,12 @@ export class MediaLibrary {
     const base = this.base;
     const fetched = await Promise.allSettled(files.map((file) => this.fetchFile(new URL(file, base).href)));
     const failed = fetched.findIndex((result) => result.status === 'rejected');
-    if (failed >= 0)
-      return `${what}: could not fetch ${files[failed]} from the media folder (${/** @type {PromiseRejectedResult} */ (fetched[failed]).reason.message})`;
+    if (failed >= 0) {
+      const { message } = /** @type {PromiseRejectedResult} */ (fetched[failed]).reason;
+      return /HTTP 404/.test(message)
+        ? `${what}: ${files[failed]} is not in the media folder`
+        : `${what}: could not fetch ${files[failed]} from the media folder (${message})`;
+    }
     const blobs = fetched.map((result) => /** @type {PromiseFulfilledResult<Blob>} */ (result).value);
     const vflip = channel.sampler.vflip;
     try {
