@@ -1,6 +1,6 @@
 // The site's media library as data: which files a channel's input names, and the site's binary
 // volume format. Pure: the page (src/page/inputs/media-library.js) fetches and decodes, the
-// render worker (src/page/gpu/media-textures.js) uploads, the command line (src/cli/media.js)
+// render worker (src/page/gpu/channels/media-textures.js) uploads, the command line (src/cli/media.js)
 // finds and downloads the same files by these paths.
 //
 // What the site's player does with each kind (https://www.shadertoy.com/js/effect.js,
@@ -64,7 +64,7 @@ export function mediaFiles({ kind, src }) {
   return [path, ...[1, 2, 3, 4, 5].map((i) => `${stem}_${i}${ext}`)];
 }
 
-/** The kinds the media library holds that are still: uploaded once (src/page/gpu/media-textures.js). */
+/** The kinds the media library holds that are still: uploaded once (src/page/gpu/channels/media-textures.js). */
 export const LIBRARY_KINDS = Object.freeze(['texture', 'cubemap', 'volume']);
 /**
  * The kinds it holds that move: a video's frame and music's 512 × 2 texture at each frame's iTime

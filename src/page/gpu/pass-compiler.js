@@ -14,7 +14,7 @@ import { formatPassMessages, parsePassShaderLog } from '../../shadertoy/pass-err
 import { channelTypes, frameSchedule } from '../../shadertoy/multipass.js';
 import { ShaderCompileError } from './errors.js';
 import { verbatimStandIn } from './verbatim-source.js';
-import { CubeBuffer } from './cube-buffer.js';
+import { CubeBuffer } from './channels/cube-buffer.js';
 
 /** Compiled materials kept for switching back without a compile: a uniform form, a constant form, and one spare, for each of up to five passes. */
 const MATERIALS_KEPT = 15;

@@ -97,7 +97,7 @@ import { ShaderCompileError, WebGL2UnavailableError } from './errors.js';
  *   controls as uniforms, with their values
  * @property {{name: string, value: unknown}} controlUniform one live control's new value
  * @property {{index: number, image: ImageBitmap | null}} channel an image into iChannel0..3 (null: black)
- * @property {{entries: Array<{key: string, payload: import('./media-textures.js').MediaPayload,
+ * @property {{entries: Array<{key: string, payload: import('./channels/media-textures.js').MediaPayload,
  *   sampler: import('../../shadertoy/multipass.js').Sampler}>, moving: Array<{key: string,
  *   sampler: import('../../shadertoy/multipass.js').Sampler}>}} passMedia the site's media the
  *   shader's channels name, in place of what was there (key: channel-bindings.js mediaKey): the

@@ -14,7 +14,7 @@ import { BandPlanner } from './band-planner.js';
 import { flipRows } from '../../shared/pixels.js';
 import { serve } from './protocol.js';
 import { PaintGate } from './paint-gate.js';
-import { CubeBuffer } from './cube-buffer.js';
+import { CubeBuffer } from './channels/cube-buffer.js';
 import { TILE_OFFSET_UNIFORM } from '../../shadertoy/header.js';
 
 /** @typedef {import('./protocol.js').FrameInputs} FrameInputs */

@@ -15,13 +15,13 @@
 import * as THREE from 'three';
 import { GpuTimer } from './gpu-timer.js';
 import { blackTexture, shadertoyUniforms } from './uniforms.js';
-import { PassBuffers, buffersWanted } from './pass-buffers.js';
-import { CubeBuffer } from './cube-buffer.js';
+import { PassBuffers, buffersWanted } from './channels/pass-buffers.js';
+import { CubeBuffer } from './channels/cube-buffer.js';
 import { WebGL2UnavailableError } from './errors.js';
 import { PassCompiler } from './pass-compiler.js';
 import { copyScene, fullscreenTriangle } from './frame-copy.js';
-import { PassMedia } from './media-textures.js';
-import { ChannelSamplers, bindChannels, imageTexture, ownChannelUniforms, setMedia } from './channel-bindings.js';
+import { PassMedia } from './channels/media-textures.js';
+import { ChannelSamplers, bindChannels, imageTexture, ownChannelUniforms, setMedia } from './channels/channel-bindings.js';
 import { PixelProbe } from './probe.js';
 import { SoundPass } from '../sound/sound-pass.js';
 import { sendVerbatimSources } from './verbatim-source.js';

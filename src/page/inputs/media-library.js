@@ -3,7 +3,7 @@
 // its own server serves, laid out as the site's paths (`<folder>/a/<hash>.<ext>`). The command
 // line's `--media DIR` serves one there. Each channel's files are fetched and decoded here (the
 // images flipped as its sampler's vflip says), then given to the render worker
-// (gpu/media-textures.js), which makes each channel's texture with its own sampler. A video or
+// (gpu/channels/media-textures.js), which makes each channel's texture with its own sampler. A video or
 // music is opened as the page's own channels open one (media-input.js), and gives its texture
 // at each frame's iTime (withFrames), as a channel of the panel does.
 //
@@ -13,11 +13,11 @@
 import { LIBRARY_KINDS, MOVING_LIBRARY_KINDS, cubeFaceOrder, isOneChannelTexture, mediaFiles, parseVolume } from '../../shadertoy/media.js';
 import { MediaInput } from './media-input.js';
 import { unsupportedNote } from '../../shadertoy/multipass.js';
-import { mediaKey } from '../gpu/channel-bindings.js';
+import { mediaKey } from '../gpu/channels/channel-bindings.js';
 
 /** @typedef {import('../../shadertoy/multipass.js').MultipassShader} MultipassShader */
 /** @typedef {import('../../shadertoy/multipass.js').MediaChannel} MediaChannel */
-/** @typedef {import('../gpu/media-textures.js').MediaPayload} MediaPayload */
+/** @typedef {import('../gpu/channels/media-textures.js').MediaPayload} MediaPayload */
 /** @typedef {{key: string, payload: MediaPayload, sampler: import('../../shadertoy/multipass.js').Sampler}} MediaEntry */
 
 /** The library's fetches: a file's bytes by URL, rejecting with a readable reason. @typedef {(url: string) => Promise<Blob>} FetchMedia */

@@ -11,7 +11,7 @@ import * as THREE from 'three';
 import { ShaderCompileError } from '../gpu/errors.js';
 import { formatPassMessages } from '../../shadertoy/pass-errors.js';
 import { channelTypes, soundPass } from '../../shadertoy/multipass.js';
-import { mediaKey } from '../gpu/channel-bindings.js';
+import { mediaKey } from '../gpu/channels/channel-bindings.js';
 import {
   BLOCK_SAMPLES,
   BLOCK_SIDE,

@@ -11,7 +11,7 @@ import { movingTexture } from './channel-bindings.js';
  * images as vflip says: WebGL ignores UNPACK_FLIP_Y_WEBGL for an ImageBitmap).
  * @typedef {{kind: 'texture', image: ImageBitmap, oneChannel: boolean}
  *   | {kind: 'cubemap', faces: ImageBitmap[]}
- *   | {kind: 'volume', volume: import('../../shadertoy/media.js').Volume}} MediaPayload
+ *   | {kind: 'volume', volume: import('../../../shadertoy/media.js').Volume}} MediaPayload
  */
 
 /** Filters by the site's names (piLibs.js: NONE nearest, LINEAR, MIPMAP trilinear with mipmaps). */
@@ -30,13 +30,13 @@ export class PassMedia {
   constructor() {
     /** The textures (one map for good: bindChannels's sources hold it). @type {Map<string, ChannelTexture>} */
     this.textures = new Map();
-    /** The samplers of the channels that hold a video or music. @type {Map<string, import('../../shadertoy/multipass.js').Sampler>} */
+    /** The samplers of the channels that hold a video or music. @type {Map<string, import('../../../shadertoy/multipass.js').Sampler>} */
     this._movingSamplers = new Map();
   }
 
   /**
    * The shader's media, in place of what was there.
-   * @param {import('./protocol.js').Commands['passMedia']} media
+   * @param {import('../protocol.js').Commands['passMedia']} media
    */
   set({ entries, moving }) {
     for (const { texture } of this.textures.values()) texture.dispose();
@@ -48,7 +48,7 @@ export class PassMedia {
   /**
    * The frames of the videos and music the shader's channels name, for the frame about to be
    * drawn (inputs/media-library.js), each into its channel's texture.
-   * @param {Array<{key: string, frame: import('./protocol.js').MediaFrame}>} frames
+   * @param {Array<{key: string, frame: import('../protocol.js').MediaFrame}>} frames
    */
   setFrames(frames) {
     for (const { key, frame } of frames) {
@@ -61,7 +61,7 @@ export class PassMedia {
 /**
  * A three.js texture of a channel's media, with the channel's sampler.
  * @param {MediaPayload} payload
- * @param {import('../../shadertoy/multipass.js').Sampler} sampler
+ * @param {import('../../../shadertoy/multipass.js').Sampler} sampler
  * @returns {ChannelTexture}
  */
 function mediaTexture(payload, sampler) {

@@ -7,7 +7,7 @@
 
 import * as THREE from 'three';
 
-/** @typedef {import('./pass-compiler.js').Step} Step */
+/** @typedef {import('../pass-compiler.js').Step} Step */
 
 /**
  * A pass's own channel uniforms (each material has them; the rest of its uniforms are shared).
@@ -115,7 +115,7 @@ function audioTexture() {
  * the passes that read it (bindChannels).
  * @param {Array<THREE.Texture | null>} channels the renderer's channel textures, changed here
  * @param {Record<string, {value: any}>} uniforms the shared uniforms
- * @param {Array<import('./protocol.js').MediaFrame | null>} media
+ * @param {Array<import('../protocol.js').MediaFrame | null>} media
  */
 export function setMedia(channels, uniforms, media) {
   media.forEach((frame, index) => {
@@ -134,8 +134,8 @@ export function setMedia(channels, uniforms, media) {
  * disposed) when there was none or it held another kind. Its iChannelTime is kept on it
  * (userData.time) for the passes that read it (bindChannels).
  * @param {THREE.Texture | null} texture
- * @param {import('./protocol.js').MediaFrame} frame
- * @param {import('../../shadertoy/multipass.js').Sampler} [sampler] a channel's own (a shader's
+ * @param {import('../protocol.js').MediaFrame} frame
+ * @param {import('../../../shadertoy/multipass.js').Sampler} [sampler] a channel's own (a shader's
  *   JSON names the file); without: as the site samples an image, and music (audioTexture)
  */
 export function movingTexture(texture, frame, sampler) {
@@ -226,7 +226,7 @@ export class ChannelSamplers {
       .map((binding) => ({ unit: units.get(binding.channel), sampler: this._samplerObject(/** @type {any} */ (binding.sampler)) }));
   }
 
-  /** @param {import('../../shadertoy/multipass.js').Sampler} sampler */
+  /** @param {import('../../../shadertoy/multipass.js').Sampler} sampler */
   _samplerObject({ filter, wrap }) {
     const key = `${filter} ${wrap}`;
     let object = this._samplerObjects.get(key);

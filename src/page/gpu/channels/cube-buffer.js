@@ -8,9 +8,9 @@
 // canvas is resized (their size is fixed); Restart and a new shader clear them to 0.
 
 import * as THREE from 'three';
-import { CUBE_A_SIZE, faceCorners } from '../../shadertoy/cube-a.js';
+import { CUBE_A_SIZE, faceCorners } from '../../../shadertoy/cube-a.js';
 
-/** @typedef {import('../../shadertoy/multipass.js').Sampler} Sampler */
+/** @typedef {import('../../../shadertoy/multipass.js').Sampler} Sampler */
 
 /** The height of the stacked picture the render worker cuts in bands. */
 const STACKED_HEIGHT = 6 * CUBE_A_SIZE;
@@ -50,7 +50,7 @@ export class CubeBuffer {
    * The cube maps a frame's passes need: none without a Cube A pass, with mipmap levels when
    * some reader samples it with the "mipmap" filter. New cube maps start cleared; the same need
    * keeps the ones there (a recompile is not a Restart).
-   * @param {import('./pass-compiler.js').Step[]} steps
+   * @param {import('../pass-compiler.js').Step[]} steps
    */
   use(steps) {
     const present = steps.some((step) => step.target === 'cube');
@@ -97,7 +97,7 @@ export class CubeBuffer {
   /**
    * The picture a pass draws, as the render worker cuts it in bands: the frame's width × height,
    * or the Cube A pass's six faces stacked.
-   * @param {import('./pass-compiler.js').Step | undefined} step (none: a band ended after a new
+   * @param {import('../pass-compiler.js').Step | undefined} step (none: a band ended after a new
    *   shader with fewer passes came)
    * @param {number} width
    * @param {number} height

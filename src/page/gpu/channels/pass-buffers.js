@@ -11,7 +11,7 @@
 
 import * as THREE from 'three';
 
-/** @typedef {import('../../shadertoy/multipass.js').Sampler} Sampler */
+/** @typedef {import('../../../shadertoy/multipass.js').Sampler} Sampler */
 
 const FILTERS = {
   nearest: [THREE.NearestFilter, THREE.NearestFilter],
@@ -45,7 +45,7 @@ function floatTarget(width, height, sampler) {
 /**
  * The buffers a frame's passes write, with the sampler their texture needs: the "mipmap" filter
  * where some reader asks for it (its mipmaps are made after each draw), else nearest.
- * @param {import('./pass-compiler.js').Step[]} steps
+ * @param {import('../pass-compiler.js').Step[]} steps
  * @returns {Map<string, Sampler>}
  */
 export function buffersWanted(steps) {
