@@ -20,24 +20,9 @@ import { REPO_ROOT } from './harness/config.js';
 import { readPng } from './harness/images.js';
 import { editorTabs, exportJsonFile } from './page-multipass-helpers.js';
 import { pixel, readPixels, sharePageAcrossTests, withPage } from './page-helpers.js';
+import { cubeLookup } from './cube-lookup.js';
 
 sharePageAcrossTests();
-
-/**
- * The face and the texel coordinates (s, t) in [0, 1] a samplerCube lookup along `d` reads: the
- * OpenGL ES 3.0 specification's table "Selection of cube map images" (major axis, sc, tc).
- * @param {number[]} d
- */
-function cubeLookup([x, y, z]) {
-  const ax = Math.abs(x);
-  const ay = Math.abs(y);
-  const az = Math.abs(z);
-  let face, sc, tc, ma;
-  if (ax >= ay && ax >= az) [face, sc, tc, ma] = x > 0 ? [0, -z, -y, ax] : [1, z, -y, ax];
-  else if (ay >= az) [face, sc, tc, ma] = y > 0 ? [2, x, z, ay] : [3, x, -z, ay];
-  else [face, sc, tc, ma] = z > 0 ? [4, x, -y, az] : [5, -x, -y, az];
-  return { face, s: (sc / ma + 1) / 2, t: (tc / ma + 1) / 2 };
-}
 
 describe('the faces and their texels', () => {
   // texel centres across each face: corners, edges' middles and an inner texel

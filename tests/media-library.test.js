@@ -25,6 +25,7 @@ import { decodeWav } from '../src/shared/wav.js';
 import { cubeFaceOrder, mediaFiles, mediaPath, parseVolume, writeVolume } from '../src/shadertoy/media.js';
 import { pixel, readPixels, sharePageAcrossTests, withPage, withServedDir } from './page-helpers.js';
 import { MUSIC_READER, checkMusic, toneSamples, wav } from './music-fixture.js';
+import { cubeLookup } from './cube-lookup.js';
 
 const BIN = path.join(REPO_ROOT, 'bin', 'shaderproof.js');
 const run = promisify(execFile);
@@ -155,16 +156,10 @@ const CUBE_DIRECTIONS = Array.from({ length: 24 }, (_, k) => {
  * @param {number[]} direction
  * @param {boolean} vflip
  */
-function cubeExpected([x, y, z], vflip) {
-  const ax = Math.abs(x);
-  const ay = Math.abs(y);
-  const az = Math.abs(z);
-  let face, sc, tc, ma;
-  if (ax >= ay && ax >= az) [face, sc, tc, ma] = x > 0 ? [0, -z, -y, ax] : [1, z, -y, ax];
-  else if (ay >= az) [face, sc, tc, ma] = y > 0 ? [2, x, z, ay] : [3, x, -z, ay];
-  else [face, sc, tc, ma] = z > 0 ? [4, x, -y, az] : [5, -x, -y, az];
-  const col = (sc / ma + 1) / 2 < 0.5 ? 0 : 1;
-  const uploadedRow = (tc / ma + 1) / 2 < 0.5 ? 0 : 1;
+function cubeExpected(direction, vflip) {
+  const { face, s, t } = cubeLookup(direction);
+  const col = s < 0.5 ? 0 : 1;
+  const uploadedRow = t < 0.5 ? 0 : 1;
   const file = vflip && (face === 2 || face === 3) ? 5 - face : face; // the site's trade of +Y and −Y
 
   return faceTexel(file, vflip ? 1 - uploadedRow : uploadedRow, col);
