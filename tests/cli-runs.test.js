@@ -132,14 +132,14 @@ describe('no bad input touches an output file already there (issue 36, item 4)',
     const before = Buffer.from(`the picture someone kept: ${name}`);
     fs.writeFileSync(path.join(folder, output), before);
     const out = await shaderproof('render', name, '-o', 'keep.png', '--size', '8x8', ...flags);
-    expect(out.code).toBe(1);
+    expect(out.code, `stdout: ${out.stdout}\nstderr: ${out.stderr}`).toBe(1);
     // one line, or a compiler's report: a line per error at the file's own line, its source under it
     const lines = out.stderr.split('\n').filter(Boolean);
     expect(
       lines.slice(1).every((line) => line.startsWith(`${name}:`) || line.startsWith('    ')),
       out.stderr,
     ).toBe(true);
-    expect(lines[0]).toMatch(said);
+    expect(lines[0] ?? '', `stdout: ${out.stdout}\nstderr: ${out.stderr}`).toMatch(said);
     expect(fs.readFileSync(path.join(folder, output)).equals(before), `${output} is as it was`).toBe(true);
     expect(
       fs.readdirSync(folder).filter((f) => f.includes('partial')),
