@@ -209,6 +209,20 @@ describe('Shadertoy JSON: loading', () => {
     edit(copy.Shader);
     return copy;
   };
+
+  test('a channel reading a buffer or Cube A that no pass writes is black, as on the site, and said', () => {
+    const dangling = broken((s) => {
+      s.renderpass[0].inputs[0].id = '4sXGR8'; // Buffer C
+      s.renderpass[0].inputs[0].filepath = '/media/previz/buffer02.png';
+      s.renderpass[0].inputs.push({ channel: 3, type: 'cubemap', id: '4dX3Rr', filepath: '/media/previz/cubemap00.png', sampler: {} });
+    });
+    const { model } = fromShadertoyJson(dangling);
+    const image = frameSchedule(model).find((step) => step.target === 'screen');
+    expect(image?.bindings[0]).toMatchObject({ source: 'black', samplerType: '2D', resolution: 'canvas' });
+    expect(image?.bindings[0].note).toBe('Image, iChannel0: reads Buffer C, which no pass writes; the channel is black, as on the site');
+    expect(image?.bindings[3]).toMatchObject({ source: 'black', samplerType: 'Cube', resolution: [0, 0, 0] });
+    expect(image?.bindings[3].note).toMatch(/^Image, iChannel3: reads Cube A, which no pass writes/);
+  });
   test.each([
     ['not JSON', '{"Shader": ', /not JSON/],
     ['no renderpass', { Shader: { info: {} } }, /no "renderpass" list/],
@@ -232,11 +246,6 @@ describe('Shadertoy JSON: loading', () => {
     ['an unknown filter', broken((s) => (s.renderpass[0].inputs[0].sampler.filter = 'cubic')), /^Image, iChannel0: unknown filter "cubic"/],
     ['a pass without code', broken((s) => delete s.renderpass[1].code), /^Buffer A: has no code/],
     ['an unknown pass type', broken((s) => (s.renderpass[1].type = 'compute')), /^Buffer A: unknown pass type "compute"/],
-    [
-      'a buffer no pass writes',
-      broken((s) => (s.renderpass[0].inputs[0].id = '4sXGR8')),
-      /^Image, iChannel0: reads Buffer C, which no pass writes/,
-    ],
     ['no Image pass', broken((s) => s.renderpass.splice(0, 1)), /exactly one Image pass, this one has 0/],
     [
       'two Buffer A passes',

@@ -78,8 +78,9 @@ const WRAPS = ['clamp', 'repeat'];
 const MEDIA_KINDS = ['texture', 'cubemap', 'volume', 'video', 'webcam', 'music', 'musicstream', 'mic'];
 
 /**
- * Checks a model: one Image pass, at most one pass per buffer, four channels each, channels that
- * name existing buffers. Throws a MultipassError naming the pass; returns the model.
+ * Checks a model: one Image pass, at most one pass per buffer, four channels each, channels of
+ * known kinds and samplers (a channel may read a buffer no pass writes: black, as on the site,
+ * and said: frameSchedule). Throws a MultipassError naming the pass; returns the model.
  * @param {MultipassShader} model
  */
 export function validateModel(model) {
@@ -119,15 +120,6 @@ export function validateModel(model) {
       if (!['buffer', 'keyboard', 'cubebuffer'].includes(channel.kind) && !MEDIA_KINDS.includes(channel.kind)) {
         throw new MultipassError(`${at}: unknown input kind ${JSON.stringify(channel.kind)}`);
       }
-    });
-  }
-  for (const pass of model.passes) {
-    pass.channels.forEach((channel, i) => {
-      if (channel?.kind === 'buffer' && !seen.has(channel.buffer)) {
-        throw new MultipassError(`${pass.name}, iChannel${i}: reads Buffer ${channel.buffer}, which no pass writes`);
-      }
-      if (channel?.kind === 'cubebuffer' && !seen.has('cubemap'))
-        throw new MultipassError(`${pass.name}, iChannel${i}: reads Cube A, which no pass writes`);
     });
   }
   return model;
@@ -192,7 +184,7 @@ export function renderOrder(model) {
  */
 export function frameSchedule(model) {
   const order = renderOrder(model);
-  // where in the order buffer b is written (-1: no pass writes it, as validateModel rules out)
+  // where in the order buffer b is written (-1: no pass writes it)
   const written = (/** @type {BufferName} */ b) => order.findIndex((p) => p.buffer === b);
   const cubeAt = order.findIndex((p) => p.kind === 'cubemap');
   return order.map((pass, index) => ({
@@ -201,6 +193,22 @@ export function frameSchedule(model) {
     bindings: pass.channels.map((channel, i) => {
       /** @type {ChannelBinding} */
       if (channel === null) return { channel: i, source: 'none', samplerType: '2D', resolution: [0, 0, 0] };
+      // a buffer or Cube A no pass writes: the site binds its texture all the same, never drawn
+      // into (effect.js creates the four buffers and the cube map up front): black, and said here
+      const unwritten =
+        (channel.kind === 'buffer' && written(channel.buffer) < 0) || (channel.kind === 'cubebuffer' && cubeAt < 0)
+          ? `${pass.name}, iChannel${i}: reads ${channel.kind === 'buffer' ? `Buffer ${channel.buffer}` : 'Cube A'}, which no pass writes; the channel is black, as on the site`
+          : null;
+      if (unwritten)
+        return {
+          channel: i,
+          source: 'black',
+          samplerType: samplerTypeOf(channel),
+          sampler: { ...channel.sampler, vflip: false },
+          // the site resizes all four buffers with the canvas (Effect.ResizeBuffers), Cube A only with its pass
+          resolution: channel.kind === 'buffer' ? 'canvas' : [0, 0, 0],
+          note: unwritten,
+        };
       if (channel.kind === 'buffer') {
         const at = written(channel.buffer);
         const earlier = at >= 0 && at < index;
