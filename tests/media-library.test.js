@@ -300,6 +300,28 @@ describe('the site’s media from a folder, against what the test computes', () 
           await goto(`?shader=/${base}/${name}&size=${expected.length}x1&time=0&media=/${base}/media/`);
           checkRow(await readPixels(page), expected, `page, ${name}`);
         }
+        // an edit that names the same media keeps them (nothing fetched again); a lost and
+        // restored context gets them again
+        const [name, json, cases] = SHADERS[0];
+        await goto(`?shader=/${base}/${name}&size=${cases().length}x1&time=0&media=/${base}/media/`);
+        const fetched = [];
+        const count = (/** @type {import('puppeteer-core').HTTPRequest} */ request) => {
+          if (request.url().includes('/media/a/')) fetched.push(request.url());
+        };
+        page.on('request', count);
+        const edited = JSON.parse(json);
+        edited.Shader.renderpass[0].code += '// an edit\n';
+        const result = await page.evaluate((text) => window.raytracer.setProject(text), JSON.stringify(edited));
+        expect(result.ok, result.error).toBe(true);
+        checkRow(await readPixels(page), cases(), 'page, after an edit');
+        await page.evaluate(() => window.raytracer.loseContext());
+        await page.waitForFunction(() => window.raytracer.info().contextLost);
+        await page.evaluate(() => window.raytracer.restoreContext());
+        await page.waitForFunction(() => !window.raytracer.info().contextLost);
+        checkRow(await readPixels(page), cases(), 'page, after a lost and restored context');
+        page.off('request', count);
+        expect(fetched, 'no media fetched again').toEqual([]);
+
         await goto(`?shader=/${base}/music.json&size=512x2&time=${MUSIC_TIME}&media=/${base}/media/`);
         checkMusic(await readPixels(page), samples, MUSIC_TIME, 'page, music a buffer pass names');
         // the page's "Copy link" keeps the media folder, so the link draws the same

@@ -121,7 +121,7 @@ export class RaytracerApp extends Emitter {
           const inputs = this.channels.withMedia(frame, running);
           return inputs instanceof Promise ? inputs.then((i) => this.media.withFrames(i, running)) : this.media.withFrames(inputs, running);
         };
-        return this.media.pending ? this.media.pending.then(withChannels) : withChannels();
+        return this.media.pending ? this.media.ready().then(withChannels) : withChannels();
       },
       isMultipass: () => this.isMultipass,
       hasProgram: () => this.compiles.hasProgram,
@@ -232,7 +232,7 @@ export class RaytracerApp extends Emitter {
     this.projectInfo = from.info ?? null;
     this.notes = frameSchedule(project).flatMap((step) => step.bindings.flatMap((binding) => (binding.note ? [binding.note] : [])));
     this.media.load(project);
-    this.media.pending?.then(() => this.project === project && this.emit('notes'));
+    if (this.media.pending) this.media.ready().then(() => this.project === project && this.emit('notes'));
     this.liveForm.reset();
     this.converge.drop();
     if (from.name) this.fileName = from.name;

@@ -48,6 +48,8 @@ export class MediaLibrary {
     this._moving = [];
     /** The page's note on each channel the library filled, and the line that replaces the note of each it could not. @type {Map<string, string | null>} */
     this._lines = new Map();
+    /** What the loaded (or loading) media are: the folder and each channel's kind, file and sampler. */
+    this._signature = '';
     /** The load under way (resolves when the worker has its media). @type {Promise<void> | null} */
     this.pending = null;
     this._loads = 0;
@@ -74,6 +76,13 @@ export class MediaLibrary {
           : [],
       ),
     );
+    // an edit that names the same media in the same channels (most edits) keeps what is loaded
+    const signature = JSON.stringify([
+      this.base,
+      wanted.map((w) => [w.pass, w.index, w.channel.kind, w.channel.src, w.channel.sampler, w.channel.extra?.id]),
+    ]);
+    if (signature === this._signature) return;
+    this._signature = signature;
     if (!wanted.length && !this._entries.length && !this._moving.length) {
       this._lines = new Map();
       this.pending = null;
@@ -86,6 +95,7 @@ export class MediaLibrary {
         return; // a newer shader came meanwhile
       }
       for (const { input } of this._moving) input.close();
+      for (const { payload } of this._entries) closeImages(payload); // the worker has its own copies
       this._moving = results.flatMap(({ pass, index, channel, payload }) =>
         payload instanceof MediaInput ? [{ key: mediaKey(pass, index), input: payload, sampler: channel.sampler }] : [],
       );
@@ -125,6 +135,11 @@ export class MediaLibrary {
   /** Stops the music, when the page's clock stops. */
   silence() {
     for (const { input } of this._moving) input.follow(0, false);
+  }
+
+  /** Resolves once the media of the latest shader are in the worker (a load that a newer one replaced is waited past). */
+  async ready() {
+    while (this.pending) await this.pending;
   }
 
   /** Gives the worker the media again (a new worker, a restored context). */
@@ -176,4 +191,10 @@ export class MediaLibrary {
       return `${what} cannot be read (${error.message})`;
     }
   }
+}
+
+/** Closes a payload's images (the page's copies; structured cloning gave the worker its own). @param {MediaPayload} payload */
+function closeImages(payload) {
+  if (payload.kind === 'texture') payload.image.close();
+  else if (payload.kind === 'cubemap') for (const face of payload.faces) face.close();
 }
