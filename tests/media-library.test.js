@@ -250,6 +250,9 @@ describe('the site’s media paths and volume format', () => {
     ['https://www.shadertoy.com/media/a/abc.png', 'a/abc.png'],
     ['/media/a/../../etc/passwd', null],
     ['/presets/tex00.jpg', null],
+    ['/media/a/100%.png', null],
+    ['/media/a/x%5C..%5Cy.png', null],
+    ['/media/a/sky%23a.png', 'a/sky#a.png'],
     ['', null],
   ])('mediaPath(%j) is %j', (src, expected) => {
     expect(mediaPath(src)).toBe(expected);
@@ -426,6 +429,49 @@ describe('the site’s media from a folder, against what the test computes', () 
         expect(Math.abs(pcm[i] - left), `sample ${i / 2}, left: the volume's texel`).toBeLessThanOrEqual(1);
         expect(Math.abs(pcm[i + 1] - right), `sample ${i / 2}, right: the texture's texel`).toBeLessThanOrEqual(1);
       }
+
+      // two volumes of one name in two folders, with a "%" and a "#" in it: each channel its own file
+      const odd = '50%#v.bin';
+      for (const [dir, value] of /** @type {Array<[string, number]>} */ ([
+        ['one', 255],
+        ['two', 64],
+      ])) {
+        fs.mkdirSync(path.join(folder, dir));
+        fs.writeFileSync(
+          path.join(folder, dir, odd),
+          writeVolume({ width: 1, height: 1, depth: 1, channels: 1, data: Uint8Array.of(value) }),
+        );
+      }
+      fs.writeFileSync(
+        path.join(folder, 'two.glsl'),
+        'void mainImage(out vec4 c, in vec2 p) { c = vec4(texture(iChannel0, vec3(0.5)).r, texture(iChannel1, vec3(0.5)).r, 0.0, 1.0); }\n',
+      );
+      const two = await shaderproof(
+        'render',
+        'two.glsl',
+        '--channel0',
+        `one/${odd}`,
+        '--channel1',
+        `two/${odd}`,
+        '--size',
+        '1x1',
+        '-o',
+        'two.png',
+      );
+      expect(two.code, two.stderr).toBe(0);
+      expect(pixel(readOut('two.png'), 0, 0)).toEqual([255, 64, 0]);
+      // a volume that is not there, and a cubemap with a face missing: said, nothing drawn
+      const gone = await shaderproof('render', 'two.glsl', '--channel0', 'one/gone.bin', '--size', '1x1', '-o', 'gone.png');
+      expect([gone.code, gone.stderr.trim()]).toEqual([1, 'shaderproof render: one/gone.bin: no such file']);
+      fs.mkdirSync(path.join(folder, 'partial'));
+      for (const face of ['sky.png', 'sky_1.png', 'sky_2.png'])
+        fs.copyFileSync(path.join(site, 'media', 'a', 'tex.png'), path.join(folder, 'partial', face));
+      const partial = await shaderproof('render', 'two.glsl', '--channel0', 'partial/sky.png', '--size', '1x1', '-o', 'gone.png');
+      expect(partial.code).toBe(2);
+      expect(partial.stderr).toMatch(
+        /--channel0 partial\/sky\.png: a cubemap's first face, with 2 of its other five beside it; sky_3\.png, sky_4\.png, sky_5\.png missing/,
+      );
+      expect(fs.existsSync(path.join(folder, 'gone.png'))).toBe(false);
 
       // test: --media holds for every case; without it the case fails and no reference is written
       fs.mkdirSync(path.join(folder, 'cases'));

@@ -18,8 +18,9 @@ import os from 'node:os';
 import path from 'node:path';
 import { fromShadertoyJson, toShadertoyJson } from '../shadertoy/multipass-json.js';
 import { singlePass } from '../shadertoy/multipass.js';
-import { LIBRARY_KINDS, MOVING_LIBRARY_KINDS, mediaFiles } from '../shadertoy/media.js';
+import { LIBRARY_KINDS, MOVING_LIBRARY_KINDS, mediaFiles, mediaUrlPath } from '../shadertoy/media.js';
 import { UsageError } from './view-options.js';
+import { CliError } from './session.js';
 
 /** Where the site's media is downloaded from: its own origin, or SHADERPROOF_MEDIA_ORIGIN (a mirror, a test's server). */
 const mediaOrigin = () => process.env.SHADERPROOF_MEDIA_ORIGIN || 'https://www.shadertoy.com';
@@ -72,17 +73,24 @@ export async function mediaFolders(file, media, say) {
   const folders = media.dir ? [media.dir] : [];
   if (!media.fetch) return folders;
   folders.push(cache);
-  const missing = namedMedia(file).filter((rel) => !folders.some((dir) => fs.existsSync(path.join(dir, rel))));
-  for (const rel of missing) {
-    try {
-      const bytes = await download(`${mediaOrigin()}/media/${rel}`, path.join(cache, rel));
-      say(`media: downloaded /media/${rel} (${(bytes / 1024).toFixed(0)} kB) into ${cache}`);
-    } catch (error) {
-      say(`warning: media: /media/${rel} could not be downloaded from ${mediaOrigin()}: ${error.message}`);
-    }
-  }
+  // what failed is tried once a run: a test case renders its shader up to five times
+  const missing = namedMedia(file).filter((rel) => !failedDownloads.has(rel) && !folders.some((dir) => fs.existsSync(path.join(dir, rel))));
+  await Promise.all(
+    missing.map(async (rel) => {
+      try {
+        const bytes = await download(`${mediaOrigin()}/media/${mediaUrlPath(rel)}`, path.join(cache, rel));
+        say(`media: downloaded /media/${rel} (${(bytes / 1024).toFixed(0)} kB) into ${cache}`);
+      } catch (error) {
+        failedDownloads.add(rel);
+        say(`warning: media: /media/${rel} could not be downloaded from ${mediaOrigin()}: ${error.message}`);
+      }
+    }),
+  );
   return folders;
 }
+
+/** The media paths whose download failed in this process. */
+const failedDownloads = new Set();
 
 /**
  * Downloads `url` into `file` whole: written beside it, then renamed, so that the cache never
@@ -97,6 +105,8 @@ async function download(url, file) {
     );
   });
   if (!response.ok) throw new Error(`HTTP ${response.status}${response.statusText ? ` ${response.statusText}` : ''}`);
+  // a web page in a file's place (a login or a challenge page) is no media, and would stay cached
+  if (/text\/html/i.test(response.headers.get('content-type') ?? '')) throw new Error('the server answered with a web page, not the file');
   const data = Buffer.from(await response.arrayBuffer());
   fs.mkdirSync(path.dirname(file), { recursive: true });
   const partial = `${file}.${process.pid}.part`;
@@ -116,46 +126,67 @@ const NEW_INPUT_SAMPLER = {
 };
 
 /**
- * What a channel's file on disk is, when it is a volume or a cubemap; null for anything else.
+ * What a channel's file on disk is, when it is a volume or a cubemap (with its faces' names);
+ * null for anything else (an image, a video, music: the page's own channels).
  * @param {string} file
- * @returns {'volume' | 'cubemap' | null}
+ * @param {number} index the channel, for messages
+ * @returns {{kind: 'volume' | 'cubemap', files: string[]} | null} files: the names the channel reads, in its folder
  */
-function libraryKindOnDisk(file) {
-  if (/\.bin$/i.test(file)) return 'volume';
+function libraryKindOnDisk(file, index) {
+  const name = path.basename(file);
+  if (/\.bin$/i.test(file)) {
+    if (!fs.existsSync(file)) throw new CliError(`${file}: no such file`);
+    return { kind: 'volume', files: [name] };
+  }
   if (!/\.(png|jpe?g|webp|gif)$/i.test(file)) return null;
-  const [, ...faces] = mediaFiles({ kind: 'cubemap', src: `/media/${path.basename(file)}` });
-  return faces.every((face) => fs.existsSync(path.join(path.dirname(file), face))) ? 'cubemap' : null;
+  // the site's names of a cubemap's other faces: sky.png, then sky_1.png … sky_5.png
+  const dot = name.lastIndexOf('.');
+  const faces = [1, 2, 3, 4, 5].map((n) => `${name.slice(0, dot)}_${n}${name.slice(dot)}`);
+  const present = faces.filter((face) => fs.existsSync(path.join(path.dirname(file), face)));
+  if (present.length === 0) return null;
+  if (present.length < faces.length)
+    throw new UsageError(
+      `--channel${index} ${file}: a cubemap's first face, with ${present.length} of its other five beside it; ${faces.filter((f) => !present.includes(f)).join(', ')} missing`,
+    );
+  return { kind: 'cubemap', files: [name, ...faces] };
 }
 
 /**
  * The shader as a Shadertoy JSON whose Image pass reads each volume and cubemap given by
- * --channelN, and the folders its media is served from; null when no channel is one.
+ * --channelN, and what to mount for them: each channel's own files under a folder of its own
+ * (`channel<i>/`), so that two files of one name, or a --media folder's, cannot stand in for
+ * each other; null when no channel is one.
  * @param {string} file the shader (.glsl or a Shadertoy JSON)
  * @param {(string | null)[]} channels --channel0..3
- * @returns {{json: string, folders: string[], rest: (string | null)[]} | null} rest: the channels
- *   left to the page (images, videos, music)
+ * @returns {{json: string, mounts: import('../engine/page-server.js').FolderMount[], rest: (string | null)[]} | null}
+ *   rest: the channels left to the page (images, videos, music)
  */
 export function withLibraryChannels(file, channels) {
-  const kinds = channels.map((f) => (f ? libraryKindOnDisk(f) : null));
-  if (!kinds.some(Boolean)) return null;
+  const found = channels.map((f, i) => (f ? libraryKindOnDisk(f, i) : null));
+  if (!found.some(Boolean)) return null;
   const text = fs.readFileSync(file, 'utf8');
-  const loaded = /\.json$/i.test(file) || /^\s*[[{]/.test(text) ? fromShadertoyJson(text) : { model: singlePass(text), info: undefined };
+  let loaded;
+  try {
+    loaded = /\.json$/i.test(file) || /^\s*[[{]/.test(text) ? fromShadertoyJson(text) : { model: singlePass(text), info: null };
+  } catch (error) {
+    throw new CliError(`${file}: ${error.message}`);
+  }
   const image = /** @type {import('../shadertoy/multipass.js').Pass} */ (loaded.model.passes.find((p) => p.kind === 'image'));
-  const folders = [];
-  kinds.forEach((kind, i) => {
-    if (!kind) return;
-    if (image.channels[i])
-      throw new UsageError(`--channel${i} ${channels[i]}: ${path.basename(file)}'s Image pass reads iChannel${i} already`);
-    const dir = path.dirname(path.resolve(/** @type {string} */ (channels[i])));
-    if (!folders.includes(dir)) folders.push(dir);
-    // a folder of its own for each file's folder: the media path is the file's name in it
+  /** @type {import('../engine/page-server.js').FolderMount[]} */
+  const mounts = [];
+  found.forEach((disk, i) => {
+    if (!disk) return;
+    const given = /** @type {string} */ (channels[i]);
+    if (image.channels[i]) throw new UsageError(`--channel${i} ${given}: ${path.basename(file)}'s Image pass reads iChannel${i} already`);
+    mounts.push({ prefix: `channel${i}`, dir: path.dirname(path.resolve(given)), files: disk.files });
     image.channels[i] = {
-      kind,
-      src: `/media/${path.basename(/** @type {string} */ (channels[i]))}`,
+      kind: disk.kind,
+      src: `/media/channel${i}/${encodeURIComponent(disk.files[0])}`,
       supported: false,
-      sampler: NEW_INPUT_SAMPLER[kind],
+      sampler: NEW_INPUT_SAMPLER[disk.kind],
     };
   });
-  const json = JSON.stringify(toShadertoyJson(loaded.model, loaded.info));
-  return { json, folders, rest: channels.map((f, i) => (kinds[i] ? null : f)) };
+  // named as the file is, so that the page's notes and messages name it
+  const info = loaded.info ?? { name: path.basename(file), description: '', tags: [] };
+  return { json: JSON.stringify(toShadertoyJson(loaded.model, info)), mounts, rest: channels.map((f, i) => (found[i] ? null : f)) };
 }

@@ -32,10 +32,8 @@ export async function renderShader(session, file, view, { converge = null, progr
   };
   // a volume or a cubemap in --channelN: the shader as the JSON whose Image pass reads it (media.js)
   const wrapped = withLibraryChannels(file, view.channels);
-  const shaderUrl = wrapped
-    ? session.server.mountText(wrapped.json, /\.json$/i.test(file) ? path.basename(file) : `${path.basename(file)}.json`)
-    : session.server.mount(path.resolve(file));
-  const folders = [...(await mediaFolders(file, view.media, io.err)), ...(wrapped?.folders ?? [])];
+  const shaderUrl = wrapped ? session.server.mountText(wrapped.json, path.basename(file)) : session.server.mount(path.resolve(file));
+  const folders = [...(await mediaFolders(file, view.media, io.err)), ...(wrapped?.mounts ?? [])];
   const drawnView = wrapped ? { ...view, channels: wrapped.rest } : view;
   const query = viewQuery(shaderUrl, drawnView, mount, folders.length ? session.server.mountFolders(folders) : null);
   let image;
@@ -43,9 +41,7 @@ export async function renderShader(session, file, view, { converge = null, progr
     image = await session.draw(query);
   } catch (error) {
     if (error instanceof CliError)
-      error.message = error.hung
-        ? `${file}: ${error.message}`
-        : userMessage(error.message.replaceAll(shaderUrl, file).replaceAll(path.basename(shaderUrl), file), file);
+      error.message = error.hung ? `${file}: ${error.message}` : userMessage(error.message.replaceAll(shaderUrl, file), file);
     throw error;
   }
   const missing = view.controls.filter(([name]) => !(name in (image.info.controls ?? {}))).map(([name]) => name);

@@ -8,7 +8,8 @@
 //                          request: a saved file is served as it is now; or a text the command
 //                          made (mountText())
 //   /__media/<id>/<path>   a file of the folders mountFolders() was given, from the first that
-//                          has it (the site's media: --media DIR, then the download cache)
+//                          has it (the site's media: --media DIR, then the download cache, then
+//                          each --channelN volume's or cubemap's own files under channel<N>/)
 //   /__events              Server-Sent Events: `{"url": "/__files/…"}` when a watched file
 //                          changes (watch()); the page reloads that shader in place (main.js)
 //   anything else          the built page's files; an unknown path answers 404
@@ -122,6 +123,12 @@ export async function builtPage({ say = () => {} } = {}) {
 }
 
 /**
+ * What mountFolders() serves: a folder (everything under it), or some named files of a folder
+ * under a prefix of their own.
+ * @typedef {string | {prefix: string, dir: string, files: string[]}} FolderMount
+ */
+
+/**
  * A handler that runs before the server's own, connect-style: it answers, or calls `next`.
  * @typedef {(req: import('node:http').IncomingMessage, res: import('node:http').ServerResponse, next: () => void) => void} Routes
  */
@@ -136,7 +143,7 @@ export async function builtPage({ say = () => {} } = {}) {
 export async function startPageServer({ root, port = 0, fileEvents = false, routes = (_req, _res, next) => next() }) {
   /** @type {Map<string, string>} url path → file */
   const mounts = new Map();
-  /** @type {string[][]} mountFolders()'s folders, by id */
+  /** @type {FolderMount[][]} mountFolders()'s entries, by id */
   const folderMounts = [];
   /** @type {Map<string, string>} url path → text */
   const texts = new Map();
@@ -207,14 +214,25 @@ export async function startPageServer({ root, port = 0, fileEvents = false, rout
     if (req.method === 'HEAD') res.end();
     else fs.createReadStream(file).pipe(res);
   }
-  /** A file of mounted folders at `pathname`, from the first folder that has it; never outside them. @param {string} pathname */
+  /**
+   * A file of mounted folders at `pathname`, from the first entry that has it: a folder serves
+   * what is under it, never outside; a `{prefix, dir, files}` entry serves `prefix/NAME` for
+   * its named files only.
+   * @param {string} pathname
+   */
   function folderFile(pathname) {
     const match = new RegExp(`^${FOLDERS_ROUTE}(\\d+)/(.+)$`).exec(pathname);
-    const folders = match ? folderMounts[Number(match[1])] : undefined;
-    if (!match || !folders) return undefined;
-    for (const dir of folders) {
-      const file = path.resolve(dir, match[2]);
-      if (file.startsWith(dir + path.sep) && fs.existsSync(file) && fs.statSync(file).isFile()) return file;
+    const entries = match ? folderMounts[Number(match[1])] : undefined;
+    if (!match || !entries) return undefined;
+    const wanted = match[2];
+    for (const entry of entries) {
+      let file;
+      if (typeof entry === 'string') file = path.resolve(entry, wanted);
+      else if (wanted.startsWith(`${entry.prefix}/`) && entry.files.includes(wanted.slice(entry.prefix.length + 1)))
+        file = path.join(entry.dir, wanted.slice(entry.prefix.length + 1));
+      else continue;
+      const inside = typeof entry !== 'string' || file.startsWith(entry + path.sep);
+      if (inside && fs.existsSync(file) && fs.statSync(file).isFile()) return file;
     }
     return undefined;
   }
@@ -238,13 +256,15 @@ export async function startPageServer({ root, port = 0, fileEvents = false, rout
       return urlPath;
     },
     /**
-     * Serves the files under `folders` at a URL of their own (ending in /), each path from the
-     * first folder that has it.
-     * @param {string[]} folders
+     * Serves the files of `entries` at a URL of their own (ending in /), each path from the
+     * first entry that has it.
+     * @param {FolderMount[]} entries
      * @returns {string} the URL path
      */
-    mountFolders(folders) {
-      folderMounts.push(folders.map((dir) => path.resolve(dir)));
+    mountFolders(entries) {
+      folderMounts.push(
+        entries.map((entry) => (typeof entry === 'string' ? path.resolve(entry) : { ...entry, dir: path.resolve(entry.dir) })),
+      );
       return `${FOLDERS_ROUTE}${folderMounts.length - 1}/`;
     },
     /**

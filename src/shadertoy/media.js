@@ -43,10 +43,22 @@ export function mediaPath(src) {
   }
   const match = SITE_MEDIA.exec(path);
   if (!match) return null;
-  const inside = decodeURIComponent(match[1]);
-  if (inside.split('/').some((part) => part === '..' || part === '' || part === '.')) return null;
+  let inside;
+  try {
+    inside = decodeURIComponent(match[1]);
+  } catch {
+    return null; // a stray "%": no file of the site's
+  }
+  // a path that could leave the folder (.., a backslash or a drive on Windows) names no file of the site's
+  if (inside.split('/').some((part) => part === '..' || part === '' || part === '.' || /[\\:]/.test(part))) return null;
   return inside;
 }
+
+/**
+ * A media-folder path as a URL path again (each segment encoded: a name may hold # or %).
+ * @param {string} path a path mediaPath or mediaFiles gave
+ */
+export const mediaUrlPath = (path) => path.split('/').map(encodeURIComponent).join('/');
 
 /**
  * The files a channel's input is made of, as media-folder paths: one for a texture, volume,

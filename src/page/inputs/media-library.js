@@ -10,7 +10,15 @@
 // What could not be had is said: every channel the library could not fill keeps the page's note
 // that it is black, with the file and why (no folder given, no such file, not an image).
 
-import { LIBRARY_KINDS, MOVING_LIBRARY_KINDS, cubeFaceOrder, isOneChannelTexture, mediaFiles, parseVolume } from '../../shadertoy/media.js';
+import {
+  LIBRARY_KINDS,
+  MOVING_LIBRARY_KINDS,
+  cubeFaceOrder,
+  isOneChannelTexture,
+  mediaFiles,
+  mediaUrlPath,
+  parseVolume,
+} from '../../shadertoy/media.js';
 import { MediaInput } from './media-input.js';
 import { unsupportedNote } from '../../shadertoy/multipass.js';
 import { mediaKey } from '../gpu/channels/channel-bindings.js';
@@ -91,7 +99,10 @@ export class MediaLibrary {
     this.pending = (async () => {
       const results = await Promise.all(wanted.map((want) => this._channel(want.channel).then((payload) => ({ ...want, payload }))));
       if (load !== this._loads) {
-        for (const { payload } of results) if (payload instanceof MediaInput) payload.close();
+        for (const { payload } of results) {
+          if (payload instanceof MediaInput) payload.close();
+          else if (typeof payload !== 'string') closeImages(payload);
+        }
         return; // a newer shader came meanwhile
       }
       for (const { input } of this._moving) input.close();
@@ -171,7 +182,7 @@ export class MediaLibrary {
     if (!files.length) return `${what} is not a path of the site's media (/media/…)`;
     if (!this.base) return `${what} needs the site's media: give a media folder (shaderproof --media DIR, or the page's ?media=URL)`;
     const base = this.base;
-    const fetched = await Promise.allSettled(files.map((file) => this.fetchFile(new URL(file, base).href)));
+    const fetched = await Promise.allSettled(files.map((file) => this.fetchFile(new URL(mediaUrlPath(file), base).href)));
     const failed = fetched.findIndex((result) => result.status === 'rejected');
     if (failed >= 0) {
       const { message } = /** @type {PromiseRejectedResult} */ (fetched[failed]).reason;

@@ -39,7 +39,11 @@ export class PassMedia {
    * @param {import('../protocol.js').Commands['passMedia']} media
    */
   set({ entries, moving }) {
-    for (const { texture } of this.textures.values()) texture.dispose();
+    for (const { texture } of this.textures.values()) {
+      texture.dispose();
+      // this thread's copies of the images, uploaded already (three.js closes none)
+      for (const image of [texture.image].flat()) image?.close?.();
+    }
     this.textures.clear();
     for (const { key, payload, sampler } of entries) this.textures.set(key, mediaTexture(payload, sampler));
     this._movingSamplers = new Map(moving.map(({ key, sampler }) => [key, sampler]));
