@@ -214,6 +214,29 @@ describe('never a silent half-render (issue 37, item 4)', () => {
     expect(recorded.stderr).toMatch(VIDEO_LINE);
   });
 
+  test('a --channelN file the browser cannot decode is said, and --strict refuses it', async () => {
+    write('reader.glsl', 'void mainImage(out vec4 c, in vec2 f) { c = texture(iChannel0, f / iResolution.xy); }\n');
+    write('garbage.png', 'not an image at all');
+    const out = await shaderproof('render', 'reader.glsl', '--channel0', 'garbage.png', '-o', 'garbage-out.png', '--size', '4x4');
+    expect(out.code, out.stderr).toBe(0);
+    expect(out.stderr.trim()).toBe(
+      'warning: reader.glsl: reader.glsl runs without some of what it asks for: iChannel0: cannot load garbage.png as an image; the channel is black',
+    );
+    const strict = await shaderproof(
+      'render',
+      'reader.glsl',
+      '--channel0',
+      'garbage.png',
+      '-o',
+      'garbage-strict.png',
+      '--size',
+      '4x4',
+      '--strict',
+    );
+    expect(strict.code).toBe(1);
+    expect(fs.existsSync(path.join(folder, 'garbage-strict.png'))).toBe(false);
+  });
+
   test('test fails a case that went without an input and writes no reference from it, unless its manifest allows it', async () => {
     write('half/half.json', HALF);
     const refused = await shaderproof('test', 'half', '--update', '--out', 'half-report');

@@ -177,13 +177,15 @@ export async function openView(app, ui, params, { hash, noticeAfterCompile, agai
   if (params.speed !== undefined) app.inputs.setSpeed(params.speed);
   app.inputs.setSchedule({ date: params.date ?? null, fps: params.fps ?? null }); // none given: real and measured
   if (params.mouse) app.inputs.setMouse(params.mouse, { start: true });
-  params.channels.forEach((url, i) => {
-    if (!url) return;
-    app.setChannel(i, url).catch((error) => {
-      console.warn(`URL parameter ${CHANNEL_PARAMS[i]}=${url} ignored: ${error.message}`);
-      ui.toast(`Could not load ${url} into iChannel${i}`);
-    });
-  });
+  const channelLoads = params.channels.map((url, i) =>
+    url
+      ? app.setChannel(i, url).catch((error) => {
+          console.warn(`URL parameter ${CHANNEL_PARAMS[i]}=${url} ignored: ${error.message}`);
+          ui.toast(`Could not load ${url} into iChannel${i}`);
+          app.emit('notes'); // the page's note says it too (channels.js failures)
+        })
+      : null,
+  );
   const opened = first.then((loaded) => {
     if (again && 'failed' in loaded && typeof loaded.failed === 'string') throw new Error(loaded.failed);
     if (loaded.notice) noticeAfterCompile(loaded.notice);
@@ -204,6 +206,7 @@ export async function openView(app, ui, params, { hash, noticeAfterCompile, agai
     return app.ready;
   }
   await compiled;
+  await Promise.all(channelLoads); // its frame is drawn with its channels, or said without them
   // the view's clock from its start, as on a fresh page: iFrame 0 at the view's iTime, cleared buffers
   await app.frames.idle();
   app.inputs.restart();
@@ -234,5 +237,6 @@ async function leaveView(app, ui, params) {
   app.canvasSize.setCap(params.cap ?? 0);
   ui.panel.setView({ scale: app.canvasSize.scale, cap: app.canvasSize.cap, sizeFixed: Boolean(app.canvasSize.fixed) });
   await Promise.all(params.channels.map((url, i) => (url || !app.channels.inUse(i) ? null : app.setChannel(i, null))));
+  app.channels.failures.fill(null); // what the view before could not load is not this view's
   app.forgetValues();
 }

@@ -33,6 +33,8 @@ export class Channels {
     this._mediaSizes = Array.from({ length: CHANNEL_COUNT }, () => /** @type {[number, number]} */ ([0, 0]));
     /** The URL of each channel's file, when it came from one. @type {Array<string | null>} */
     this.urls = Array(CHANNEL_COUNT).fill(null);
+    /** Why each channel's last file could not be had, for the page's note (null: it was). @type {Array<string | null>} */
+    this.failures = Array(CHANNEL_COUNT).fill(null);
   }
 
   /**
@@ -49,10 +51,18 @@ export class Channels {
     const device = typeof source === 'string' ? DEVICES[/** @type {keyof typeof DEVICES} */ (source)] : undefined;
     if (device) media = await MediaInput.open(device, null, device);
     else if (source !== null) {
-      const loaded = await this.load(source);
-      if (loaded instanceof ImageBitmap) image = loaded;
-      else media = await MediaInput.open(loaded.kind, loaded.blob, loaded.name);
+      try {
+        const loaded = await this.load(source);
+        if (loaded instanceof ImageBitmap) image = loaded;
+        else media = await MediaInput.open(loaded.kind, loaded.blob, loaded.name);
+      } catch (error) {
+        const name = typeof source === 'string' ? decodeURIComponent(source.split(/[?#]/)[0].split('/').pop() || source) : 'the file';
+        const why = error.message.includes(name) ? error.message : `${name}: ${error.message}`;
+        this.failures[index] = `iChannel${index}: ${why}; the channel is black`;
+        throw error;
+      }
     }
+    this.failures[index] = null;
     this.media[index]?.close();
     this.images[index] = image;
     this.media[index] = media;

@@ -123,9 +123,14 @@ function shaderNotes(model) {
  * The lines of the page's note on what the shader on screen goes without: what its loader said
  * (app.notes) and what its model asks for that the page cannot give, each once, less the media
  * the media library gave it (and with why for what it could not: inputs/media-library.js).
- * @param {{notes: string[], project: MultipassShader, media: {adjust: (lines: string[]) => string[]}}} app
+ * and the files the page's channels could not load.
+ * @param {{notes: string[], project: MultipassShader, media: {adjust: (lines: string[]) => string[]},
+ *   channels: {failures: Array<string | null>}}} app
  */
-export const missingLines = (app) => app.media.adjust([...new Set([...app.notes, ...shaderNotes(app.project)])]);
+export const missingLines = (app) => [
+  ...app.media.adjust([...new Set([...app.notes, ...shaderNotes(app.project)])]),
+  ...app.channels.failures.filter((line) => line !== null),
+];
 
 /** A plain single-pass shader: one Image tab, no channels, nothing else. @param {MultipassShader} model */
 const isPlain = (model) =>

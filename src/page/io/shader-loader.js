@@ -88,7 +88,7 @@ export async function fetchShader(url, { timeoutMs = TIMEOUTS.loadMs } = {}) {
  * @returns {Promise<ImageBitmap>} rejects with a readable reason when it cannot be had or is not an image
  */
 async function loadImage(source, { timeoutMs = TIMEOUTS.loadMs } = {}) {
-  const name = typeof source === 'string' ? source : 'name' in source ? source.name : 'the image';
+  const name = typeof source === 'string' ? shaderName(source) : 'name' in source ? source.name : 'the image';
   let blob = source;
   if (typeof source === 'string') {
     const { response, body } = await fetchOwn(source, { accept: 'image/*, */*;q=0.1', timeoutMs }, (r) => r.blob());
@@ -111,7 +111,7 @@ async function loadImage(source, { timeoutMs = TIMEOUTS.loadMs } = {}) {
  * @returns {Promise<ImageBitmap | import('../app/channels.js').MediaFile>}
  */
 export async function loadChannel(source, { timeoutMs = TIMEOUTS.loadMs } = {}) {
-  const name = typeof source === 'string' ? source : source instanceof File ? source.name : 'the file';
+  const name = typeof source === 'string' ? shaderName(source) : source instanceof File ? source.name : 'the file';
   const kind = channelKind(typeof source === 'string' ? { name: source } : { name, type: source.type });
   if (kind === 'image') return loadImage(source, { timeoutMs });
   if (typeof source !== 'string') return { kind, blob: source, name };
