@@ -26,6 +26,7 @@ import { cubeFaceOrder, mediaFiles, mediaPath, parseVolume, writeVolume } from '
 import { pixel, readPixels, sharePageAcrossTests, withPage, withServedDir } from './page-helpers.js';
 import { MUSIC_READER, checkMusic, toneSamples, wav } from './music-fixture.js';
 import { cubeLookup } from './cube-lookup.js';
+import { loadNotes } from './page-multipass-helpers.js';
 
 const BIN = path.join(REPO_ROOT, 'bin', 'shaderproof.js');
 const run = promisify(execFile);
@@ -87,6 +88,10 @@ function writeMedia(dir) {
   fs.writeFileSync(
     path.join(a, 'noise.png'),
     png(2, 2, () => [200, 100, 50]),
+  );
+  // a cubemap whose third face is not square: said, not drawn black without a word
+  mediaFiles({ kind: 'cubemap', src: '/media/a/odd.png' }).forEach((file, f) =>
+    fs.writeFileSync(path.join(dir, file), f === 2 ? png(2, 4, () => [9, 9, 9]) : png(2, 2, () => [9, 9, 9])),
   );
 }
 
@@ -303,6 +308,18 @@ describe('the site’s media from a folder, against what the test computes', () 
           await goto(`?shader=/${base}/${name}&size=${expected.length}x1&time=0&media=/${base}/media/`);
           checkRow(await readPixels(page), expected, `page, ${name}`);
         }
+        fs.writeFileSync(
+          path.join(dir, 'odd.json'),
+          shaderJson(
+            [input(0, 'cubemap', '/media/a/odd.png')],
+            'void mainImage(out vec4 c, in vec2 p) { c = texture(iChannel0, vec3(1.0, 0.0, 0.0)); }\n',
+          ),
+        );
+        await goto(`?shader=/${base}/odd.json&size=2x2&time=0&media=/${base}/media/`);
+        expect((await loadNotes(page))?.lines).toEqual([
+          "Image, iChannel0: the site's cubemap /media/a/odd.png: a cubemap's faces are square and of one size, and a/odd_2.png is 2x4 where a/odd.png is 2x2; the channel is black",
+        ]);
+
         // an edit that names the same media keeps them (nothing fetched again); a lost and
         // restored context gets them again
         const [name, json, cases] = SHADERS[0];
@@ -472,6 +489,36 @@ describe('the site’s media from a folder, against what the test computes', () 
         /--channel0 partial\/sky\.png: a cubemap's first face, with 2 of its other five beside it; sky_3\.png, sky_4\.png, sky_5\.png missing/,
       );
       expect(fs.existsSync(path.join(folder, 'gone.png'))).toBe(false);
+
+      // what a person gets wrong, each said in one line: a face other than the first, a volume
+      // that is not one, a channel the JSON fills already, a folder laid out flat, a file for a folder
+      const siteA = path.join(site, 'media', 'a');
+      /** @type {Array<[string[], number, RegExp]>} */
+      const refusals = [
+        [['two.glsl', '--channel0', path.join(siteA, 'cube_2.png')], 2, /face 2 of a cubemap; give its first face, .*cube\.png/],
+        [['two.glsl', '--channel0', 'partial/sky.png.bin'], 1, /no such file/],
+        [
+          ['cube.json', '--channel0', path.join(siteA, 'tex.png')],
+          2,
+          /--channel0 .*tex\.png: cube\.json's Image pass reads iChannel0 already \(its cubemap\)/,
+        ],
+        [['cube.json', '--media', path.join(siteA, 'tex.png')], 2, /--media .*tex\.png: a file, not a folder/],
+      ];
+      fs.writeFileSync(path.join(folder, 'partial', 'short.bin'), 'BIN');
+      refusals.push([
+        ['two.glsl', '--channel0', 'partial/short.bin'],
+        1,
+        /partial\/short\.bin: not a volume: 3 bytes, shorter than its header/,
+      ]);
+      for (const [args, code, said] of refusals) {
+        const refused = await shaderproof('render', .../** @type {string[]} */ (args), '--size', '1x1', '-o', 'refused.png');
+        expect([refused.code, refused.stderr], args.join(' ')).toEqual([code, expect.stringMatching(said)]);
+      }
+      expect(fs.existsSync(path.join(folder, 'refused.png'))).toBe(false);
+      const flat = await shaderproof('render', 'cube.json', '--media', siteA, '--size', '1x1', '-o', 'flat.png');
+      expect(flat.stderr).toMatch(
+        /warning: --media .*\/a: a\/cube\.png is not there, but .*\/a\/cube\.png is: the folder is laid out as the site's paths/,
+      );
 
       // test: --media holds for every case; without it the case fails and no reference is written
       fs.mkdirSync(path.join(folder, 'cases'));

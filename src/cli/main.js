@@ -32,12 +32,14 @@ const COMMON_FLAGS = /** @type {const} */ ({
 /** A tiled still's largest size: its RGBA bytes are held in memory whole (1 GiB). */
 const MAX_TILED_PIXELS = 2 ** 28;
 
-const MEDIA_HELP = `  --media DIR           the site's media (textures, cubemaps, volumes) a Shadertoy JSON's
-                        channels name, from DIR laid out as the site's paths: DIR/a/<hash>.jpg
-                        for /media/a/<hash>.jpg
-  --fetch-media         download what DIR lacks from shadertoy.com once, into a cache
-                        ($SHADERPROOF_MEDIA_CACHE, else ~/.cache/shaderproof/media); off
-                        unless given`;
+const MEDIA_HELP = `  --media DIR           the site's media a Shadertoy JSON's channels name (textures, cubemaps,
+                        volumes, videos, music), from DIR laid out as the site's paths:
+                        DIR/a/<hash>.jpg for /media/a/<hash>.jpg; a cubemap's other faces
+                        beside it as <hash>_1.jpg ... _5; a volume is the site's .bin
+  --fetch-media         download what DIR (or, without --media, nothing) lacks from
+                        shadertoy.com once, into a cache ($SHADERPROOF_MEDIA_CACHE, else
+                        ~/.cache/shaderproof/media), read from there after; off unless given
+                        ($SHADERPROOF_MEDIA_ORIGIN: a mirror instead of the site)`;
 
 const VIEW_HELP = `  --size WxH            canvas size in pixels (default 640x360)
   --time T              iTime in seconds, paused (default 0)
@@ -125,7 +127,8 @@ ${COMMON_HELP}`,
     usage: `${NAME} open SHADER [--port P] [--media DIR] [--fetch-media]
 
 Serves the page on SHADER (from anywhere on disk) and prints its URL; opens no browser. Saving
-the file recompiles it on every page that has it open. Ctrl-C stops.
+the file recompiles it on every page that has it open. Ctrl-C stops. With --fetch-media,
+what the shader names is downloaded when open starts (run it again for media a later save names).
 
   --port P              the port to listen on (default: a free one)
 ${MEDIA_HELP}
@@ -150,6 +153,9 @@ view, tolerance and checks:
                                "tolerance": { "threshold": 0.1, "maxDiffPixels": 0 },
                                "checks": { "deterministic": true, "halfSize": true,
                                            "maxFrameMs": 500 } } } }
+
+A case that goes without an input it asks for fails, unless allowed:
+"allowMissing": ["iChannel2", "Sound", "Image/iChannel1"].
 
 References are DIR/__references__/<case>.png, written only by --update. A case with
 "sound": {"time": T, "duration": S, "tolerance": {"rms": r, "spectrum": s}} also compares its

@@ -18,7 +18,7 @@ import os from 'node:os';
 import path from 'node:path';
 import { fromShadertoyJson, toShadertoyJson } from '../shadertoy/multipass-json.js';
 import { singlePass } from '../shadertoy/multipass.js';
-import { LIBRARY_KINDS, MOVING_LIBRARY_KINDS, mediaFiles, mediaUrlPath } from '../shadertoy/media.js';
+import { LIBRARY_KINDS, MOVING_LIBRARY_KINDS, mediaFiles, mediaUrlPath, parseVolume } from '../shadertoy/media.js';
 import { UsageError } from './view-options.js';
 import { CliError } from './session.js';
 
@@ -71,10 +71,13 @@ export async function mediaFolders(file, media, say) {
   if (!media || (!media.dir && !media.fetch)) return [];
   const cache = mediaCacheDir();
   const folders = media.dir ? [media.dir] : [];
+  if (media.dir) sayLayout(media.dir, namedMedia(file), say);
   if (!media.fetch) return folders;
   folders.push(cache);
   // what failed is tried once a run: a test case renders its shader up to five times
   const missing = namedMedia(file).filter((rel) => !failedDownloads.has(rel) && !folders.some((dir) => fs.existsSync(path.join(dir, rel))));
+  /** @type {Map<string, string[]>} why → the files it stopped */
+  const failed = new Map();
   await Promise.all(
     missing.map(async (rel) => {
       try {
@@ -82,11 +85,37 @@ export async function mediaFolders(file, media, say) {
         say(`media: downloaded /media/${rel} (${(bytes / 1024).toFixed(0)} kB) into ${cache}`);
       } catch (error) {
         failedDownloads.add(rel);
-        say(`warning: media: /media/${rel} could not be downloaded from ${mediaOrigin()}: ${error.message}`);
+        failed.set(error.message, [...(failed.get(error.message) ?? []), `/media/${rel}`]);
       }
     }),
   );
+  // one line a reason (no network fails every file alike), naming the files
+  for (const [why, files] of failed)
+    say(
+      `warning: media: ${files.length === 1 ? files[0] : `${files.length} files (${files.join(', ')})`} could not be downloaded from ${mediaOrigin()}: ${why}`,
+    );
   return folders;
+}
+
+/**
+ * Says once when --media DIR holds a shader's files but not where the site's paths put them
+ * (DIR/x.png, or DIR/media/a/x.png, for /media/a/x.png): the likeliest first mistake.
+ * @param {string} dir
+ * @param {string[]} files media-folder paths the shader names
+ * @param {(line: string) => void} say
+ */
+function sayLayout(dir, files, say) {
+  for (const rel of files) {
+    if (fs.existsSync(path.join(dir, rel))) continue;
+    const near = [path.join(dir, path.basename(rel)), path.join(dir, 'media', rel), path.join(dir, '..', rel)].find((f) =>
+      fs.existsSync(f),
+    );
+    if (!near) continue;
+    say(
+      `warning: --media ${dir}: ${rel} is not there, but ${near} is: the folder is laid out as the site's paths, ${path.join(dir, rel)} for /media/${rel}`,
+    );
+    return;
+  }
 }
 
 /** The media paths whose download failed in this process. */
@@ -136,9 +165,21 @@ function libraryKindOnDisk(file, index) {
   const name = path.basename(file);
   if (/\.bin$/i.test(file)) {
     if (!fs.existsSync(file)) throw new CliError(`${file}: no such file`);
+    try {
+      const bytes = fs.readFileSync(file);
+      parseVolume(bytes.buffer.slice(bytes.byteOffset, bytes.byteOffset + bytes.byteLength));
+    } catch (error) {
+      throw new CliError(`${file}: ${error.message} (a volume is the site's .bin format)`);
+    }
     return { kind: 'volume', files: [name] };
   }
   if (!/\.(png|jpe?g|webp|gif)$/i.test(file)) return null;
+  const face = /^(.*)_([1-5])(\.[^.]+)$/.exec(name);
+  const first = face ? `${face[1]}${face[3]}` : null;
+  if (first && fs.existsSync(path.join(path.dirname(file), first)))
+    throw new UsageError(
+      `--channel${index} ${file}: face ${face?.[2]} of a cubemap; give its first face, ${path.join(path.dirname(file), first)}`,
+    );
   // the site's names of a cubemap's other faces: sky.png, then sky_1.png … sky_5.png
   const dot = name.lastIndexOf('.');
   const faces = [1, 2, 3, 4, 5].map((n) => `${name.slice(0, dot)}_${n}${name.slice(dot)}`);
@@ -162,22 +203,31 @@ function libraryKindOnDisk(file, index) {
  *   rest: the channels left to the page (images, videos, music)
  */
 export function withLibraryChannels(file, channels) {
+  if (!channels.some(Boolean)) return null;
   const found = channels.map((f, i) => (f ? libraryKindOnDisk(f, i) : null));
-  if (!found.some(Boolean)) return null;
   const text = fs.readFileSync(file, 'utf8');
+  const json = /\.json$/i.test(file) || /^\s*[[{]/.test(text);
+  if (!json && !found.some(Boolean)) return null;
   let loaded;
   try {
-    loaded = /\.json$/i.test(file) || /^\s*[[{]/.test(text) ? fromShadertoyJson(text) : { model: singlePass(text), info: null };
+    loaded = json ? fromShadertoyJson(text) : { model: singlePass(text), info: null };
   } catch (error) {
     throw new CliError(`${file}: ${error.message}`);
   }
   const image = /** @type {import('../shadertoy/multipass.js').Pass} */ (loaded.model.passes.find((p) => p.kind === 'image'));
+  // a channel the shader's JSON fills already: the file given would go unread
+  channels.forEach((given, i) => {
+    if (given && image.channels[i])
+      throw new UsageError(
+        `--channel${i} ${given}: ${path.basename(file)}'s Image pass reads iChannel${i} already (its ${image.channels[i]?.kind})`,
+      );
+  });
+  if (!found.some(Boolean)) return null;
   /** @type {import('../engine/page-server.js').FolderMount[]} */
   const mounts = [];
   found.forEach((disk, i) => {
     if (!disk) return;
     const given = /** @type {string} */ (channels[i]);
-    if (image.channels[i]) throw new UsageError(`--channel${i} ${given}: ${path.basename(file)}'s Image pass reads iChannel${i} already`);
     mounts.push({ prefix: `channel${i}`, dir: path.dirname(path.resolve(given)), files: disk.files });
     image.channels[i] = {
       kind: disk.kind,

@@ -32,7 +32,9 @@ export async function runOpen({ values, positionals }, { stopped } = {}) {
   const folders = await mediaFolders(file, media, io.err);
   const mediaQuery = folders.length ? `&media=${server.mountFolders(folders)}` : '';
   io.out(`${server.baseUrl}/?shader=${shaderUrl.split('/').map(encodeURIComponent).join('/')}${mediaQuery}`);
-  io.err(`serving ${file}; saving it reloads it on the page. Ctrl-C stops.`);
+  io.err(
+    `serving ${file}${folders.length ? ` with the site's media from ${folders.filter((f) => typeof f === 'string').join(' and ')}` : ''}; saving it reloads it on the page. Ctrl-C stops.`,
+  );
   await (stopped ??
     new Promise((resolve) => {
       process.once('SIGINT', resolve);

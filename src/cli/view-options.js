@@ -106,7 +106,9 @@ export function readNumber(text, flag, { min = -Infinity, max = Infinity, whole 
 export function readMediaOptions(values) {
   const dir = values.media === undefined ? null : path.resolve(String(values.media));
   if (dir !== null && !(fs.existsSync(dir) && fs.statSync(dir).isDirectory()))
-    throw new UsageError(`--media ${values.media}: no such folder (give a folder laid out as the site's media: DIR/a/<hash>.jpg)`);
+    throw new UsageError(
+      `--media ${values.media}: ${fs.existsSync(dir) ? 'a file, not a folder' : 'no such folder'} (give a folder laid out as the site's media: DIR/a/<hash>.jpg)`,
+    );
   return { dir, fetch: Boolean(values['fetch-media']) };
 }
 

@@ -196,7 +196,17 @@ export class MediaLibrary {
       if (channel.kind === 'video' || channel.kind === 'music') return await MediaInput.open(channel.kind, blobs[0], files[0]);
       if (channel.kind === 'volume') return { kind: 'volume', volume: parseVolume(await blobs[0].arrayBuffer()) };
       const images = await Promise.all(blobs.map((blob) => createImageBitmap(blob, decoding(vflip))));
-      if (channel.kind === 'cubemap') return { kind: 'cubemap', faces: cubeFaceOrder(images, vflip) };
+      if (channel.kind === 'cubemap') {
+        // WebGL takes a cube's faces only square and of one size (else the cube reads black)
+        const odd = images.findIndex((image) => image.width !== image.height || image.width !== images[0].width);
+        if (odd >= 0) {
+          const size = (/** @type {ImageBitmap} */ image) => `${image.width}x${image.height}`;
+          const why = `${what}: a cubemap's faces are square and of one size, and ${files[odd]} is ${size(images[odd])} where ${files[0]} is ${size(images[0])}`;
+          for (const image of images) image.close();
+          return why;
+        }
+        return { kind: 'cubemap', faces: cubeFaceOrder(images, vflip) };
+      }
       return { kind: 'texture', image: images[0], oneChannel: isOneChannelTexture(channel.extra?.id) };
     } catch (error) {
       return `${what} cannot be read (${error.message})`;
