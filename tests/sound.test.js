@@ -14,7 +14,7 @@ import { afterAll, beforeAll, describe, expect, test } from 'vitest';
 import { builtPage } from '../src/engine/page-server.js';
 import { BLOCK_SAMPLES, SAMPLE_RATE, soundBlocks, toPcm16, toPlayed, unpackBlock } from '../src/shadertoy/sound.js';
 import { decodeWav, encodeWav } from '../src/shared/wav.js';
-import { rmsDifference, spectrumDifference } from '../src/cli/sound-compare.js';
+import { rmsDifference, spectrumDifference } from '../src/cli/test/sound-compare.js';
 import { disconnect } from './harness/page.js';
 import { REPO_ROOT } from './harness/config.js';
 import { withPage } from './page-helpers.js';

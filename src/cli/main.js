@@ -13,7 +13,7 @@ import { runOpen } from './open.js';
 import { runRecord } from './record.js';
 import { outputFormat, renderShader, renderTiled, writeFloatImage, writeImage } from './render.js';
 import { CliError, shaderKind, startSession } from './session.js';
-import { runTest } from './corpus.js';
+import { runTest } from './test/corpus.js';
 import { UsageError, VIEW_FLAGS, dateLabel, readNumber, readViewOptions } from './view-options.js';
 import { io, oneShader, sayNotes, watchdog } from './io.js';
 import { argumentError, joinDashValues } from './arguments.js';

@@ -18,7 +18,7 @@ import os from 'node:os';
 import path from 'node:path';
 import { fromShadertoyJson, toShadertoyJson } from '../shadertoy/multipass-json.js';
 import { singlePass } from '../shadertoy/multipass.js';
-import { LIBRARY_KINDS, MOVING_LIBRARY_KINDS, mediaFiles, mediaUrlPath, parseVolume } from '../shadertoy/media.js';
+import { LIBRARY_KINDS, MOVING_LIBRARY_KINDS, cubeFaceFiles, mediaFiles, mediaUrlPath, parseVolume } from '../shadertoy/media.js';
 import { UsageError } from './view-options.js';
 import { CliError } from './session.js';
 
@@ -71,11 +71,12 @@ export async function mediaFolders(file, media, say) {
   if (!media || (!media.dir && !media.fetch)) return [];
   const cache = mediaCacheDir();
   const folders = media.dir ? [media.dir] : [];
-  if (media.dir) sayLayout(media.dir, namedMedia(file), say);
+  const named = namedMedia(file);
+  if (media.dir) sayLayout(media.dir, named, say);
   if (!media.fetch) return folders;
   folders.push(cache);
   // what failed is tried once a run: a test case renders its shader up to five times
-  const missing = namedMedia(file).filter((rel) => !failedDownloads.has(rel) && !folders.some((dir) => fs.existsSync(path.join(dir, rel))));
+  const missing = named.filter((rel) => !failedDownloads.has(rel) && !folders.some((dir) => fs.existsSync(path.join(dir, rel))));
   /** @type {Map<string, string[]>} why → the files it stopped */
   const failed = new Map();
   await Promise.all(
@@ -180,9 +181,7 @@ function libraryKindOnDisk(file, index) {
     throw new UsageError(
       `--channel${index} ${file}: face ${face?.[2]} of a cubemap; give its first face, ${path.join(path.dirname(file), first)}`,
     );
-  // the site's names of a cubemap's other faces: sky.png, then sky_1.png … sky_5.png
-  const dot = name.lastIndexOf('.');
-  const faces = [1, 2, 3, 4, 5].map((n) => `${name.slice(0, dot)}_${n}${name.slice(dot)}`);
+  const [, ...faces] = cubeFaceFiles(name);
   const present = faces.filter((face) => fs.existsSync(path.join(path.dirname(file), face)));
   if (present.length === 0) return null;
   if (present.length < faces.length)

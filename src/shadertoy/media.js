@@ -70,10 +70,17 @@ export const mediaUrlPath = (path) => path.split('/').map(encodeURIComponent).jo
 export function mediaFiles({ kind, src }) {
   const path = mediaPath(src);
   if (!path) return [];
-  if (kind !== 'cubemap') return [path];
-  const dot = path.lastIndexOf('.');
-  const [stem, ext] = dot > path.lastIndexOf('/') ? [path.slice(0, dot), path.slice(dot)] : [path, ''];
-  return [path, ...[1, 2, 3, 4, 5].map((i) => `${stem}_${i}${ext}`)];
+  return kind === 'cubemap' ? cubeFaceFiles(path) : [path];
+}
+
+/**
+ * A cubemap's six files from its first: `sky.png`, then `sky_1.png` … `sky_5.png` beside it.
+ * @param {string} first a path (or a file's name) of the first face
+ */
+export function cubeFaceFiles(first) {
+  const dot = first.lastIndexOf('.');
+  const [stem, ext] = dot > first.lastIndexOf('/') ? [first.slice(0, dot), first.slice(dot)] : [first, ''];
+  return [first, ...[1, 2, 3, 4, 5].map((i) => `${stem}_${i}${ext}`)];
 }
 
 /** The kinds the media library holds that are still: uploaded once (src/page/gpu/channels/media-textures.js). */

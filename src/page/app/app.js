@@ -116,13 +116,7 @@ export class RaytracerApp extends Emitter {
       keyboard: this.keyboard,
       readsKeyboard: () => this.readsKeyboard,
       // a frame waits for the site's media its shader names (the first frame of a shader, mostly)
-      withMedia: (frame, running) => {
-        const withChannels = () => {
-          const inputs = this.channels.withMedia(frame, running);
-          return inputs instanceof Promise ? inputs.then((i) => this.media.withFrames(i, running)) : this.media.withFrames(inputs, running);
-        };
-        return this.media.pending ? this.media.ready().then(withChannels) : withChannels();
-      },
+      withMedia: (frame, running) => this.media.frameInputs(() => this.channels.withMedia(frame, running), running),
       isMultipass: () => this.isMultipass,
       hasProgram: () => this.compiles.hasProgram,
       versionOf: (serial) => this.compiles.versionOf(serial),

@@ -56,7 +56,7 @@ export class Channels {
         if (loaded instanceof ImageBitmap) image = loaded;
         else media = await MediaInput.open(loaded.kind, loaded.blob, loaded.name);
       } catch (error) {
-        const name = typeof source === 'string' ? decodeURIComponent(source.split(/[?#]/)[0].split('/').pop() || source) : 'the file';
+        const name = typeof source === 'string' ? fileName(source) : 'the file';
         const why = error.message.includes(name) ? error.message : `${name}: ${error.message}`;
         this.failures[index] = `iChannel${index}: ${why}; the channel is black`;
         throw error;
@@ -123,5 +123,15 @@ export class Channels {
   /** [width, height] of what is in each channel (0, 0 when empty, or before a moving one's first frame). */
   sizes() {
     return this.images.map((image, i) => (image ? [image.width, image.height] : this._mediaSizes[i]));
+  }
+}
+
+/** A URL's file name as a person would say it (its last segment, decoded where it can be). @param {string} url */
+function fileName(url) {
+  const last = url.split(/[?#]/)[0].split('/').pop() || url;
+  try {
+    return decodeURIComponent(last);
+  } catch {
+    return last; // a stray "%"
   }
 }

@@ -143,6 +143,21 @@ export class MediaLibrary {
     ).then((passMedia) => ({ ...frame, passMedia }));
   }
 
+  /**
+   * A frame's inputs once the shader's media are in the worker, with its videos' and music's
+   * textures at its iTime; `inputs` gives the frame's other inputs (the page's channels') after
+   * the wait: what the frame loop asks for each frame (app.js).
+   * @param {() => import('../gpu/protocol.js').FrameInputs | Promise<import('../gpu/protocol.js').FrameInputs>} inputs
+   * @param {boolean | null} running as for withFrames
+   */
+  frameInputs(inputs, running) {
+    const withOwn = () => {
+      const given = inputs();
+      return given instanceof Promise ? given.then((frame) => this.withFrames(frame, running)) : this.withFrames(given, running);
+    };
+    return this.pending ? this.ready().then(withOwn) : withOwn();
+  }
+
   /** Stops the music, when the page's clock stops. */
   silence() {
     for (const { input } of this._moving) input.follow(0, false);

@@ -53,7 +53,7 @@ export function bindChannels(step, width, height, { buffers, cube, keyboard, cha
     else if (binding.source === 'cubebuffer') texture = cube.read();
     else if (binding.source === 'keyboard') texture = keyboard;
     else if (binding.source === 'black' && media.has(mediaKey(step.pass.name, i))) {
-      const loaded = /** @type {{texture: THREE.Texture, size: [number, number, number]}} */ (media.get(mediaKey(step.pass.name, i)));
+      const loaded = /** @type {import('./media-textures.js').ChannelTexture} */ (media.get(mediaKey(step.pass.name, i)));
       texture = loaded.texture;
       size = loaded.size;
       times[i] = texture.userData.time ?? 0; // a video's or music's iChannelTime

@@ -22,8 +22,8 @@
 
 import fs from 'node:fs';
 import path from 'node:path';
-import { CliError } from './session.js';
-import { readViewOptions } from './view-options.js';
+import { CliError } from '../session.js';
+import { readViewOptions } from '../view-options.js';
 import { DEFAULT_SOUND_TOLERANCE } from './sound-compare.js';
 
 const MANIFEST = 'shaderproof.json';
@@ -62,7 +62,7 @@ const CHECK_KEYS = ['noNaN', 'deterministic', 'halfSize', 'maxFrameMs'];
  * @property {string} file
  * @property {'glsl' | 'json'} kind
  * @property {string} reference the reference PNG's path
- * @property {import('./view-options.js').ViewOptions} view
+ * @property {import('../view-options.js').ViewOptions} view
  * @property {{threshold: number, maxDiffPixels: number}} tolerance
  * @property {{noNaN?: boolean, deterministic?: boolean, halfSize?: {threshold: number, maxDiffFraction: number}, maxFrameMs?: number}} checks
  * @property {{time: number, duration: number, tolerance: {rms: number, spectrum: number}, reference: string} | null} sound
@@ -159,7 +159,7 @@ function readCase(where, entry, dir) {
   if (!Array.isArray(allowMissing) || !allowMissing.every((a) => typeof a === 'string' && a))
     fail('"allowMissing" is a list of pass names and channels, such as ["iChannel2", "Sound", "Image/iChannel1"]');
   const sound = entry.sound === undefined ? null : readSound(entry.sound, fail);
-  return { view: /** @type {import('./view-options.js').ViewOptions} */ (view), tolerance, checks, sound, allowMissing, skip };
+  return { view: /** @type {import('../view-options.js').ViewOptions} */ (view), tolerance, checks, sound, allowMissing, skip };
 }
 
 /**

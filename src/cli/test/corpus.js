@@ -9,17 +9,17 @@
 
 import fs from 'node:fs';
 import path from 'node:path';
-import { compareImages } from '../engine/compare.js';
-import { readPng, writePng } from '../engine/png.js';
-import { allowedMissing, io, watchdog } from './io.js';
+import { compareImages } from '../../engine/compare.js';
+import { readPng, writePng } from '../../engine/png.js';
+import { allowedMissing, io, watchdog } from '../io.js';
 import { findCases, readManifest, REFERENCE_DIR } from './manifest.js';
 import { junitXml } from './junit.js';
-import { renderShader } from './render.js';
-import { renderSound, writeWav } from './sound.js';
+import { renderShader } from '../render.js';
+import { renderSound, writeWav } from '../sound.js';
 import { rmsDifference, spectrumDifference } from './sound-compare.js';
-import { decodeWav } from '../shared/wav.js';
-import { CliError, startSession } from './session.js';
-import { DEFAULT_DATE, UsageError, dateLabel, readDate, readMediaOptions } from './view-options.js';
+import { decodeWav } from '../../shared/wav.js';
+import { CliError, startSession } from '../session.js';
+import { DEFAULT_DATE, UsageError, dateLabel, readDate, readMediaOptions } from '../view-options.js';
 
 /** "i/n" → {index (0-based), count}. @param {string | undefined} text */
 function readShard(text) {
@@ -49,7 +49,7 @@ function halve({ width, height, data }) {
 
 /**
  * A case's Sound tab against its reference WAV (written by --update): what failed, in words.
- * @param {import('./session.js').Session} session
+ * @param {import('../session.js').Session} session
  * @param {import('./manifest.js').TestCase} testCase
  * @param {NonNullable<import('./manifest.js').TestCase['sound']>} sound
  * @param {{update: boolean, out: string, notes: string[]}} run
@@ -89,7 +89,7 @@ async function soundCase(session, testCase, { time, duration, tolerance, referen
 /**
  * Runs one case: renders it, compares with its reference (or writes it, with --update), runs its
  * checks. Returns its outcome; throws only for a session that cannot go on.
- * @param {import('./session.js').Session} session
+ * @param {import('../session.js').Session} session
  * @param {import('./manifest.js').TestCase} testCase
  * @param {{update: boolean, out: string}} run
  */
