@@ -245,7 +245,15 @@ vec4 intersectCone(vec3 ro, vec3 rd, Cone cone, float tMax) {
     float a = dot(dPerp, dPerp) - cone.slope * cone.slope * yd * yd;
     float b = dot(oPerp, dPerp) - cone.slope * yd * rOrigin;
     float c = dot(oPerp, oPerp) - rOrigin * rOrigin;
+    // Every ray through the apex is a double root (the cone's radius and its gradient both
+    // vanish there): b^2 - a c is 0 in exact arithmetic, and in float only the rounding of its
+    // two products and their difference (within 2 ulps of the larger term, 4 EPS32). Taken as
+    // is, that rounding's sign would choose between the exact root -b/a and two roots sqrt(it)
+    // away (2e-4 at t = 3: SwiftShader and llvmpipe round it to opposite signs on the apex rays
+    // of tests/intersector-cases/cone.js). A discriminant known no better than its rounding gives
+    // roots known no better than its square root either way, so within it the double root is taken.
     float disc = b * b - a * c;
+    disc = disc > 4.0 * EPS32 * (b * b + abs(a * c)) ? disc : min(disc, 0.0);
     vec2 nearest = nearestCapped(a, b, c, disc, yo, yd, oPerp, dPerp, cone.height, cone.ra, cone.rb, min(tMax - tShift, T_INFINITY));
     float tBest = nearest.x;
     bool onBase = nearest.y == 2.0, onTop = nearest.y == 3.0;

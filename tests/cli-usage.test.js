@@ -52,6 +52,8 @@ describe('a bad flag or value: one line, exit 2, the flag named, before any brow
     ['a flag with no value', render('--size'), /--size needs a value/],
     ['a flag followed by another', render('--size', '--time', '1'), /--size needs a value/],
     ['a value to a switch', render('--gpu=yes'), /--gpu takes no value/],
+    ['an unknown renderer', render('--renderer', 'vulkan'), /--renderer vulkan: not a renderer; one of swiftshader, llvmpipe, gpu/],
+    ['--gpu with another renderer', render('--gpu', '--renderer', 'llvmpipe'), /--gpu and --renderer llvmpipe disagree: give one/],
     ['--size not WxH', render('--size', '64by36'), /--size 64by36: expected WIDTHxHEIGHT/],
     ['--size past the page', render('--size', '100000x100000'), /--size 100000x100000: one draw is at most 16384 px a side.*--tile/],
     ['--size past a tiled still', render('--size', '100000x100000', '--tile', '512'), /a tiled still is at most 256 megapixels/],

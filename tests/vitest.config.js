@@ -15,6 +15,11 @@ try {
   process.exit(1);
 }
 
+// The suite draws with SwiftShader, its goldens' renderer, unless SHADERPROOF_RENDERER names
+// another (`npm run test:llvmpipe`); the command line the tests start inherits the same, so that
+// its default (llvmpipe where Mesa is installed) does not change what the suite compares.
+process.env.SHADERPROOF_RENDERER ||= 'swiftshader';
+
 export default defineConfig({
   root: fileURLToPath(new URL('..', import.meta.url)),
   test: {

@@ -1,8 +1,9 @@
 // What every verb shares besides its session: where it prints (stdout for results, stderr for
 // progress and errors), its one SHADER argument, and the watchdog's flag.
 
-import { PRODUCTION_TIMEOUTS } from '../shared/timeouts.js';
+import { RENDERER_ENV, chooseRenderer } from '../engine/renderers.js';
 import { CliError } from './session.js';
+import { watchdogFor } from './watchdog.js';
 import { UsageError, readNumber } from './view-options.js';
 
 export const io = {
@@ -71,15 +72,53 @@ export function progressBar(unit) {
 }
 
 /**
- * The page's watchdog from --watchdog S: without it, the page's own (5 s for a band of a frame,
- * 30 s for a program's first draw, in which SwiftShader compiles it); with it, S for both.
- * @param {string | undefined} text
- * @returns {{hangMs: number, compileHangMs: number}}
+ * What a verb's session draws with and how long it waits: the renderer (--renderer, --gpu, else
+ * `fallback`: 'auto' is llvmpipe where Mesa is installed, else SwiftShader) and the watchdog
+ * (--watchdog S for every band, else the renderer's own limits: watchdog.js).
+ * @param {{renderer?: string, gpu?: boolean, watchdog?: string}} values
+ * @param {import('../engine/renderers.js').RendererName | 'auto'} fallback
  */
-export function watchdog(text) {
-  if (text === undefined) return { hangMs: PRODUCTION_TIMEOUTS.hangMs, compileHangMs: PRODUCTION_TIMEOUTS.compileHangMs };
-  const ms = readNumber(text, '--watchdog', { min: 0.1 }) * 1000;
-  return { hangMs: ms, compileHangMs: ms };
+export function sessionOptions(values, fallback) {
+  let renderer;
+  try {
+    // $SHADERPROOF_RENDERER is as if --renderer were given, unless a flag says otherwise
+    const fromEnv = values.gpu ? undefined : process.env[RENDERER_ENV] || undefined;
+    renderer = chooseRenderer({ ...values, renderer: values.renderer ?? fromEnv }, fallback);
+  } catch (error) {
+    throw new UsageError(error.message);
+  }
+  const seconds = values.watchdog === undefined ? null : readNumber(values.watchdog, '--watchdog', { min: 0.1 });
+  return { renderer, ...watchdogFor(renderer, seconds) };
+}
+
+/** A frame slower than this gets a progress line on a terminal. */
+const SLOW_FRAME_MS = 1_000;
+
+/**
+ * A session's `progress`: on a terminal, one line that says how far a slow frame has got (the
+ * rows of the pass under way, and how long the GPU has been on its band), rewritten in place and
+ * cleared when the view is done (null); nothing on a log or CI.
+ */
+export function frameProgress() {
+  let since = 0;
+  let shown = false;
+  /** @param {import('../engine/view.js').ViewProgress | null} state */
+  return (state) => {
+    if (!io.isTerminal()) return;
+    if (state === null) {
+      if (shown) process.stderr.write('\r\x1b[2K');
+      since = 0;
+      shown = false;
+      return;
+    }
+    const now = Date.now();
+    if (since === 0) since = now;
+    if (now - since < SLOW_FRAME_MS) return;
+    const band = state.band ? `, ${state.band.compiling ? 'compiling' : 'on a band'} for ${state.band.seconds.toFixed(1)} s` : '';
+    const rows = state.height ? `${state.rows}/${state.height} rows` : 'starting';
+    process.stderr.write(`\r\x1b[2Kdrawing a frame: ${rows}, ${state.bands} bands${band}`);
+    shown = true;
+  };
 }
 
 /** The one SHADER argument of a verb. @param {string[]} positionals @param {string} verb */

@@ -15,7 +15,7 @@ import { outputFormat, renderShader, renderTiled, writeFloatImage, writeImage } 
 import { CliError, shaderKind, startSession } from './session.js';
 import { runTest } from './test/corpus.js';
 import { UsageError, VIEW_FLAGS, dateLabel, readNumber, readViewOptions } from './view-options.js';
-import { io, oneShader, sayNotes, watchdog } from './io.js';
+import { frameProgress, io, oneShader, sayNotes, sessionOptions } from './io.js';
 import { argumentError, joinDashValues } from './arguments.js';
 import { MAX_PIXELS, MAX_SIZE } from '../shared/canvas-limits.js';
 import { DEFAULT_SOUND_SECONDS, MAX_SOUND_SECONDS, SOUND_SAMPLE_RATE, renderSound, wavSummary, writeWav } from './sound.js';
@@ -24,6 +24,7 @@ const NAME = 'shaderproof';
 
 const COMMON_FLAGS = /** @type {const} */ ({
   help: { type: 'boolean', short: 'h' },
+  renderer: { type: 'string' },
   gpu: { type: 'boolean' },
   watchdog: { type: 'string' },
   verbose: { type: 'boolean' },
@@ -55,9 +56,13 @@ const VIEW_HELP = `  --size WxH            canvas size in pixels (default 640x36
                         the same on every run; "now" for the real date)
 ${MEDIA_HELP}`;
 
-const COMMON_HELP = `  --gpu                 draw on this machine's GPU instead of SwiftShader
-  --watchdog S          a frame unfinished after S seconds fails (default: 5 s a band of
-                        a frame, 30 s for the first frame, which SwiftShader compiles)
+const COMMON_HELP = `  --renderer R          what draws: llvmpipe (Mesa, on the CPU: the default where Mesa is
+                        installed), swiftshader (Chromium's own, on the CPU: the default
+                        elsewhere) or gpu (this machine's GPU); $SHADERPROOF_RENDERER too
+  --gpu                 the same as --renderer gpu
+  --watchdog S          a band of a frame unfinished after S seconds fails (default 5 s,
+                        and for a program's first draw, which compiles it, 30 s on
+                        swiftshader, 60 s on llvmpipe); a frame that finishes bands goes on
   --verbose             an internal error's stack too
   -h, --help            this help`;
 
@@ -215,7 +220,7 @@ async function runRender({ values, positionals }) {
   shaderKind(file); // a file that is not a shader is said before any browser starts
   const text = fs.readFileSync(file, 'utf8');
   const started = Date.now();
-  const session = await startSession({ gpu: values.gpu, ...watchdog(values.watchdog), say: io.err });
+  const session = await startSession({ ...sessionOptions(values, 'auto'), say: io.err, progress: frameProgress() });
   try {
     const image =
       tile !== null ? await renderTiled(session, file, view, tile) : await renderShader(session, file, view, { converge, progress: true });
@@ -251,7 +256,7 @@ async function runRenderWav({ values, positionals }) {
       : readNumber(values.duration, '--duration', { min: 1 / SOUND_SAMPLE_RATE, max: MAX_SOUND_SECONDS });
   shaderKind(file);
   const started = Date.now();
-  const session = await startSession({ gpu: values.gpu, ...watchdog(values.watchdog), say: io.err });
+  const session = await startSession({ ...sessionOptions(values, 'auto'), say: io.err, progress: frameProgress() });
   try {
     const sound = await renderSound(session, file, view, { time, duration });
     sayNotes(file, sound.notes, { strict: values.strict });

@@ -4,7 +4,7 @@
 
 import { runLong } from '../engine/long-work.js';
 import { writeWhole } from '../engine/png.js';
-import { io, oneShader, progressBar, sayNotes, watchdog } from './io.js';
+import { frameProgress, io, oneShader, progressBar, sayNotes, sessionOptions } from './io.js';
 import { renderShader } from './render.js';
 import { CliError, shaderKind, startSession } from './session.js';
 import { UsageError, readNumber, readViewOptions } from './view-options.js';
@@ -29,7 +29,7 @@ export async function runRecord({ values, positionals }) {
   const fps = view.fps;
   shaderKind(file); // a file that is not a shader is said before any browser starts
   const started = Date.now();
-  const session = await startSession({ gpu: values.gpu, ...watchdog(values.watchdog), say: io.err });
+  const session = await startSession({ ...sessionOptions(values, 'auto'), say: io.err, progress: frameProgress() });
   try {
     const first = await renderShader(session, file, view); // compiles it and draws its first frame (errors said as a render's)
     sayNotes(file, first.notes, { strict: values.strict });

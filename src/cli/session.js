@@ -1,19 +1,20 @@
 // What every verb of the command line starts with: the built page served on a loopback port
-// (src/engine/page-server.js), one headless Chromium (src/engine/browser.js: SwiftShader, or with
-// --gpu the machine's GPU), and a page on it brought to each view through the same drawView as
-// the render tests (src/engine/view.js). A shader that never finishes holds SwiftShader's GPU
-// process for good (tests/page-heavy.test.js): the session then starts another browser for
-// whatever comes next.
+// (src/engine/page-server.js), one headless Chromium (src/engine/browser.js: SwiftShader,
+// llvmpipe or the machine's GPU, src/engine/renderers.js), and a page on it brought to each view
+// through the same drawView as the render tests (src/engine/view.js). A shader that never
+// finishes holds the GPU process for good (tests/page-heavy.test.js): the session then kills that
+// browser and starts another for whatever comes next.
 
 import fs from 'node:fs';
 import { rendererLabel, startBrowser } from '../engine/browser.js';
+import { killBrowser } from '../engine/watch.js';
 import { findChrome } from '../engine/chrome-path.js';
 import { builtPage, startPageServer } from '../engine/page-server.js';
 import { drawView } from '../engine/view.js';
 import { openPage } from '../engine/page-open.js';
 import { CLOSE_TIMEOUT_MS, withTimeout } from '../engine/watch.js';
 import { fromBase64 } from '../shared/pixels.js';
-import { PRODUCTION_TIMEOUTS } from '../shared/timeouts.js';
+import { WATCHDOG_LIMITS, hungLine } from './watchdog.js';
 
 /** An error the person can act on: said in one line, without a stack. */
 export class CliError extends Error {
@@ -34,7 +35,11 @@ export class CliError extends Error {
  */
 export const ENGINE_PAGE = '/engine.html';
 
-/** How long one wait on the page may take (a load, a compile, a frame): SwiftShader is slow. */
+/**
+ * How long one question to the page may take that is no frame (a load, a read-back): a drawing
+ * view is asked after every 0.1 s and bounded by the watchdog instead (view.js), so this bounds
+ * only a page that stopped answering for some other reason.
+ */
 const WAIT_MS = 120_000;
 
 /**
@@ -46,16 +51,20 @@ const WAIT_MS = 120_000;
 const STARTER = 'void mainImage(out vec4 c, in vec2 f) { c = vec4(0.0, 0.0, 0.0, 1.0); }\n';
 
 /**
- * @param {{gpu?: boolean, hangMs?: number, compileHangMs?: number, say?: (line: string) => void}} [options]
- *   hangMs: a band of a frame unfinished this long fails (the page's watchdog: src/shared/timeouts.js);
- *   compileHangMs: the same for a program's first draw, in which SwiftShader compiles it
+ * @param {{renderer?: import('../engine/renderers.js').RendererName, hangMs?: number, compileHangMs?: number,
+ *   say?: (line: string) => void, progress?: (state: import('../engine/view.js').ViewProgress | null) => void}} [options]
+ *   hangMs: a band of a frame unfinished this long fails (the watchdog: watchdog.js);
+ *   compileHangMs: the same for a program's first draw, which compiles it; progress: hears how
+ *   far each view has got, every 0.1 s while it draws
  */
 export async function startSession({
-  gpu = false,
-  hangMs = PRODUCTION_TIMEOUTS.hangMs,
-  compileHangMs = PRODUCTION_TIMEOUTS.compileHangMs,
+  renderer = 'swiftshader',
+  hangMs = WATCHDOG_LIMITS[renderer].hangMs,
+  compileHangMs = WATCHDOG_LIMITS[renderer].compileHangMs,
   say = () => {},
+  progress = () => {},
 } = {}) {
+  const limits = { hangMs, compileHangMs };
   mark('node started, modules loaded');
   let executablePath;
   try {
@@ -79,7 +88,7 @@ export async function startSession({
 
   async function browser() {
     if (chromium) return chromium;
-    chromium = await startBrowser({ gpu, executablePath, probe: false }).catch((error) => {
+    chromium = await startBrowser({ renderer, executablePath, probe: false }).catch((error) => {
       throw new CliError(error.message);
     });
     mark('chromium launched');
@@ -94,6 +103,7 @@ export async function startSession({
       baseUrl: server.baseUrl,
       query: `${ENGINE_PAGE}?shader=${starter}&size=2x2&time=0`,
       fresh: true,
+      limits,
     });
     if (started.error !== undefined) throw new CliError(`the page did not start: ${started.error}`);
     try {
@@ -112,13 +122,18 @@ export async function startSession({
     chromium = null;
     page = null;
     if (!old) return;
-    old.browser.process()?.kill('SIGKILL');
+    killBrowser(old.browser);
     await old.close().catch(() => {});
   }
 
   return {
     server,
-    /** What draws: Chromium's version and the WebGL2 renderer (`label`: without its device id). */
+    /** The watchdog's limits this session runs with. */
+    limits,
+    /**
+     * What draws: Chromium's version, the renderer's name (`rendererName`) and its WebGL2 string
+     * (`label`: without its device id).
+     */
     async environment() {
       if (!page) page = await freshPage(); // the renderer is known once a page has drawn
       const { environment } = await browser();
@@ -135,8 +150,10 @@ export async function startSession({
       const current = /** @type {import('puppeteer-core').Page} */ (page);
       let result;
       try {
-        result = await drawView(current, { baseUrl: server.baseUrl, query, fresh: false });
+        result = await drawView(current, { baseUrl: server.baseUrl, query, fresh: false, limits, progress });
+        progress(null);
       } catch (error) {
+        progress(null);
         await current.close().catch(() => {});
         page = null;
         throw new CliError(error.message.split('\n')[0]);
@@ -149,12 +166,7 @@ export async function startSession({
           await current.close().catch(() => {});
           page = null;
         }
-        const seconds = (ms) => `${ms / 1000} s`;
-        const error = new CliError(
-          failed.hung
-            ? `did not finish drawing a frame within the watchdog's ${seconds(hangMs)} (${seconds(compileHangMs)} for a first frame): it may never finish (an endless loop, or far too much work per pixel)`
-            : failed.error,
-        );
+        const error = new CliError(failed.hung ? hungLine(limits) : failed.error);
         Object.assign(error, { hung: Boolean(failed.hung), compile: Boolean(failed.compile) });
         throw error;
       }

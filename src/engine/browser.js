@@ -1,30 +1,20 @@
 // The headless Chromium that draws every picture this project makes: the test harness's
 // (tests/harness/setup.js), the scripts' (bench, accuracy, picture) and the command line's
-// (src/cli/). One list of flags, one launch, one check of who WebGL2 really is: SwiftShader by
-// default (the CPU implementation, identical on every machine that runs the same Chromium
-// build, so its pictures can be goldens), or with `gpu` the machine's own GPU, never a software
-// renderer in its place.
+// (src/cli/). One launch, one check of who WebGL2 really is: SwiftShader by default (the CPU
+// implementation, identical on every machine that runs the same Chromium build, so its pictures
+// can be goldens), Mesa's llvmpipe, or the machine's own GPU (renderers.js says what each is),
+// never another renderer in the place of the one asked for.
 
 import fs from 'node:fs';
 import os from 'node:os';
 import path from 'node:path';
 import puppeteer from 'puppeteer-core';
 import { findChrome } from './chrome-path.js';
+import { BASE_ARGS, LLVMPIPE_ARGS, SWIFTSHADER_ARGS, MESA_PACKAGES, drawnBy, findMesa, llvmpipeEnv, mesaMissingLine } from './renderers.js';
 import { closeBrowser } from './watch.js';
 
-export const CHROME_ARGS = [
-  '--no-sandbox',
-  '--use-angle=swiftshader',
-  '--enable-unsafe-swiftshader',
-  '--disable-background-networking',
-  '--disable-component-update',
-  '--disable-sync',
-  '--no-first-run',
-  '--disable-default-apps',
-  '--disable-extensions',
-  '--mute-audio',
-  '--lang=en-US',
-];
+/** SwiftShader's flags: what the goldens are drawn with, and the default of launchBrowser. */
+export const CHROME_ARGS = [...SWIFTSHADER_ARGS];
 
 /**
  * For startHarness({ gpu: true }): CHROME_ARGS without SwiftShader, plus what headless Chromium
@@ -37,7 +27,7 @@ export const GPU_CHROME_ARGS = (
   process.platform === 'linux'
     ? [['--use-angle=vulkan', '--enable-features=Vulkan', '--disable-vulkan-surface'], ['--use-angle=default']]
     : [['--use-angle=default']]
-).map((backend) => [...CHROME_ARGS.filter((arg) => !/swiftshader/i.test(arg)), '--enable-gpu', '--ignore-gpu-blocklist', ...backend]);
+).map((backend) => [...BASE_ARGS, '--enable-gpu', '--ignore-gpu-blocklist', ...backend]);
 
 const SOFTWARE_RENDERERS = /swiftshader|llvmpipe|lavapipe|softpipe|software|basic render|mesa offscreen/i;
 
@@ -101,38 +91,49 @@ async function launchOnGpu(launch, executablePath, userDataDir) {
 }
 
 /**
- * Launches headless Chromium with the harness's flags (CHROME_ARGS unless `args`), in UTC. Used
- * by startHarness, and by page.js when the run's browser is gone (crashed) and a test file needs
- * another. Without `userDataDir`, puppeteer makes a temporary profile and removes it on close.
- * @param {{args?: string[], userDataDir?: string, executablePath?: string}} [options]
+ * Launches headless Chromium with the harness's flags (CHROME_ARGS unless `args`), in UTC, with
+ * `env` added to its environment. Used by startBrowser, and by page.js when the run's browser is
+ * gone (crashed) and a test file needs another. Without `userDataDir`, puppeteer makes a
+ * temporary profile and removes it on close.
+ * @param {{args?: readonly string[], env?: Record<string, string>, userDataDir?: string, executablePath?: string}} [options]
  */
-export function launchBrowser({ args = CHROME_ARGS, userDataDir, executablePath = findChrome() } = {}) {
+export function launchBrowser({ args = CHROME_ARGS, env = {}, userDataDir, executablePath = findChrome() } = {}) {
   return puppeteer.launch({
     executablePath,
     headless: true,
     userDataDir,
     args: [...args], // a copy: puppeteer moves --enable-features out of the array it is given
     // iDate uses local time; UTC makes the frozen date the same everywhere.
-    env: { ...process.env, TZ: 'UTC' },
+    env: { ...process.env, ...env, TZ: 'UTC' },
     defaultViewport: null,
   });
 }
 
 /**
- * Throws unless `webgl` (what WebGL2 says it is, or null for no WebGL2) is what draws here:
- * SwiftShader, or with `gpu` a hardware renderer.
+ * Throws unless `webgl` (what WebGL2 says it is, or null for no WebGL2) is the renderer asked
+ * for: never another in its place, so a reference is never drawn, nor a figure measured, by
+ * something else than its label says.
  * @param {{renderer: string, version: string} | null} webgl
- * @param {{gpu: boolean, chromium: string, executablePath: string}} where
+ * @param {{renderer: import('./renderers.js').RendererName, chromium: string, executablePath: string}} where
  */
-function checkWebGL(webgl, { gpu, chromium, executablePath }) {
+function checkWebGL(webgl, { renderer, chromium, executablePath }) {
+  if (renderer === 'llvmpipe') {
+    if (webgl && drawnBy('llvmpipe', webgl.renderer)) return;
+    const got = webgl ? `WebGL2 is "${webgl.renderer}"` : 'there is no WebGL2';
+    throw new Error(
+      `llvmpipe was asked for, but ${got} in ${chromium}: ANGLE could not draw with Mesa's EGL here; ` +
+        `check Debian's ${MESA_PACKAGES.join(' ')}, or use --renderer swiftshader`,
+    );
+  }
   if (!webgl) {
     throw new Error(
       `${chromium} (${executablePath}) has no WebGL2 with flags ${CHROME_ARGS.join(' ')}. ` +
         'Every picture here needs SwiftShader WebGL2; without it a render would be blank.',
     );
   }
-  if (gpu && rendererKind(webgl.renderer) !== 'hardware') throw new Error(`WebGL2 renderer is "${webgl.renderer}", not a hardware GPU.`);
-  if (!gpu && !/swiftshader/i.test(webgl.renderer)) {
+  if (renderer === 'gpu' && rendererKind(webgl.renderer) !== 'hardware')
+    throw new Error(`WebGL2 renderer is "${webgl.renderer}", not a hardware GPU.`);
+  if (renderer === 'swiftshader' && !drawnBy('swiftshader', webgl.renderer)) {
     throw new Error(
       `WebGL2 renderer is "${webgl.renderer}", not SwiftShader. The goldens are SwiftShader renders; ` +
         'a GPU renders different pixels. Check that --use-angle=swiftshader is honoured by this Chromium.',
@@ -141,30 +142,44 @@ function checkWebGL(webgl, { gpu, chromium, executablePath }) {
 }
 
 /**
- * Launches Chromium, checked to be SwiftShader WebGL2 (or with `gpu`, a hardware GPU: for the
- * benchmark's --gpu and the command line's, never for goldens), in a profile of its own that
- * close() removes. `environment` says what draws: the Chromium version and the WebGL2
- * renderer, as every output of the command line and the goldens' ENVIRONMENT.json name it.
- * With `probe: false` (and no `gpu`) WebGL2 is not asked on a page of its own (0.45 s here):
- * the caller asks its own first page and hands the answer to verify(), which checks it and
- * fills in `environment`.
- * @param {{gpu?: boolean, executablePath?: string, probe?: boolean}} [options]
+ * Launches Chromium, checked to draw with `renderer`: SwiftShader (the default, the goldens'),
+ * Mesa's llvmpipe, or the machine's GPU (for the benchmark and a person's renders, never for
+ * goldens); `gpu: true` is the same as `renderer: 'gpu'`. It runs in a profile of its own that
+ * close() removes. `environment` says what draws: the Chromium version, the renderer's name and
+ * its WebGL2 string, as every output of the command line and the goldens' ENVIRONMENT.json name
+ * them. With `probe: false` (SwiftShader or llvmpipe) WebGL2 is not asked on a page of its own
+ * (0.45 s here): the caller asks its own first page and hands the answer to verify(), which
+ * checks it and fills in `environment`.
+ * `mesa` finds Mesa for llvmpipe (renderers.js findMesa; a test gives it another machine's).
+ * @param {{renderer?: import('./renderers.js').RendererName, gpu?: boolean, executablePath?: string, probe?: boolean,
+ *   mesa?: typeof findMesa}} [options]
  */
-export async function startBrowser({ gpu = false, executablePath = findChrome(), probe = true } = {}) {
+export async function startBrowser({
+  renderer: asked,
+  gpu = false,
+  executablePath = findChrome(),
+  probe = true,
+  mesa: findIt = findMesa,
+} = {}) {
+  const renderer = gpu ? 'gpu' : (asked ?? 'swiftshader');
+  const mesa = renderer === 'llvmpipe' ? findIt() : null;
+  if (mesa && mesa.missing.length) throw new Error(mesaMissingLine(mesa.missing));
   const userDataDir = fs.mkdtempSync(path.join(os.tmpdir(), 'raytracer-chromium-'));
   const removeProfile = () => fs.rmSync(userDataDir, { recursive: true, force: true });
   let browser;
   try {
-    const launch = (args, dataDir) => launchBrowser({ args, userDataDir: dataDir, executablePath });
-    browser = gpu ? await launchOnGpu(launch, executablePath, userDataDir) : await launch(CHROME_ARGS, userDataDir);
+    const launch = (args, dataDir, env) => launchBrowser({ args, env, userDataDir: dataDir, executablePath });
+    if (renderer === 'gpu') browser = await launchOnGpu(launch, executablePath, userDataDir);
+    else if (renderer === 'llvmpipe') browser = await launch(LLVMPIPE_ARGS, userDataDir, llvmpipeEnv(mesa?.vendorFile));
+    else browser = await launch(CHROME_ARGS, userDataDir);
     const chromium = await browser.version();
-    const environment = { chromium, renderer: '', webglVersion: '', gpu };
+    const environment = { chromium, renderer: '', webglVersion: '', rendererName: renderer, gpu: renderer === 'gpu' };
     /** @param {{renderer: string, version: string} | null} webgl */
     const verify = (webgl) => {
-      checkWebGL(webgl, { gpu, chromium, executablePath });
+      checkWebGL(webgl, { renderer, chromium, executablePath });
       Object.assign(environment, { renderer: webgl?.renderer, webglVersion: webgl?.version });
     };
-    if (probe || gpu) verify(await probeWebGL(browser));
+    if (probe || renderer === 'gpu') verify(await probeWebGL(browser));
     const opened = browser;
     const close = async () => {
       try {

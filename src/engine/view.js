@@ -22,61 +22,114 @@
  */
 
 /**
+ * The command line's watchdog (src/cli/watchdog.js), for a page that stops answering: a page whose
+ * own thread is held by the GPU (a canvas waiting on a GPU process stuck in an endless draw) can
+ * no longer run its own watchdog (the page's data-hung), nor answer. A page unanswered for longer
+ * than the band it was last on may take (`compileHangMs` for a program's first draw, `hangMs`
+ * else) has hung all the same.
+ * @typedef {{hangMs: number, compileHangMs: number}} ProgressLimits
+ */
+
+/** How often the page is asked how far the view has got. */
+const POLL_MS = 100;
+
+/**
+ * How far a view has got: `rows` of `height` drawn of the pass under way, `bands` so far, and the
+ * band the GPU is on (its `seconds`, and whether it is a program's first draw: `compiling`).
+ * @typedef {{rows: number, height: number, bands: number, band: {seconds: number, compiling: boolean} | null}} ViewProgress
+ */
+
+/**
  * Brings `page` to the view `query` and reads one frame. `fresh`: the page is loaded at
- * baseUrl + query (else it is a loaded page, and open() brings it there).
+ * baseUrl + query (else it is a loaded page, and open() brings it there). With `limits`, the
+ * page is asked how far it has got every POLL_MS, and a page that shows no progress for longer
+ * than they allow is a hang (`hung`), whether or not it still answers; `progress` hears each
+ * answer.
  * @param {import('puppeteer-core').Page} page
- * @param {{baseUrl: string, query: string, fresh: boolean}} view
+ * @param {{baseUrl: string, query: string, fresh: boolean, limits?: ProgressLimits | null,
+ *   progress?: (state: ViewProgress) => void}} view
  * @returns {Promise<DrawnView>}
  */
-export async function drawView(page, { baseUrl, query, fresh }) {
+export async function drawView(page, { baseUrl, query, fresh, limits = null, progress = () => {} }) {
   if (fresh) {
     const response = await page.goto(baseUrl + query, { waitUntil: 'load' });
     if (!response || (!response.ok() && response.status() !== 304)) return { error: `the page answered HTTP ${response?.status()}` };
     await page.waitForFunction(() => window.raytracer || document.documentElement.dataset.error, { polling: 100 });
   }
-  return page.evaluate(
-    async (opening) => {
-      const datasetError = () => document.documentElement.dataset.error;
-      if (!window.raytracer) return { error: `page error: ${datasetError()}` };
-      // the watchdog's verdict (data-hung="true": a band unfinished for TIMEOUTS.hangMs) ends
-      // the wait: a shader that never finishes never resolves `ready`
-      let stopWatching = () => {};
-      const hung = new Promise((resolve) => {
-        const id = setInterval(() => {
-          if (document.documentElement.dataset.hung === 'true') resolve('hung');
-        }, 100);
-        stopWatching = () => clearInterval(id);
-      });
-      try {
-        const opened = opening === null ? window.raytracer.ready : window.raytracer.open(opening);
-        if ((await Promise.race([opened.then(() => 'ok'), hung])) === 'hung') {
-          const alert = document.querySelector('[role="alert"]')?.textContent?.trim().replace(/\s+/g, ' ');
-          return {
-            error: `the shader did not finish drawing a frame: the watchdog gave up on it${alert ? ` ("${alert}")` : ''}`,
-            hung: true,
-          };
-        }
-      } catch (error) {
-        const report = error?.report ?? error?.message ?? String(error);
-        return { error: report, compile: Boolean(error?.report) };
-      } finally {
-        stopWatching();
-      }
-      const pixels = await window.raytracer.readPixels();
-      const canvas = /** @type {HTMLCanvasElement | null} */ (document.querySelector('canvas[data-frame]'));
-      const frame = canvas ? Number(canvas.dataset.frame) : NaN;
-      const info = window.raytracer.info();
-      const notes = /** @type {const} */ ([
-        ['load-notes', 'missing'],
-        ['value-notes', 'values'],
-      ]).flatMap(([id, kind]) => {
-        const note = document.getElementById(id);
-        if (!note) return [];
-        const text = (/** @type {Element | null} */ element) => element?.textContent?.trim().replace(/\s+/g, ' ') ?? '';
-        return [{ kind, title: text(note.querySelector('strong')), lines: [...note.querySelectorAll('li')].map(text) }];
-      });
-      return { pixels, frame, info: JSON.parse(JSON.stringify(info)), notes, datasetError: datasetError() };
+  const started = await page.evaluate(
+    (opening) => {
+      if (!window.raytracer) return `page error: ${document.documentElement.dataset.error}`;
+      const slot = { settled: /** @type {any} */ (null) };
+      /** @type {any} */ (window).__view = slot;
+      const opened = opening === null ? window.raytracer.ready : window.raytracer.open(opening);
+      opened.then(
+        () => (slot.settled = { state: 'drawn' }),
+        (error) =>
+          (slot.settled = { state: 'failed', error: error?.report ?? error?.message ?? String(error), compile: Boolean(error?.report) }),
+      );
+      return null;
     },
     fresh ? null : query,
   );
+  if (started !== null) return { error: started };
+  const outcome = await waitForView(page, limits, progress);
+  if (outcome.state === 'failed') return { error: outcome.error, compile: outcome.compile };
+  if (outcome.state === 'hung') return { error: outcome.error, hung: true };
+  return page.evaluate(async () => {
+    const pixels = await window.raytracer.readPixels();
+    const canvas = /** @type {HTMLCanvasElement | null} */ (document.querySelector('canvas[data-frame]'));
+    const frame = canvas ? Number(canvas.dataset.frame) : NaN;
+    const info = window.raytracer.info();
+    const notes = /** @type {const} */ ([
+      ['load-notes', 'missing'],
+      ['value-notes', 'values'],
+    ]).flatMap(([id, kind]) => {
+      const note = document.getElementById(id);
+      if (!note) return [];
+      const text = (/** @type {Element | null} */ element) => element?.textContent?.trim().replace(/\s+/g, ' ') ?? '';
+      return [{ kind, title: text(note.querySelector('strong')), lines: [...note.querySelectorAll('li')].map(text) }];
+    });
+    return { pixels, frame, info: JSON.parse(JSON.stringify(info)), notes, datasetError: document.documentElement.dataset.error };
+  });
+}
+
+/**
+ * Asks the page after the view drawView started until it is drawn, failed, or hung: the page's
+ * own watchdog gave up on it (data-hung), or, with `limits`, the page left a question unanswered
+ * for longer than they allow.
+ * @param {import('puppeteer-core').Page} page
+ * @param {ProgressLimits | null} limits
+ * @param {(state: ViewProgress) => void} progress
+ * @returns {Promise<{state: 'drawn'} | {state: 'failed', error: string, compile: boolean} | {state: 'hung', error: string}>}
+ */
+async function waitForView(page, limits, progress) {
+  const hung = (/** @type {string} */ said) => ({
+    state: /** @type {const} */ ('hung'),
+    error: `the shader did not finish drawing a frame: the watchdog gave up on it${said ? ` ("${said}")` : ''}`,
+  });
+  /** Whether the band last heard of is a first draw (or none has been heard of yet). */
+  let compiling = true;
+  for (;;) {
+    const asked = page.evaluate(() => {
+      const settled = /** @type {any} */ (window).__view?.settled;
+      if (settled) return settled;
+      if (document.documentElement.dataset.hung === 'true') {
+        const alert = document.querySelector('[role="alert"]')?.textContent?.trim().replace(/\s+/g, ' ') ?? '';
+        return { state: 'hung', message: alert };
+      }
+      const { progress, band } = window.raytracer.info();
+      return { state: 'running', rows: progress?.y ?? 0, height: progress?.height ?? 0, bands: progress?.bands ?? 0, band };
+    });
+    asked.catch(() => {}); // a question given up on below fails when the page is closed
+    const limit = limits ? (compiling ? limits.compileHangMs : limits.hangMs) : null;
+    const answer = await (limit === null
+      ? asked
+      : Promise.race([asked, new Promise((resolve) => setTimeout(resolve, limit + POLL_MS, null))]));
+    if (answer === null) return hung('');
+    if (answer.state === 'drawn' || answer.state === 'failed') return answer;
+    if (answer.state === 'hung') return hung(answer.message);
+    compiling = answer.band ? answer.band.compiling : answer.bands === 0;
+    progress({ rows: answer.rows, height: answer.height, bands: answer.bands, band: answer.band });
+    await new Promise((resolve) => setTimeout(resolve, POLL_MS));
+  }
 }

@@ -191,18 +191,35 @@ export function watchPage(page, browser, { waitTimeoutMs = WAIT_TIMEOUT_MS } = {
 }
 
 /**
- * Closes a browser this process launched, and kills its process if the close gets no answer
- * within CLOSE_TIMEOUT_MS: a hung browser must not keep the test run alive after its summary.
+ * Closes a browser this process launched, and kills it if the close gets no answer within
+ * CLOSE_TIMEOUT_MS: a hung browser must not keep the test run alive after its summary.
  * @param {import('puppeteer-core').Browser} browser
+ * @returns {Promise<'closed' | 'killed'>}
  */
 export async function closeBrowser(browser) {
   const limit = timer(CLOSE_TIMEOUT_MS);
   const outcome = await Promise.race([browser.close().catch(() => undefined), limit.promise]);
   limit.cancel();
-  if (outcome !== TIMED_OUT) return;
+  if (outcome !== TIMED_OUT) return 'closed';
+  killBrowser(browser);
+  return 'killed';
+}
+
+/**
+ * Kills a browser this process launched, with every process it started. Its GPU process, stuck in
+ * a draw that never ends, does not die with the browser's main process: it goes on holding a
+ * core, and the next browser on a 2-core machine crawls. Puppeteer starts Chromium as the leader
+ * of a process group of its own (detached, on POSIX), so the group is killed whole.
+ * @param {import('puppeteer-core').Browser} browser
+ */
+export function killBrowser(browser) {
   const child = browser.process();
-  console.warn(`browser.close() got no answer within ${seconds(CLOSE_TIMEOUT_MS)}; killing Chromium (pid ${child?.pid})`);
-  child?.kill('SIGKILL');
+  if (!child?.pid) return;
+  try {
+    process.kill(process.platform === 'win32' ? child.pid : -child.pid, 'SIGKILL');
+  } catch {
+    child.kill('SIGKILL');
+  }
 }
 
 /**

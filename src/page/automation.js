@@ -96,6 +96,7 @@
 //                         (null, 'compiling': a program's first draw is taking long, or
 //                         'drawing': hung), progress ({y,
 //                         height, bands}: how far the frame being drawn has got; null if none),
+//                         band ({seconds, compiling}: the band the GPU is on; null if none),
 //                         converging, stillFrames (frames since the last change)}
 //
 // The page's state is also on the page as attributes the tests wait on (page-marks.js:
@@ -363,6 +364,7 @@ export function installAutomation(app, ready, { open, recorder, ui: pageUi }) {
         hung: app.gpu.hung === 'drawing',
         watchdog: app.gpu.hung,
         progress: app.frames.progress,
+        band: app.gpu.band,
         converging: app.converge.on,
         stillFrames: app.frames.stillFrames,
       };

@@ -9,7 +9,7 @@ import { readPng, writePng } from '../../src/engine/png.js';
 import { compareImages as compareWith } from '../../src/engine/compare.js';
 import { ENVIRONMENT_FILE, GOLDEN_DIR, OUTPUT_DIR, UPDATE_COMMAND, UPDATING, rel } from './config.js';
 import { harnessContext } from './page.js';
-import { INCLUDE_AA, MAX_DIFF_FRACTION, PIXEL_THRESHOLD } from '../views.js';
+import { INCLUDE_AA, MAX_DIFF_FRACTION, PIXEL_THRESHOLD, RENDERER_MAX_DIFF_FRACTION } from '../views.js';
 
 export { readPng, writePng };
 
@@ -151,6 +151,11 @@ export function expectImagesMatch(
 /** A sentence about the environment, if it is not the one the goldens were made in. */
 function environmentNote(current) {
   if (!current || !fs.existsSync(ENVIRONMENT_FILE)) return '';
+  if (current.rendererName && current.rendererName !== 'swiftshader')
+    return (
+      `\nNote: this run draws with ${current.rendererName} ("${current.renderer}"), and the goldens are SwiftShader's: ` +
+      "if the diff shows only a rasterizer's rounding, widen its entry in tests/views.js RENDERER_MAX_DIFF_FRACTION with the measurement; never regenerate the goldens on it."
+    );
   let recorded;
   try {
     recorded = JSON.parse(fs.readFileSync(ENVIRONMENT_FILE, 'utf8'));
@@ -192,6 +197,7 @@ export async function expectMatchesGolden(name, image) {
   }
   const { environment } = await harnessContext().catch(() => ({}));
   const { diffPixels } = expectImagesMatch(name, image, readPng(golden), {
+    maxDiffFraction: RENDERER_MAX_DIFF_FRACTION[environment?.rendererName]?.[name] ?? MAX_DIFF_FRACTION,
     actualLabel: 'the render',
     expectedLabel: rel(golden),
     hint: `If the change is intended, run \`${UPDATE_COMMAND}\` and review the new goldens.${environmentNote(environment)}`,

@@ -56,9 +56,10 @@ async function connect() {
       );
       return { browser, context, own: false };
     } catch (error) {
-      const { launchBrowser } = await import('../../src/engine/browser.js');
+      const { startBrowser } = await import('../../src/engine/browser.js');
       console.warn(`The test run's Chromium is gone (${error.message}); launching another for the rest of this test file.`);
-      return { browser: await launchBrowser(), context, own: true };
+      const started = await startBrowser({ renderer: context.environment.rendererName, probe: false });
+      return { browser: started.browser, context, own: true, closeOwn: started.close };
     }
   })();
   connection = pending;
@@ -71,8 +72,8 @@ export async function disconnect() {
   if (!connection) return;
   const pending = connection;
   connection = undefined;
-  const { browser, own } = await pending.catch(() => ({ browser: undefined, own: false }));
-  if (own) await closeBrowser(browser);
+  const { browser, own, closeOwn } = await pending.catch(() => ({ browser: undefined, own: false, closeOwn: undefined }));
+  if (own) await (closeOwn ? closeOwn() : closeBrowser(browser));
   else if (browser?.connected) await withTimeout('disconnecting from Chromium', browser.disconnect(), CLOSE_TIMEOUT_MS).catch(() => {});
 }
 

@@ -10,6 +10,7 @@
 import fs from 'node:fs';
 import { ENVIRONMENT_FILE, GOLDEN_DIR, UPDATING } from './config.js';
 import { startBrowser } from '../../src/engine/browser.js';
+import { RENDERER_ENV, suiteRenderer } from '../../src/engine/renderers.js';
 import { disconnect, useHarness } from './page.js';
 import { startPageServer } from './page-server.js';
 import { CLOSE_TIMEOUT_MS, WAIT_TIMEOUT_MS, withTimeout } from '../../src/engine/watch.js';
@@ -37,14 +38,16 @@ async function warmUp(browser, baseUrl) {
 }
 
 /**
- * Starts Chromium (checked to be SwiftShader WebGL2) and the page server. Used once per run by
- * vitest's globalSetup below, and by scripts through withHarness.
- * With { gpu: true }, Chromium runs on the machine's own GPU instead (launchOnGpu: checked to be
- * a hardware renderer, else it throws): for `npm run bench -- --gpu` only, never for the goldens.
+ * Starts Chromium (checked to draw with the suite's renderer: SwiftShader, the goldens' own,
+ * unless $SHADERPROOF_RENDERER names another) and the page server. Used once per run by vitest's
+ * globalSetup below, and by scripts through withHarness. With { gpu: true }, or { renderer },
+ * that renderer instead (the GPU is checked to be a hardware one, else it throws): for the
+ * benchmark, never for writing goldens.
+ * @param {{gpu?: boolean, renderer?: import('../../src/engine/renderers.js').RendererName}} [options]
  * @returns {Promise<{context: {wsEndpoint, baseUrl, environment}, close: () => Promise<void>}>}
  */
-export async function startHarness({ gpu = false } = {}) {
-  const { browser, environment, close: closeChromium } = await startBrowser({ gpu });
+export async function startHarness({ gpu = false, renderer = gpu ? 'gpu' : suiteRenderer() } = {}) {
+  const { browser, environment, close: closeChromium } = await startBrowser({ renderer });
   const cleanups = [closeChromium];
   const close = async () => {
     for (const cleanup of cleanups.reverse()) {
@@ -69,6 +72,12 @@ export async function startHarness({ gpu = false } = {}) {
 /** vitest globalSetup: start Chromium and the page server once for the whole run. */
 export async function setup(project) {
   const { context, close } = await startHarness();
+  if (UPDATING && context.environment.rendererName !== 'swiftshader') {
+    await close();
+    throw new Error(
+      `The goldens are SwiftShader's: npm run test:update with ${RENDERER_ENV}=${context.environment.rendererName} would overwrite them with another renderer's pictures.`,
+    );
+  }
   if (UPDATING) {
     fs.mkdirSync(GOLDEN_DIR, { recursive: true });
     fs.writeFileSync(ENVIRONMENT_FILE, JSON.stringify(context.environment, null, 2) + '\n');
@@ -82,7 +91,7 @@ export async function setup(project) {
  * `body(context)` with page.js connected to it, and stops everything however the body ends.
  * @template T
  * @param {(context: {wsEndpoint, baseUrl, environment}) => Promise<T>} body
- * @param {{gpu?: boolean}} [options] as for startHarness
+ * @param {{gpu?: boolean, renderer?: import('../../src/engine/renderers.js').RendererName}} [options] as for startHarness
  * @returns {Promise<T>}
  */
 export async function withHarness(body, options) {

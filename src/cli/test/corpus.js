@@ -11,7 +11,7 @@ import fs from 'node:fs';
 import path from 'node:path';
 import { compareImages } from '../../engine/compare.js';
 import { readPng, writePng } from '../../engine/png.js';
-import { allowedMissing, io, watchdog } from '../io.js';
+import { allowedMissing, frameProgress, io, sessionOptions } from '../io.js';
 import { findCases, readManifest, REFERENCE_DIR } from './manifest.js';
 import { junitXml } from './junit.js';
 import { renderShader } from '../render.js';
@@ -203,7 +203,7 @@ export async function runTest({ values, positionals }) {
   const cases = all.filter((_, i) => i % shard.count === shard.index);
   fs.mkdirSync(out, { recursive: true });
   const started = Date.now();
-  const session = await startSession({ gpu: values.gpu, ...watchdog(values.watchdog), say: io.err });
+  const session = await startSession({ ...sessionOptions(values, 'auto'), say: io.err, progress: frameProgress() });
   const results = [];
   let environment;
   try {
