@@ -122,9 +122,11 @@ async function waitForView(page, limits, progress) {
     });
     asked.catch(() => {}); // a question given up on below fails when the page is closed
     const limit = limits ? (compiling ? limits.compileHangMs : limits.hangMs) : null;
+    let timer;
     const answer = await (limit === null
       ? asked
-      : Promise.race([asked, new Promise((resolve) => setTimeout(resolve, limit + POLL_MS, null))]));
+      : Promise.race([asked, new Promise((resolve) => (timer = setTimeout(resolve, limit + POLL_MS, null)))]));
+    clearTimeout(timer);
     if (answer === null) return hung('');
     if (answer.state === 'drawn' || answer.state === 'failed') return answer;
     if (answer.state === 'hung') return hung(answer.message);

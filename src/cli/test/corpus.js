@@ -19,6 +19,7 @@ import { renderSound, writeWav } from '../sound.js';
 import { rmsDifference, spectrumDifference } from './sound-compare.js';
 import { decodeWav } from '../../shared/wav.js';
 import { CliError, startSession } from '../session.js';
+import { drawnByDifference, drawnByNow, readDrawnBy, referenceRenderer, writeDrawnBy } from './drawn-by.js';
 import { DEFAULT_DATE, UsageError, dateLabel, readDate, readMediaOptions } from '../view-options.js';
 
 /** "i/n" → {index (0-based), count}. @param {string | undefined} text */
@@ -202,15 +203,34 @@ export async function runTest({ values, positionals }) {
   if (!all.length) throw new CliError(`${positionals[0]}: no .glsl or .json shaders in it`);
   const cases = all.filter((_, i) => i % shard.count === shard.index);
   fs.mkdirSync(out, { recursive: true });
+  const referenceDir = path.join(dir, REFERENCE_DIR);
+  let recorded;
+  try {
+    recorded = readDrawnBy(referenceDir);
+  } catch (error) {
+    throw new CliError(error.message);
+  }
+  const hasReferences = fs.existsSync(referenceDir) && fs.readdirSync(referenceDir).some((name) => name.endsWith('.png'));
+  // the references' renderer unless one is asked for (a flag, or $SHADERPROOF_RENDERER)
+  const options = sessionOptions(values, update ? 'auto' : referenceRenderer(recorded, hasReferences));
   const started = Date.now();
-  const session = await startSession({ ...sessionOptions(values, 'auto'), say: io.err, progress: frameProgress() });
+  const session = await startSession({ ...options, say: io.err, progress: frameProgress() });
   const results = [];
   let environment;
+  let now;
   try {
     environment = await session.environment();
+    now = drawnByNow(environment);
     io.err(
       `${cases.length} of ${all.length} cases${shard.count > 1 ? ` (shard ${shard.index + 1}/${shard.count})` : ''}, drawn by ${environment.label}; iDate at iTime 0: ${runDate}`,
     );
+    const was = recorded ?? (hasReferences ? { ...now, renderer: 'swiftshader', webgl: 'SwiftShader', mesa: null } : null);
+    if (!update && was && was.renderer !== now.renderer)
+      io.err(
+        `note: the references were drawn by ${was.renderer}, and this run draws with ${now.renderer} as asked: each case is compared at its manifest's tolerance`,
+      );
+    else if (!update && recorded && drawnByDifference(recorded, now))
+      io.err(`note: what draws differs from what drew the references (${referenceDir}/drawn-by.json): ${drawnByDifference(recorded, now)}`);
     for (const testCase of cases) {
       if (testCase.skip !== null) {
         results.push({
@@ -243,6 +263,7 @@ export async function runTest({ values, positionals }) {
     `${results.length - failed.length} passed, ${failed.length} failed, in ${seconds.toFixed(1)} s` +
       (failed.length ? `; images and junit.xml in ${path.relative(process.cwd(), out) || '.'}` : ''),
   );
-  if (update) io.out(`references in ${path.relative(process.cwd(), path.join(dir, REFERENCE_DIR)) || '.'}`);
+  if (update && now && results.some((r) => r.ok && !r.skipped)) writeDrawnBy(referenceDir, now);
+  if (update) io.out(`references in ${path.relative(process.cwd(), referenceDir) || '.'}`);
   return failed.length ? 1 : 0;
 }

@@ -1,0 +1,127 @@
+// The command line on both CPU rasterizers (issue 44), run as a person runs it: bin/shaderproof.js
+// in a folder of its own. llvmpipe draws the raytracer as SwiftShader does (within the tolerance
+// below) and the same bytes run to run; `render` defaults to llvmpipe where Mesa is; `test`
+// records what drew its references and draws with it, and says when a run is asked to draw with
+// another; an endless shader fails within the watchdog at every size.
+
+import { execFile } from 'node:child_process';
+import fs from 'node:fs';
+import os from 'node:os';
+import path from 'node:path';
+import { promisify } from 'node:util';
+import { afterAll, beforeAll, describe, expect, test } from 'vitest';
+import { builtPage } from '../src/engine/page-server.js';
+import { findMesa } from '../src/engine/renderers.js';
+import { REPO_ROOT, SHADER_FILE } from './harness/config.js';
+import { readPng } from './harness/images.js';
+
+const run = promisify(execFile);
+const BIN = path.join(REPO_ROOT, 'bin', 'shaderproof.js');
+
+// How far llvmpipe's raytracer may be from SwiftShader's: pixels with a channel more than 2 of
+// 255 apart, at most 0.1% (the issue's bound). Measured here at 320x180, the default view: 0.00%.
+// Both evaluate the same float32 operations; they differ in the last bits of what each rasterizer
+// is free to choose (fused multiply-adds, transcendental approximations), which moves a colour by
+// 1 level, or a pixel whose ray grazes an edge.
+const APART_LEVELS = 2;
+const MAX_APART_FRACTION = 0.001;
+
+let folder = '';
+beforeAll(async () => {
+  folder = fs.mkdtempSync(path.join(os.tmpdir(), 'shaderproof-renderers-'));
+  await builtPage();
+});
+afterAll(() => fs.rmSync(folder, { recursive: true, force: true }));
+
+/** Runs the command in the folder with no renderer in the environment: { code, stdout, stderr, seconds }. */
+async function shaderproof(...args) {
+  const started = Date.now();
+  const env = { ...process.env, SHADERPROOF_RENDERER: '' };
+  try {
+    const { stdout, stderr } = await run(process.execPath, [BIN, ...args], { cwd: folder, env, timeout: 110_000 });
+    return { code: 0, stdout, stderr, seconds: (Date.now() - started) / 1000 };
+  } catch (error) {
+    if (typeof error.code !== 'number') throw error;
+    return { code: error.code, stdout: error.stdout, stderr: error.stderr, seconds: (Date.now() - started) / 1000 };
+  }
+}
+const write = (name, text) => fs.writeFileSync(path.join(folder, name), text);
+const png = (name) => readPng(path.join(folder, name));
+
+/** The fraction of pixels with a channel more than `levels` apart. */
+function apartFraction(a, b, levels) {
+  let apart = 0;
+  for (let i = 0; i < a.data.length; i += 4) if ([0, 1, 2].some((c) => Math.abs(a.data[i + c] - b.data[i + c]) > levels)) apart++;
+  return apart / (a.width * a.height);
+}
+
+const mesa = findMesa().missing.length === 0;
+
+describe.runIf(mesa)('llvmpipe', () => {
+  test('draws the raytracer as SwiftShader does, the same bytes run to run; render defaults to it', async () => {
+    const view = ['--size', '320x180'];
+    const swift = await shaderproof('render', SHADER_FILE, '-o', 'swift.png', ...view, '--renderer', 'swiftshader');
+    expect(swift.code, swift.stderr).toBe(0);
+    expect(swift.stdout).toMatch(/SwiftShader/);
+    const first = await shaderproof('render', SHADER_FILE, '-o', 'llvm-1.png', ...view);
+    expect(first.code, first.stderr).toBe(0);
+    expect(first.stdout).toMatch(/llvm-1\.png: 320x180, ANGLE \(Mesa\/X\.org, llvmpipe/);
+    const second = await shaderproof('render', SHADER_FILE, '-o', 'llvm-2.png', ...view, '--renderer', 'llvmpipe');
+    expect(second.code, second.stderr).toBe(0);
+    expect(Buffer.compare(png('llvm-1.png').data, png('llvm-2.png').data), 'llvmpipe run to run').toBe(0);
+    const apart = apartFraction(png('llvm-1.png'), png('swift.png'), APART_LEVELS);
+    expect(apart, `pixels more than ${APART_LEVELS}/255 apart`).toBeLessThanOrEqual(MAX_APART_FRACTION);
+  });
+
+  test('test: --update records what drew the references; a later run draws with it, another is said', async () => {
+    const cases = path.join(folder, 'cases');
+    fs.mkdirSync(cases);
+    fs.writeFileSync(
+      path.join(cases, 'bands.glsl'),
+      'void mainImage(out vec4 c, in vec2 f) { c = vec4(step(0.5, fract(f.x / 8.0)), 0.25, 0.5, 1.0); }\n',
+    );
+    const updated = await shaderproof('test', 'cases', '--update', '--renderer', 'llvmpipe', '--out', 'out');
+    expect(updated.code, updated.stderr).toBe(0);
+    const drawnBy = JSON.parse(fs.readFileSync(path.join(cases, '__references__', 'drawn-by.json'), 'utf8'));
+    expect(drawnBy).toMatchObject({ renderer: 'llvmpipe', webgl: expect.stringMatching(/llvmpipe/), chromium: expect.any(String) });
+    expect(drawnBy.cpuFeatures).toEqual(expect.any(Array));
+    // no flag: the references' renderer
+    const again = await shaderproof('test', 'cases', '--out', 'out');
+    expect(again.code, again.stdout + again.stderr).toBe(0);
+    expect(again.stderr).toMatch(/drawn by ANGLE \(Mesa\/X\.org, llvmpipe/);
+    expect(again.stderr).not.toMatch(/^note:/m);
+    // another renderer, asked for: said in one line
+    const other = await shaderproof('test', 'cases', '--renderer', 'swiftshader', '--out', 'out');
+    expect(other.stderr).toMatch(/^note: the references were drawn by llvmpipe, and this run draws with swiftshader as asked/m);
+  });
+});
+
+describe('an endless shader fails within the watchdog at every size, and one case never takes a run down', () => {
+  const ENDLESS =
+    'void mainImage(out vec4 c, in vec2 f) { float s = 0.0; for (int i = 0; ; i++) { s += abs(sin(float(i) + f.x)); if (s < -1.0) break; } c = vec4(s); }\n';
+  // the watchdog's 2 s, plus Chromium's start and the kill: well inside the 120 s it took before
+  const BOUND_S = 20;
+  test.each([['320x180'], ['1280x720']])('render at %s', async (size) => {
+    write('endless.glsl', ENDLESS);
+    const out = await shaderproof(
+      'render',
+      'endless.glsl',
+      '-o',
+      'endless.png',
+      '--size',
+      size,
+      '--watchdog',
+      '2',
+      '--renderer',
+      'swiftshader',
+    );
+    expect(out.code).toBe(1);
+    expect(out.stderr.trim().split('\n')).toEqual([
+      expect.stringMatching(
+        /^shaderproof render: endless\.glsl: did not finish drawing a frame: one band of it took longer than the watchdog's 2 s;.*--watchdog S/,
+      ),
+    ]);
+    expect(out.seconds).toBeLessThan(BOUND_S);
+    expect(fs.existsSync(path.join(folder, 'endless.png'))).toBe(false);
+  });
+});
