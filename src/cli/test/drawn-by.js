@@ -11,7 +11,7 @@ import fs from 'node:fs';
 import os from 'node:os';
 import path from 'node:path';
 
-export const DRAWN_BY_FILE = 'drawn-by.json';
+const DRAWN_BY_FILE = 'drawn-by.json';
 
 /**
  * @typedef {object} DrawnBy
@@ -80,7 +80,7 @@ export function readDrawnBy(referenceDir) {
   try {
     return JSON.parse(fs.readFileSync(file, 'utf8'));
   } catch (error) {
-    throw new Error(`${file}: not valid JSON (${error.message.split('\n')[0]}); write it again with test --update`);
+    throw new Error(`${file}: not valid JSON (${error.message.split('\n')[0]}); write it again with test --update`, { cause: error });
   }
 }
 
