@@ -255,7 +255,13 @@ const SHORT_LINES = ['Paused'];
  * Lines it shows while a shader compiles, starts or plays, the longest of each kind: whole in the
  * line's room where the toolbar is 800 px wide or more (a phone's line is cut short).
  */
-const PLAYING_LINES = ['Compiling · 4 s', 'GPU 111.5 ms · 6.0 fps', '46.2 ms between frames · 21 fps', 'Drawing the first frame · 40%'];
+const PLAYING_LINES = [
+  'Compiling · 4 s',
+  'GPU 1915.6 ms · 0.4 fps',
+  '1508.5 ms between frames · 0.6 fps',
+  'Drawing the first frame · 40%',
+  'No frame for 12 s · may never finish',
+];
 
 /** The sound widgets, the frame-time line and the toolbar as laid out; which playing lines fit the line's room. */
 const soundGeometry = (page, lines) =>
