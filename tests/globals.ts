@@ -54,6 +54,8 @@ declare global {
     __sameDocument: boolean;
     /** Set by the pointer test (tests/page-shaders.test.js): the last pointer event's position. */
     __pointer: { clientX: number; clientY: number };
+    /** Set by tests/page-whole-frames.test.js: each picture the canvas was shown, as its distinct colours (at most 4). */
+    __shown: number[][];
   }
 }
 

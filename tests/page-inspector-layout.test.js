@@ -3,7 +3,8 @@
 // each part of the canvas, the readout and the comparison's box stay inside the canvas, apart,
 // with their buttons in them, and off the pinned pixel; the magnifier lies on the stage (the
 // panel beside it would clip it), beside the cursor, clear of the boxes where a side is, and
-// hides while the pointer is over a box.
+// hides while the pointer is over a box. After a click that pins a pixel (issue 45, item 11), the
+// readout comes up where the magnifier was: the magnifier moves off it, or hides.
 
 import { afterAll, describe, expect, test } from 'vitest';
 import { disconnect } from './harness/page.js';
@@ -108,6 +109,79 @@ describe('the inspector covers nothing it describes', () => {
           expect(overlap(near, g.readout), `${JSON.stringify(near)} clear of the readout ${JSON.stringify(g.readout)}`).toBe(false);
           expect(overlap(near, g.compare), `${JSON.stringify(near)} clear of the comparison ${JSON.stringify(g.compare)}`).toBe(false);
         }
+      },
+      { viewport: { width, height, deviceScaleFactor: 1 } },
+    );
+  });
+});
+
+/**
+ * Where a person clicks to pin a pixel, as fractions of the canvas (u right, v down): the
+ * readout then comes up beside the cursor, where the magnifier still is (issue 45, item 11).
+ */
+const CLICKS = [
+  [0.3, 0.45],
+  [0.2, 0.8],
+  [0.7, 0.6],
+  [0.45, 0.3],
+  [0.85, 0.85],
+  [0.6, 0.42],
+  [0.15, 0.4],
+  [0.9, 0.45],
+];
+
+describe('a pixel pinned with a click: the magnifier then covers no box', () => {
+  test.each([
+    [1280, 800],
+    [800, 600],
+  ])('at %ix%i: after each click, the magnifier and its label lie off the readout and the comparison', async (width, height) => {
+    await withPage(
+      async ({ page, goto }) => {
+        await goto('?time=0&SAMPLES=1&scale=0.5');
+        await page.evaluate(() => window.raytracer.compareWithFloat64());
+        await page.keyboard.press('KeyI'); // Inspect on
+        const { canvas } = await geometry(page);
+        let clicked = 0;
+        let beside = 0;
+        for (const [u, v] of CLICKS) {
+          const x = canvas.left + u * (canvas.right - canvas.left);
+          const y = canvas.top + v * (canvas.bottom - canvas.top);
+          await page.mouse.move(x - 10, y - 10);
+          await page.mouse.move(x, y, { steps: 3 });
+          // a click on a box is the box's: only clicks on the canvas (or the heat map over it) pin
+          if (!(await page.evaluate((px, py) => document.elementFromPoint(px, py)?.matches('#view, .heat-map'), x, y))) continue;
+          clicked++;
+          await page.mouse.down();
+          await page.mouse.up();
+          // the readout comes up and grows as its path and its float64 colour come in: each lays the boxes out
+          await page.waitForFunction(
+            ([cx, cy]) => {
+              const { pinned, readout } = window.raytracer.inspection();
+              return pinned && readout?.complete && Math.abs(readout.fragCoord[0] - cx) < 2 && Math.abs(readout.fragCoord[1] - cy) < 2;
+            },
+            { polling: 50 },
+            await page.evaluate(
+              (px, py) => {
+                const c = /** @type {HTMLCanvasElement} */ (document.getElementById('view'));
+                const r = c.getBoundingClientRect();
+                return [((px - r.left) / r.width) * c.width, c.height - ((py - r.top) / r.height) * c.height];
+              },
+              x,
+              y,
+            ),
+          );
+          const g = await geometry(page);
+          const where = `clicked at ${Math.round(x)}, ${Math.round(y)}: ${JSON.stringify(g)}`;
+          expect(g.readout && g.compare, where).toBeTruthy();
+          if (!g.loupe) continue; // hidden: it had no side clear of the boxes
+          beside++;
+          expect(overlap(g.loupe, g.readout), `${where}: the magnifier over the readout`).toBe(false);
+          expect(overlap(g.loupe, g.compare), `${where}: the magnifier over the comparison`).toBe(false);
+        }
+        expect(clicked, 'clicks that pinned a pixel (the others fell on a box)').toBeGreaterThanOrEqual(3);
+        // where the canvas has room beside the boxes, the magnifier stays beside the cursor
+        if (width >= 1280) expect(beside, 'clicks after which the magnifier showed').toBeGreaterThan(0);
+        await page.keyboard.press('KeyI');
       },
       { viewport: { width, height, deviceScaleFactor: 1 } },
     );

@@ -220,3 +220,124 @@ describe('notes, the toast and popovers cover nothing they are about', () => {
     );
   });
 });
+
+// ---- a shader with a Sound tab (issue 45, item 9) ---------------------------------------------
+
+/** A Shadertoy export with an Image tab and a Sound tab (a quiet tone). */
+const SOUND_PROJECT = JSON.stringify({
+  Shader: {
+    ver: '0.1',
+    info: { name: 'tone' },
+    renderpass: [
+      {
+        inputs: [],
+        outputs: [{ id: '4dfGRr', channel: 0 }],
+        code: 'void mainImage(out vec4 c, in vec2 f) { c = vec4(0.2, 0.4, 0.6, 1.0); }',
+        name: 'Image',
+        description: '',
+        type: 'image',
+      },
+      {
+        inputs: [],
+        outputs: [],
+        code: 'vec2 mainSound(int s, float t) { return vec2(0.1 * sin(6.2831 * 440.0 * t)); }',
+        name: 'Sound',
+        description: '',
+        type: 'sound',
+      },
+    ],
+  },
+});
+
+/** A short line of the frame-time readout (frame-readout.js): whole in the line's room at any width. */
+const SHORT_LINES = ['Paused'];
+/**
+ * Lines it shows while a shader compiles, starts or plays, the longest of each kind: whole in the
+ * line's room where the toolbar is 800 px wide or more (a phone's line is cut short).
+ */
+const PLAYING_LINES = [
+  'Compiling · 4 s',
+  'GPU 1915.6 ms · 0.4 fps',
+  '1508.5 ms between frames · 0.6 fps',
+  'Drawing the first frame · 40%',
+  'No frame for 12 s · may never finish',
+];
+
+/** The sound widgets, the frame-time line and the toolbar as laid out; which playing lines fit the line's room. */
+const soundGeometry = (page, lines) =>
+  page.evaluate((lines) => {
+    const box = (/** @type {Element | null} */ e) => {
+      if (!e || e.getClientRects().length === 0 || getComputedStyle(e).visibility === 'hidden') return null;
+      const r = e.getBoundingClientRect();
+      return { left: r.left, top: r.top, right: r.right, bottom: r.bottom, width: r.width };
+    };
+    const mute = document.querySelector('#toolbar button.sound-mute');
+    const fps = /** @type {HTMLElement} */ (document.querySelector('#toolbar .fps'));
+    const was = fps.textContent;
+    // set and measured in one task: the readout cannot redraw it in between
+    const whole = lines.map((line) => {
+      fps.textContent = line;
+      return [line, fps.scrollWidth <= fps.clientWidth];
+    });
+    fps.textContent = was;
+    return {
+      mute: box(mute),
+      muteName: mute?.getAttribute('aria-label') ?? null,
+      muteText: mute?.textContent ?? '',
+      muteIcon: Boolean(mute?.querySelector('svg')),
+      meter: box(document.querySelector('#toolbar .sound-meter')),
+      fps: box(fps),
+      whole,
+      toolbar: box(document.getElementById('toolbar')),
+      viewport: { left: 0, top: 0, right: innerWidth, bottom: innerHeight },
+    };
+  }, lines);
+
+describe('a shader with a Sound tab: its mute button and level meter crowd nothing out', () => {
+  test.each([
+    [1280, 800],
+    [800, 600],
+    [390, 844],
+  ])('at %ix%i', async (width, height) => {
+    await withPage(
+      async ({ page, goto }) => {
+        await goto(QUERY);
+        const result = await page.evaluate((json) => window.raytracer.setProject(json), SOUND_PROJECT);
+        expect(result.ok, result.error).toBe(true);
+        await page.waitForFunction(() => window.raytracer.soundState().available, { polling: 50 });
+        const where = `${width}x${height}`;
+        const s = await soundGeometry(page, [...SHORT_LINES, ...PLAYING_LINES]);
+        expect(s.mute && s.meter && s.fps, `${where}: mute, meter and frame-time line shown ${JSON.stringify(s)}`).toBeTruthy();
+        const shown = /** @type {Record<string, {left: number, top: number, right: number, bottom: number, width: number}>} */ ({
+          mute: s.mute,
+          meter: s.meter,
+          fps: s.fps,
+        });
+        for (const [what, b] of Object.entries(shown)) {
+          expect(inside(b, s.toolbar), `${where}: the ${what} inside the toolbar ${JSON.stringify(b)}`).toBe(true);
+          expect(inside(b, s.viewport), `${where}: the ${what} inside the window ${JSON.stringify(b)}`).toBe(true);
+        }
+        expect(overlaps(s.mute, s.meter) || overlaps(s.meter, s.fps) || overlaps(s.mute, s.fps), `${where}: apart`).toBe(false);
+        // the mute button: a name, and a drawn icon rather than an emoji a browser may lack a font for
+        expect(s.muteName, `${where}: the mute button's accessible name`).toBe('Mute sound');
+        expect(s.muteIcon, `${where}: the mute button's icon`).toBe(true);
+        expect(s.muteText.trim(), `${where}: no text glyph in the mute button`).toBe('');
+        // the frame-time line: its short lines whole at any width, its playing lines too from 800 px
+        for (const [line, whole] of s.whole)
+          if (SHORT_LINES.includes(line) || width >= 800) expect(whole, `${where}: "${line}" whole in ${JSON.stringify(s.fps)}`).toBe(true);
+
+        // muted: the name stays, its state is aria-pressed
+        await page.evaluate(() => window.raytracer.setMuted(true));
+        const muted = await page.$eval('#toolbar .sound-mute', (b) => [b.getAttribute('aria-label'), b.getAttribute('aria-pressed')]);
+        expect(muted).toEqual(['Mute sound', 'true']);
+        await page.evaluate(() => window.raytracer.setMuted(false));
+        // and the toolbar's own rules still hold: two rows, labels on one line, everything inside
+        const g = await toolbarGeometry(page);
+        const centres = [...new Set(g.controls.map((c) => Math.round((c.top + c.bottom) / 2 / 8)))];
+        expect(centres.length, `${where}: rows of controls ${JSON.stringify(g.controls)}`).toBeLessThanOrEqual(2);
+        for (const c of g.controls) expect(inside(c, g.toolbar), `${where}: ${c.what} inside the toolbar`).toBe(true);
+      },
+      { viewport: { width, height, deviceScaleFactor: 1 } },
+    );
+  });
+});

@@ -120,6 +120,7 @@ export class RaytracerApp extends Emitter {
       isMultipass: () => this.isMultipass,
       hasProgram: () => this.compiles.hasProgram,
       versionOf: (serial) => this.compiles.versionOf(serial),
+      onScreen: () => this.compiles.running,
       wantsFrame: (stillFrames) => this.converge.wantsFrame(stillFrames),
       emitDrawn: (frame) => this.emit('drawn', frame),
     });

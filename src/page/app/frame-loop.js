@@ -31,6 +31,7 @@ import { fitGpu } from './canvas-size.js';
  * @property {() => boolean} isMultipass whether the shader has a Common tab or a buffer
  * @property {() => boolean} hasProgram whether a shader runs (CompileJob.hasProgram)
  * @property {(serial: number) => ShaderVersion | null} versionOf the shader a frame was drawn with (CompileJob.versionOf)
+ * @property {() => ShaderVersion | null} onScreen the shader that runs now (CompileJob.running)
  * @property {(stillFrames: number) => boolean} wantsFrame whether converging wants another frame (Converge.wantsFrame)
  * @property {(frame: DrawnEvent) => void} emitDrawn the app's 'drawn' event
  */
@@ -60,6 +61,8 @@ export class FrameLoop {
     this._readBackNext = false;
     /** The last shader a frame was finished with (the watchdog goes back to it). @type {ShaderVersion | null} */
     this.lastFinished = null;
+    /** The last whole frame on the canvas: its shader's load (ShaderVersion.load) and its size. @type {{load: number | undefined, width: number, height: number} | null} */
+    this._whole = null;
 
     host.gpu.on('band', (_, band) => {
       if (band.kind !== 'frame') return;
@@ -151,9 +154,10 @@ export class FrameLoop {
     // the keyboard texture goes to the worker (and is uploaded) only for a shader that reads it
     const keyboard = host.readsKeyboard() ? host.keyboard.data.slice() : null;
     this.progress = { y: 0, height, bands: 0 };
+    const progressive = this._buildsUp(width, height);
     const send = (/** @type {FrameInputs} */ withMedia) => {
       frame = withMedia;
-      return host.gpu.ask('frame', { inputs: keyboard ? { ...frame, keyboard } : frame, readBack });
+      return host.gpu.ask('frame', { inputs: keyboard ? { ...frame, keyboard } : frame, readBack, progressive });
     };
     // a moving channel's texture at this frame's iTime first (Channels.withMedia), inside the
     // drawing this loop waits on, so that no other frame starts meanwhile; without one, the frame
@@ -186,6 +190,7 @@ export class FrameLoop {
     // the shader the worker drew it with: a compile that landed while it was drawn started the
     // frame again with the new program (gpu/protocol.js)
     this.lastFinished = host.versionOf(drawn.program) ?? this.lastFinished;
+    this._whole = { load: this.lastFinished?.load, width, height };
     // the clock when the frame was drawn, not when it was due: on a slow GPU the animation
     // frames' timestamps run ahead of the drawing
     const drawnAt = performance.now();
@@ -197,6 +202,21 @@ export class FrameLoop {
     this.stillFrames++;
     if (this.running || this._dirty) this._schedule();
     return result;
+  }
+
+  /**
+   * Whether the next frame, width × height, is shown as it builds up (the worker sends a picture
+   * of it as far as it got, four times a second). A still frame is, and so is the first frame of
+   * a newly loaded shader or of a new size while playing: there is nothing newer to show. Frames
+   * that follow one another (playing, converging) are shown only whole: one shown as it builds
+   * up lies half over the frame before it, a torn picture (issue 45).
+   * @param {number} width
+   * @param {number} height
+   */
+  _buildsUp(width, height) {
+    const whole = this._whole;
+    const shown = whole !== null && whole.width === width && whole.height === height && whole.load === this._host.onScreen()?.load;
+    return !this.running || !shown;
   }
 
   /**

@@ -64,8 +64,10 @@ import { ShaderCompileError, WebGL2UnavailableError } from './errors.js';
  *   pass of a shader, with `hostBlock` after Shadertoy's header; a failure is a ShaderCompileError
  *   and the last shader that compiled keeps running; `serial` numbers the page's compiles (each
  *   drawn frame says which it was drawn with), and one that lands after a later one is not drawn
- * @property {[{inputs: FrameInputs, readBack: boolean}, DrawnFrame]} frame a frame for the page,
- *   drawn band by band; a newer frame replaces one that has not started
+ * @property {[{inputs: FrameInputs, readBack: boolean, progressive: boolean}, DrawnFrame]} frame a
+ *   frame for the page, drawn band by band; a newer frame replaces one that has not started;
+ *   `progressive`: it is shown as it builds up (four times a second: a bitmap with a 'band'
+ *   event), else only whole (app/frame-loop.js decides)
  * @property {[{inputs: FrameInputs, width: number, height: number, allPasses: boolean, program?: 'aa-pixels'}, Uint8Array]} capture
  *   the same frame at another size, off screen (allPasses: every pass, buffers included, at their
  *   size: a recorded frame); RGBA8, rows top to bottom, alpha 1; program 'aa-pixels': the path
@@ -123,8 +125,8 @@ import { ShaderCompileError, WebGL2UnavailableError } from './errors.js';
  *   program's first draw, one quad, in which SwiftShader compiles it: render-worker.js's pump)
  * @property {{kind: 'frame' | 'capture' | 'probe' | 'compile', y: number, height: number, bitmap: ImageBitmap | null}} band
  *   the GPU finished a band of a frame or a capture (or a probe's draws, or a compiling band),
- *   `y` rows of `height` done (the last band too); now and then with a bitmap of a frame as far
- *   as it got
+ *   `y` rows of `height` done (the last band too); now and then with a bitmap of a progressive
+ *   frame as far as it got
  */
 
 /**

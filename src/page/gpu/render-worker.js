@@ -38,6 +38,7 @@ const PRESENT_EVERY_MS = 250;
  * @property {number} width
  * @property {number} height
  * @property {boolean} readBack
+ * @property {boolean} [progressive] a frame shown as it builds up (the page's 'frame' request)
  * @property {any} target the render target drawn into
  * @property {number} step the pass being drawn (an index into renderer().steps; a capture draws
  *   only the last, the Image pass, over the buffers as they are)
@@ -270,7 +271,7 @@ function bandDone(rows, ms) {
   const { height } = CubeBuffer.extent(renderer().steps[job.step], job.width, job.height);
   const done = job.y >= height;
   const now = performance.now();
-  const show = !done && job.kind === 'frame' && now - lastPresent > PRESENT_EVERY_MS;
+  const show = !done && job.kind === 'frame' && job.progressive && now - lastPresent > PRESENT_EVERY_MS;
   if (show) lastPresent = now;
   tell('band', { kind: job.kind, y: job.y, height, bitmap: show ? renderer().present() : null });
   if (!done) return;
@@ -363,12 +364,12 @@ const tell = serve(
       }
     },
 
-    frame({ inputs, readBack }) {
+    frame({ inputs, readBack, progressive }) {
       // a frame the page asks for replaces one that has not started yet
       const stale = waiting.findIndex((queued) => queued.kind === 'frame');
       if (stale >= 0) waiting.splice(stale, 1)[0].reject(new Error('replaced by a newer frame'));
       const { width, height } = inputs;
-      return enqueue({ kind: 'frame', inputs, width, height, readBack, target: renderer().frameTarget });
+      return enqueue({ kind: 'frame', inputs, width, height, readBack, progressive, target: renderer().frameTarget });
     },
 
     capture({ inputs, width, height, allPasses, program }) {

@@ -31,7 +31,7 @@ export function installInspection(app, { stage, canvas, builtinSource }) {
   const comparison = new Comparison(app, program, reference, builtinSource);
   /** The boxes the magnifier keeps clear of (set below). @type {HTMLElement[]} */
   const boxes = [];
-  const loupe = new Loupe(stage, canvas, () => [...boxes, ...notes()]);
+  const loupe = new Loupe(stage, canvas, { boxes: () => boxes, notes });
 
   /**
    * Runs the comparison (a press while one runs does nothing: it would only start again); why
@@ -56,12 +56,17 @@ export function installInspection(app, { stage, canvas, builtinSource }) {
   const panel = new InspectorPanel(stage, inspector, { compare });
   const compareView = new CompareView(stage, canvas, comparison, { pin, compare });
   boxes.push(panel.root, compareView.root);
-  const layout = new BoxLayout(stage, canvas, { readout: panel.root, compare: compareView.root, pin: loupe.marker, avoid: notes });
+  const boxLayout = new BoxLayout(stage, canvas, { readout: panel.root, compare: compareView.root, pin: loupe.marker, avoid: notes });
+  /** Lays the boxes out, and the magnifier around them (a box that moved may lie where it was). */
+  const layout = () => {
+    boxLayout.layout();
+    loupe.place();
+  };
   comparison.on('progress', () => {
     panel.setComparing(Boolean(comparison.running));
-    layout.layout();
+    layout();
   });
-  comparison.on('result', () => layout.layout());
+  comparison.on('result', layout);
 
   // In Inspect mode the canvas's clicks pin pixels: the stage hears them first (capture), and
   // iMouse (app/shadertoy-inputs.js, on the canvas) never does.
@@ -84,19 +89,19 @@ export function installInspection(app, { stage, canvas, builtinSource }) {
   /** Frames the pinned pixel, and lays the boxes out around it. */
   const mark = () => {
     loupe.mark(inspector.active ? (inspector.pinned ?? null) : null);
-    layout.layout();
+    layout();
   };
   inspector.on('mode', () => {
     stage.classList.toggle('inspecting', inspector.active);
     if (!inspector.active) loupe.follow(null);
     mark();
   });
-  inspector.on('readout', () => layout.layout()); // the readout's size changes with its text
+  inspector.on('readout', layout); // the readout's size changes with its text
   app.on('drawn', () => {
     mark();
     compareView.place();
   });
-  app.on('state', () => layout.layout()); // a note over the canvas may have come or gone
+  app.on('state', layout); // a note over the canvas may have come or gone
   window.addEventListener('resize', mark);
   new ResizeObserver(mark).observe(canvas); // the editor or the panel beside it changed its size
   window.addEventListener('keydown', (event) => {

@@ -3,6 +3,10 @@
 // under the cursor framed, its coordinates below),
 // and the pinned pixel is framed on the canvas itself. Pixels are the frame's (device pixels,
 // y from the bottom, as fragCoord counts them), mapped through the canvas's box.
+//
+// The magnifier never covers the inspector's boxes (the readout, the comparison): it lies on a
+// side of the cursor clear of them, is placed again whenever they move (a click that pins a pixel
+// brings the readout up under it: issue 45), and hides where no side is clear.
 
 import { element } from '../ui/dom.js';
 import { overlapArea, shown } from './box-layout.js';
@@ -13,6 +17,20 @@ const SPAN = 11;
 const ZOOM = 11;
 /** How far from the cursor the magnifier lies (CSS px). */
 const OFFSET = 24;
+/**
+ * The sides of the cursor the magnifier may lie on, in order of preference: below and to the
+ * right first, then the other diagonals, then straight right, left, below and above (centred).
+ */
+const SIDES = [
+  [1, 1],
+  [-1, 1],
+  [1, -1],
+  [-1, -1],
+  [1, 0],
+  [-1, 0],
+  [0, 1],
+  [0, -1],
+];
 
 /**
  * The frame pixel under a point of the page, or null outside the canvas.
@@ -33,12 +51,15 @@ export class Loupe {
   /**
    * @param {HTMLElement} stage
    * @param {HTMLCanvasElement} canvas the page's canvas
-   * @param {() => Element[]} avoid the boxes over the canvas that the magnifier keeps clear of
+   * @param {{boxes: () => Element[], notes: () => Element[]}} avoid the boxes over the canvas that
+   *   the magnifier never covers, and the notes it covers only where no side is clear of them
    */
-  constructor(stage, canvas, avoid = () => []) {
+  constructor(stage, canvas, avoid) {
     this.stage = stage;
     this.canvas = canvas;
     this.avoid = avoid;
+    /** The pointer it follows (null: none, or not over the canvas). @type {{clientX: number, clientY: number} | null} */
+    this._pointer = null;
     this.lens = element('canvas', { class: 'loupe', width: SPAN * ZOOM, height: SPAN * ZOOM, 'aria-hidden': 'true' });
     this.label = element('span', { class: 'loupe-label' });
     this.root = element('div', { class: 'loupe-box', hidden: true }, this.lens, this.label);
@@ -56,9 +77,11 @@ export class Loupe {
   follow(pointer, source = this.canvas) {
     const at = pointer && pixelAt(source, pointer.clientX, pointer.clientY);
     if (!at) {
+      this._pointer = null;
       this.root.hidden = true;
       return;
     }
+    this._pointer = { clientX: pointer.clientX, clientY: pointer.clientY };
     const { height } = source;
     const context = this._context;
     context.imageSmoothingEnabled = false;
@@ -74,42 +97,46 @@ export class Loupe {
     context.lineWidth = 1;
     context.strokeRect(half * ZOOM - 1.5, half * ZOOM - 1.5, ZOOM + 3, ZOOM + 3);
     this.label.textContent = `fragCoord ${at.x + 0.5}, ${at.y + 0.5} · click to pin`;
-    this.root.hidden = false;
-    this._place(pointer);
+    this.place();
   }
 
   /**
-   * Puts the magnifier (lens and label) beside the cursor, wholly on the stage (the panel beside
-   * it would clip it), on a side where it covers none of the boxes, or the least of them.
-   * @param {{clientX: number, clientY: number}} pointer
+   * Puts the magnifier (lens and label) beside the cursor it follows, wholly on the stage (the
+   * panel beside it would clip it), on a side where it covers none of the boxes (and the fewest
+   * notes); hides it where no side is clear of the boxes. Called again when the boxes move.
    */
-  _place(pointer) {
+  place() {
+    const pointer = this._pointer;
+    if (!pointer) return;
+    this.root.hidden = false; // measured as it would show
     const stage = this.stage.getBoundingClientRect();
     const { offsetWidth: width, offsetHeight: height } = this.root;
-    const boxes = this.avoid()
-      .filter(shown)
-      .map((e) => e.getBoundingClientRect());
+    const rects = (/** @type {Element[]} */ list) => list.filter(shown).map((e) => e.getBoundingClientRect());
+    const boxes = rects(this.avoid.boxes());
+    const notes = rects(this.avoid.notes());
     const inside = (v, size, from, to) => Math.min(to - size, Math.max(from, v));
+    const along = (/** @type {number} */ d, /** @type {number} */ at, /** @type {number} */ size) =>
+      d > 0 ? at + OFFSET : d < 0 ? at - OFFSET - size : at - size / 2;
+    /** @type {{cost: number, left: number, top: number} | null} */
     let best = null;
-    for (const [dx, dy] of [
-      [1, 1],
-      [-1, 1],
-      [1, -1],
-      [-1, -1],
-    ]) {
-      const left = inside(dx > 0 ? pointer.clientX + OFFSET : pointer.clientX - OFFSET - width, width, stage.left, stage.right);
-      const top = inside(dy > 0 ? pointer.clientY + OFFSET : pointer.clientY - OFFSET - height, height, stage.top, stage.bottom);
-      const covered = boxes.reduce((sum, b) => sum + overlapArea({ left, top, right: left + width, bottom: top + height }, b), 0);
+    for (const [dx, dy] of SIDES) {
+      const left = inside(along(dx, pointer.clientX, width), width, stage.left, stage.right);
+      const top = inside(along(dy, pointer.clientY, height), height, stage.top, stage.bottom);
+      const rect = { left, top, right: left + width, bottom: top + height };
+      if (boxes.some((b) => overlapArea(rect, b) > 0)) continue;
       // the cursor's own pixel stays in sight: a side that would cover it is the last resort
       const onCursor =
         pointer.clientX >= left && pointer.clientX <= left + width && pointer.clientY >= top && pointer.clientY <= top + height;
-      const cost = covered + (onCursor ? 1e9 : 0);
+      const cost = notes.reduce((sum, b) => sum + overlapArea(rect, b), 0) + (onCursor ? 1e9 : 0);
       if (!best || cost < best.cost) best = { cost, left, top };
       if (cost === 0) break;
     }
-    const { left, top } = /** @type {{cost: number, left: number, top: number}} */ (best); // the first corner set it
-    this.root.style.left = `${left - stage.left}px`;
-    this.root.style.top = `${top - stage.top}px`;
+    if (!best) {
+      this.root.hidden = true; // no side clear of the boxes: the pinned pixel's frame and the readout say where it is
+      return;
+    }
+    this.root.style.left = `${best.left - stage.left}px`;
+    this.root.style.top = `${best.top - stage.top}px`;
   }
 
   /**

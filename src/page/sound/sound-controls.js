@@ -1,33 +1,52 @@
-// The Sound tab's widgets in the toolbar, beside the frame-time graph: a mute button and a level
-// meter (the RMS of what plays, drawn each frame), shown only for a shader with a Sound tab; and
-// the note that says the sound waits for a first click or key (the browsers' autoplay rule).
+// The Sound tab's widgets in the toolbar, a group of their own before the frame-time graph: a
+// mute button (a drawn speaker icon, named "Mute sound", pressed while muted) and a level meter
+// (the RMS of what plays, drawn each frame), shown only for a shader with a Sound tab; and the
+// note that says the sound waits for a first click or key (the browsers' autoplay rule). The
+// toolbar is fitted again when they come or go (toolbar-fit.js): on a phone they go to the
+// second row (toolbar.css), so that the frame-time line keeps its room on the first.
 
 import { element } from '../ui/dom.js';
 import { soundNote } from '../ui/notices.js';
+import { icon } from '../ui/toolbar.js';
 import { SoundPlayer } from './player.js';
 
 /** The meter's size in pixels. */
 const METER = { width: 40, height: 24 };
 
 /**
- * Makes the player and its widgets, after `graph` (the toolbar's frame-time graph).
+ * Makes the player and its widgets, in a group of the toolbar before its frame-time graph.
  * @param {import('../app/app.js').RaytracerApp} app
- * @param {{graph: HTMLElement, stage: HTMLElement}} where
+ * @param {{toolbar: import('../ui/toolbar.js').Toolbar, stage: HTMLElement}} where
  */
-export function installSound(app, { graph, stage }) {
+export function installSound(app, { toolbar, stage }) {
   const player = new SoundPlayer(app);
-  const mute = element('button', { type: 'button', class: 'sound-mute', 'aria-pressed': 'false', title: 'Mute the Sound tab' }, '🔊');
+  const mute = element('button', {
+    type: 'button',
+    class: 'sound-mute',
+    'aria-label': 'Mute sound',
+    'aria-pressed': 'false',
+    title: 'Mute the Sound tab',
+  });
   const meter = /** @type {HTMLCanvasElement} */ (
     element('canvas', { class: 'sound-meter', width: METER.width, height: METER.height, role: 'meter', 'aria-label': 'Sound level' })
   );
-  const bar = element('span', { class: 'sound' }, mute, meter);
+  const bar = element('div', { class: 'group sound' }, mute, meter);
   bar.hidden = true;
-  graph.after(bar);
+  toolbar.meterGroup.before(bar);
   mute.addEventListener('click', () => player.setMuted(!player.muted));
 
+  /** @type {boolean | null} whether the icon shows muted (null: none yet) */
+  let drawnMuted = null;
   const show = () => {
-    bar.hidden = !player.available;
-    mute.textContent = player.muted ? '🔇' : '🔊';
+    const hidden = !player.available;
+    if (bar.hidden !== hidden) {
+      bar.hidden = hidden;
+      toolbar.fit(); // the group takes room of its own, or gives it back
+    }
+    if (drawnMuted !== player.muted) {
+      drawnMuted = player.muted;
+      mute.replaceChildren(icon(player.muted ? 'muted' : 'sound'));
+    }
     mute.setAttribute('aria-pressed', String(player.muted));
     mute.title = player.muted ? 'Unmute the Sound tab' : 'Mute the Sound tab';
     soundNote(stage, player.waiting);

@@ -30,9 +30,19 @@ const ICONS = {
     '<g fill="none" stroke="currentColor" stroke-width="1.6"><circle cx="6.5" cy="6.5" r="4.5"/><path d="M10 10l4.5 4.5M6.5 4.5v4M4.5 6.5h4"/></g>',
   compare:
     '<g stroke="currentColor" stroke-width="1.5"><path fill="none" d="M2 13.5h12M2 13.5V2.5"/><path d="M4 11l2.5-4 2.5 2 4-6" fill="none"/></g>',
+  // a speaker, with its sound waves or crossed out (the Sound tab's mute button: sound-controls.js)
+  sound:
+    '<path d="M1.5 5.5h3L8.5 2v12l-4-3.5h-3z"/><g fill="none" stroke="currentColor" stroke-width="1.4" stroke-linecap="round"><path d="M10.6 5.6a3.4 3.4 0 0 1 0 4.8M12.4 3.6a6.2 6.2 0 0 1 0 8.8"/></g>',
+  muted:
+    '<path d="M1.5 5.5h3L8.5 2v12l-4-3.5h-3z"/><path d="M10.5 5.5l4 5M14.5 5.5l-4 5" fill="none" stroke="currentColor" stroke-width="1.5" stroke-linecap="round"/>',
 };
 
-function icon(name) {
+/**
+ * One of the toolbar's icons, drawn in the text's colour (no font needed: an emoji shows as an
+ * empty box where the browser has no emoji font).
+ * @param {keyof typeof ICONS} name
+ */
+export function icon(name) {
   const span = element('span', { class: 'icon', 'aria-hidden': 'true' });
   span.innerHTML = `<svg viewBox="0 0 16 16" width="14" height="14" fill="currentColor">${ICONS[name]}</svg>`;
   return span;
@@ -172,9 +182,11 @@ export class Toolbar {
       this.fullscreenButton,
       button('Copy link', 'Copies a link that reproduces this view: shader URL, controls, mouse, time and size', 'link', actions.copyLink),
     );
+    /** The graph and the frame-time line; the Sound tab's widgets go before it (sound-controls.js). */
+    this.meterGroup = element('div', { class: 'group meter' }, this.graph, this.fpsText);
     root.append(
       element('div', { class: 'group transport' }, this.playButton, restart, resetView, this.timeSlider, this.timeText, this.speedSelect),
-      element('div', { class: 'group meter' }, this.graph, this.fpsText),
+      this.meterGroup,
       element('div', { class: 'group grow' }, this.nameText),
       outputs,
     );

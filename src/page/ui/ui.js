@@ -81,7 +81,7 @@ export function installUi(app, { builtinSource, recorder }) {
     { ...actions, toggleInspect: () => inspection.toggle(), compare: () => inspection.compare() },
     () => activity(app),
   );
-  const sound = installSound(app, { graph: toolbar.graph, stage }); // the Sound tab: player, mute, meter
+  const sound = installSound(app, { toolbar, stage }); // the Sound tab: player, mute, meter
   inspection.inspector.on('mode', () => toolbar.setInspecting(inspection.inspector.active));
   const recording = installRecordDialog(app, recorder, toolbar.root, toast);
   toolbar.fit(); // with "Record" in it
