@@ -21,9 +21,10 @@ import { CliError, startSession } from '../session.js';
 import { DEFAULT_DATE, UsageError, dateLabel, readDate, readMediaOptions, readNumber } from '../view-options.js';
 
 /**
- * The workers without --jobs: measured on this project's 2-core machine, where SwiftShader
- * already draws on both cores, two workers ran a 12-case folder in less time than one
- * (docs/shaderproof-test.md, "Workers"); more than the machine's cores only wait on each other.
+ * The workers without --jobs, measured on this project's 2-core machine (busy with other work),
+ * runs of one, two and three workers interleaved, medians compared: two were as fast as one on
+ * light cases and faster on heavier ones; three were slower than either (each worker is a
+ * Chromium to start, and SwiftShader already draws on every core). Unmeasured on more cores.
  */
 export const DEFAULT_JOBS = Math.max(1, Math.min(2, os.availableParallelism()));
 /** The most workers --jobs takes: each is a Chromium of its own. */
@@ -63,7 +64,8 @@ export async function runTest({ values, positionals }, seams = {}) {
   for (const report of ['junit.xml', 'index.html']) fs.rmSync(path.join(out, report), { force: true });
   const limits = watchdog(values.watchdog);
   const started = new Date();
-  const progress = progressLine(cases.length);
+  /** The progress line, drawn once the run's first line is out. */
+  const shown = { progress: /** @type {ReturnType<typeof progressLine> | null} */ (null) };
   let ran;
   try {
     ran = await runCases(cases, {
@@ -73,15 +75,17 @@ export async function runTest({ values, positionals }, seams = {}) {
       run: { update, out, thumbnails: reporters.has('html') },
       verbose: Boolean(values.verbose),
       say: io.err,
-      onEnvironment: ({ label }) =>
-        io.err(
-          `${cases.length} of ${all.length} cases${shard.count > 1 ? ` (shard ${shard.index + 1}/${shard.count})` : ''}, drawn by ${label}, ${jobs} worker${jobs === 1 ? '' : 's'}; iDate at iTime 0: ${runDate}`,
-        ),
-      onSettled: progress.settled,
-      onResult: (result) => reporters.has('dot') && progress.line(dotLine(result)),
+      onEnvironment: ({ label }) => {
+        const share = shard.count > 1 ? ` (shard ${shard.index + 1}/${shard.count})` : '';
+        const workers = `${jobs} worker${jobs === 1 ? '' : 's'}`;
+        io.err(`${cases.length} of ${all.length} cases${share}, drawn by ${label}, ${workers}; iDate at iTime 0: ${runDate}`);
+        shown.progress = progressLine(cases.length);
+      },
+      onSettled: (result) => shown.progress?.settled(result),
+      onResult: (result) => reporters.has('dot') && shown.progress?.line(dotLine(result)),
     });
   } finally {
-    progress.end();
+    shown.progress?.end();
   }
   const { results, environment } = ran;
   const failed = results.filter((r) => !r.ok);
