@@ -33,7 +33,8 @@ function cases(dir, names) {
  * A session as session.js makes one, without a browser: `draw` answers with a 4×4 image whose
  * colour comes from the shader's name, except for names that say otherwise: "hang" never
  * answers (and has no page to ask), "boom" throws what is not the shader's fault (a bug),
- * "slow" answers after 200 ms (so that workers finish out of order).
+ * "late" throws what a wait of the session's that ran out throws (src/engine/watch.js), "slow"
+ * answers after 200 ms (so that workers finish out of order).
  */
 function fakeSession() {
   const mounted = [];
@@ -56,6 +57,7 @@ function fakeSession() {
       const name = decodeURIComponent(/shader=[^&]*%2F([^&%]+)|shader=[^&]*\/([^&/]+)/.exec(query)?.slice(1).find(Boolean) ?? '');
       if (name.includes('hang')) return new Promise(() => {});
       if (name.includes('boom')) throw new TypeError("Cannot read properties of undefined (reading 'trim')");
+      if (name.includes('late')) throw new Error('opening a page: no answer within 120 s');
       if (name.includes('slow')) await new Promise((resolve) => setTimeout(resolve, 200));
       const shade = [...name].reduce((sum, c) => (sum * 31 + c.charCodeAt(0)) % 256, 7);
       const data = new Uint8Array(4 * 4 * 4).map((_, i) => (i % 4 === 3 ? 255 : shade));
@@ -96,7 +98,7 @@ async function run(dir, flags = {}, { silenceMs = 300, terminal = false } = {}) 
 
 describe('one case never takes a run down (issue 45, item 1)', () => {
   test('a case whose browser never answers, or whose run throws, fails with one line; the others run; every report is written', async () => {
-    const dir = cases('down', ['a-hang.glsl', 'b-ok.glsl', 'c-boom.glsl', 'd-ok.glsl']);
+    const dir = cases('down', ['a-hang.glsl', 'b-ok.glsl', 'c-boom.glsl', 'd-ok.glsl', 'e-late.glsl']);
     await run(dir, { update: true, jobs: '1' });
     const started = Date.now();
     const { code, out, report, started: sessions } = await run(dir, { jobs: '1' });
@@ -107,12 +109,16 @@ describe('one case never takes a run down (issue 45, item 1)', () => {
       'pass  b-ok.glsl',
       'FAIL  c-boom.glsl',
       'pass  d-ok.glsl',
+      'FAIL  e-late.glsl',
     ]);
-    expect(lines[0]).toMatch(/the browser stopped answering: no word from it for 0.3 s; it was replaced and the run went on$/);
+    expect(lines[0]).toMatch(/the browser stopped answering: no word from it for 0\.3 s; it was replaced and the run went on$/);
     expect(lines[2]).toMatch(
       /internal error: Cannot read properties of undefined \(reading 'trim'\) \(run again with --verbose for its stack, and report it\); the browser was replaced$/,
     );
-    expect(out.at(-1)).toMatch(/^2 passed, 2 failed, in \d+\.\d s; junit\.xml and index\.html in /);
+    expect(lines[4]).toMatch(
+      /the browser stopped answering \(opening a page: no answer within 120 s\); it was replaced and the run went on$/,
+    );
+    expect(out.at(-1)).toMatch(/^2 passed, 3 failed, in \d+\.\d s; junit\.xml and index\.html in /);
     expect(Date.now() - started, 'the hang is given up after the silence limit, not a page timeout').toBeLessThan(5_000);
     // the first session for the hang, a second for b-ok and c-boom, a third after the bug
     expect(sessions).toBe(3);
@@ -122,6 +128,7 @@ describe('one case never takes a run down (issue 45, item 1)', () => {
       'b-ok.glsl',
       'c-boom.glsl',
       'd-ok.glsl',
+      'e-late.glsl',
     ]);
     expect(fs.readFileSync(path.join(report, 'index.html'), 'utf8')).toContain('the browser stopped answering');
   });

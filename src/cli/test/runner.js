@@ -81,6 +81,9 @@ export async function runCases(cases, { jobs, start, silenceMs, run, verbose = f
       if (error instanceof CliError) return caseResult(testCase, { failures: [error.message], ms });
       if (verbose) say(String(error?.stack ?? error));
       const why = String(error?.message ?? error).split('\n')[0];
+      // a wait of the session's own that ran out (watch.js): the browser's silence, not a bug
+      if (/: no answer within /.test(why))
+        return caseResult(testCase, { failures: [`the browser stopped answering (${why}); it was replaced and the run went on`], ms });
       return caseResult(testCase, {
         failures: [`internal error: ${why} (run again with --verbose for its stack, and report it); the browser was replaced`],
         ms,
