@@ -250,7 +250,13 @@ describe('shaderproof, installed from its tarball', () => {
     );
     const update = await shaderproof(['test', 'corpus', '--update', '--out', 'report']);
     expect(update.code, update.stderr).toBe(0);
-    expect(fs.readdirSync(path.join(folder, 'corpus/__references__')).sort()).toEqual(['clock.glsl.png', 'waves.glsl.png']);
+    expect(fs.readdirSync(path.join(folder, 'corpus/__references__')).sort()).toEqual([
+      'clock.glsl.png',
+      'drawn-by.json',
+      'waves.glsl.png',
+    ]);
+    // what drew them: the suite's SwiftShader (vitest.config.js)
+    expect(JSON.parse(fs.readFileSync(path.join(folder, 'corpus/__references__/drawn-by.json'), 'utf8')).renderer).toBe('swiftshader');
     const reference = fs.readFileSync(path.join(folder, 'corpus/__references__/waves.glsl.png'));
     // one run for the two ways a case fails: a one-character change, and a shader that never
     // finishes (after which the rest still run, in a new browser)
@@ -260,7 +266,9 @@ describe('shaderproof, installed from its tarball', () => {
     const failed = await shaderproof(['test', 'corpus', '--out', 'report', '--watchdog', '2']);
     expect(failed.code).toBe(1);
     expect(failed.stdout).toMatch(/^FAIL {2}waves\.glsl .* pixels differ from the reference/m);
-    expect(failed.stdout).toMatch(/^FAIL {2}endless\.glsl .*did not finish drawing a frame: one band of it took longer than the watchdog's 2 s/m);
+    expect(failed.stdout).toMatch(
+      /^FAIL {2}endless\.glsl .*did not finish drawing a frame: one band of it took longer than the watchdog's 2 s/m,
+    );
     expect(failed.stdout, 'the clock draws what it drew in another process').toMatch(/^pass {2}clock\.glsl/m);
     expect(failed.stdout).toMatch(/1 passed, 2 failed/);
     expect(Date.now() - started, 'the run took the watchdog, not a page timeout').toBeLessThan(30_000);

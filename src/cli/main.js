@@ -13,7 +13,7 @@ import { runOpen } from './open.js';
 import { runRecord } from './record.js';
 import { outputFormat, renderShader, renderTiled, writeFloatImage, writeImage } from './render.js';
 import { CliError, shaderKind, startSession } from './session.js';
-import { runTest } from './test/corpus.js';
+import { DEFAULT_JOBS, runTest } from './test/corpus.js';
 import { UsageError, VIEW_FLAGS, dateLabel, readNumber, readViewOptions } from './view-options.js';
 import { frameProgress, io, oneShader, sayNotes, sessionOptions } from './io.js';
 import { argumentError, joinDashValues } from './arguments.js';
@@ -148,7 +148,7 @@ ${MEDIA_HELP}
   },
   test: {
     summary: 'render every shader of a folder and compare with its reference',
-    usage: `${NAME} test DIR [--update] [--shard i/n] [options]
+    usage: `${NAME} test DIR [--update] [--shard i/n] [--jobs N] [--reporter dot,junit,html] [options]
 
 Every .glsl and .json file under DIR is a case. DIR/shaderproof.json (optional) sets a case's
 view, tolerance and checks:
@@ -162,14 +162,18 @@ view, tolerance and checks:
 A case that goes without an input it asks for fails, unless allowed:
 "allowMissing": ["iChannel2", "Sound", "Image/iChannel1"].
 
-References are DIR/__references__/<case>.png, written only by --update. A case with
-"sound": {"time": T, "duration": S, "tolerance": {"rms": r, "spectrum": s}} also compares its
-Sound tab with DIR/__references__/<case>.wav (RMS of the difference, and the spectrum). A failing case leaves
-actual, reference and diff PNGs in the output folder; the run writes a JUnit XML report there
-and exits 1 when a case fails.
+A case is drawn at 320x180 unless the manifest gives a "size". References are
+DIR/__references__/<case>.png, written only by --update. A case with "sound": {"time": T,
+"duration": S, "tolerance": {"rms": r, "spectrum": s}} also compares its Sound tab with
+DIR/__references__/<case>.wav (RMS of the difference, and the spectrum). A failing case leaves
+actual, reference and diff PNGs in the output folder, and the run its reports there; it exits 1
+when a case fails. A case whose browser stops answering fails, and the run goes on in another.
 
   --update              write the references (and pass)
   --shard i/n           run the i-th of n shares of the cases (1-based)
+  --jobs N              cases drawn at once, each worker its own Chromium (default ${DEFAULT_JOBS} here)
+  --reporter R          dot (a line a case), junit (junit.xml), html (index.html, to open in a
+                        browser); repeat it or give a comma list (default: all three)
   --out DIR             output folder (default ./shaderproof-output)
   --date ISO|now        iDate at iTime 0 for cases whose manifest gives none (default
                         2024-01-15T12:00:00Z; "now" makes a clock's reference go stale)
@@ -182,6 +186,8 @@ ${COMMON_HELP}`,
       'fetch-media': { type: 'boolean' },
       update: { type: 'boolean' },
       shard: { type: 'string' },
+      jobs: { type: 'string' },
+      reporter: { type: 'string', multiple: true },
       out: { type: 'string' },
     },
     run: runTest,

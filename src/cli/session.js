@@ -85,12 +85,21 @@ export async function startSession({
   let page = null;
   /** What the current page logged as errors (page-open.js). @type {string[]} */
   let pageErrors = [];
+  /** Set by kill(): this session starts no browser again. */
+  let killed = false;
 
   async function browser() {
     if (chromium) return chromium;
-    chromium = await startBrowser({ renderer, executablePath, probe: false }).catch((error) => {
+    if (killed) throw new CliError('this session was given up: its browser stopped answering');
+    const launched = await startBrowser({ renderer, executablePath, probe: false }).catch((error) => {
       throw new CliError(error.message);
     });
+    if (killed) {
+      killBrowser(launched.browser); // killed while it launched
+      await launched.close().catch(() => {});
+      throw new CliError('this session was given up: its browser stopped answering');
+    }
+    chromium = launched;
     mark('chromium launched');
     return chromium;
   }
@@ -188,6 +197,11 @@ export async function startSession({
     page: () => page,
     /** Console errors and page errors the current page logged since the last call. */
     takeLogged: () => pageErrors.splice(0),
+    /** Kills the browser at once (it stopped answering: src/cli/test/guard.js), for good. */
+    async kill() {
+      killed = true;
+      await dropBrowser();
+    },
     async close() {
       mark('output written');
       if (page && !page.isClosed()) await withTimeout('closing the page', page.close(), CLOSE_TIMEOUT_MS).catch(() => {});

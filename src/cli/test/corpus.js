@@ -1,26 +1,35 @@
 // `shaderproof test DIR`: golden-image regression over a folder of any Shadertoy shaders. Each
 // .glsl or .json file under DIR is a case (manifest.js reads DIR/shaderproof.json for a case's
 // view, tolerance and checks); its reference is DIR/__references__/<case>.png, written by
-// --update and by nothing else (and a case with "sound", its Sound tab against <case>.wav there:
-// sound-compare.js). A case that fails leaves its actual, reference and diff PNGs in
-// the output folder; the run prints a table, writes junit.xml there, and exits 1 if any case
-// failed. A shader that does not compile, or never finishes (the watchdog), fails its own case
-// and the run goes on (session.js starts another browser after a hang).
+// --update and by nothing else (case.js runs one). The cases run on --jobs workers (runner.js),
+// each case guarded (guard.js): a shader that does not compile, never finishes or takes its
+// browser down fails its own case, and the run goes on. Whatever happens, the run ends with its
+// reports (reporters.js: the case lines, junit.xml, index.html) and a summary line, and exits 1
+// if any case failed.
 
 import fs from 'node:fs';
+import os from 'node:os';
 import path from 'node:path';
-import { compareImages } from '../../engine/compare.js';
-import { readPng, writePng } from '../../engine/png.js';
-import { allowedMissing, frameProgress, io, sessionOptions } from '../io.js';
+import { io, sessionOptions } from '../io.js';
 import { findCases, readManifest, REFERENCE_DIR } from './manifest.js';
 import { junitXml } from './junit.js';
-import { renderShader } from '../render.js';
-import { renderSound, writeWav } from '../sound.js';
-import { rmsDifference, spectrumDifference } from './sound-compare.js';
-import { decodeWav } from '../../shared/wav.js';
+import { htmlReport } from './html-report.js';
+import { dotLine, progressLine, readReporters } from './reporters.js';
+import { runCases } from './runner.js';
+import { silenceLimitMs } from './guard.js';
 import { CliError, startSession } from '../session.js';
 import { drawnByDifference, drawnByNow, readDrawnBy, referenceRenderer, writeDrawnBy } from './drawn-by.js';
-import { DEFAULT_DATE, UsageError, dateLabel, readDate, readMediaOptions } from '../view-options.js';
+import { DEFAULT_DATE, UsageError, dateLabel, readDate, readMediaOptions, readNumber } from '../view-options.js';
+
+/**
+ * The workers without --jobs, measured on this project's 2-core machine (busy with other work),
+ * runs of one, two and three workers interleaved, medians compared: two were as fast as one on
+ * light cases and faster on heavier ones; three were slower than either (each worker is a
+ * Chromium to start, and SwiftShader already draws on every core). Unmeasured on more cores.
+ */
+export const DEFAULT_JOBS = Math.max(1, Math.min(2, os.availableParallelism()));
+/** The most workers --jobs takes: each is a Chromium of its own. */
+const MAX_JOBS = 32;
 
 /** "i/n" → {index (0-based), count}. @param {string | undefined} text */
 function readShard(text) {
@@ -31,169 +40,40 @@ function readShard(text) {
   return { index: i - 1, count: n };
 }
 
-/** The engine's count of differing pixels (anti-aliased ones too), and the diff image. */
-const compare = (actual, expected, threshold) => compareImages(actual, expected, { threshold, includeAA: true });
-
-/** The image at half the size, each pixel the mean of a 2×2 block (sizes rounded down). */
-function halve({ width, height, data }) {
-  const w = Math.floor(width / 2);
-  const h = Math.floor(height / 2);
-  const out = Buffer.alloc(w * h * 4);
-  for (let y = 0; y < h; y++)
-    for (let x = 0; x < w; x++)
-      for (let c = 0; c < 4; c++) {
-        const at = (dx, dy) => data[((2 * y + dy) * width + 2 * x + dx) * 4 + c];
-        out[(y * w + x) * 4 + c] = Math.round((at(0, 0) + at(1, 0) + at(0, 1) + at(1, 1)) / 4);
-      }
-  return { width: w, height: h, data: out };
+/**
+ * Says, in one line, when this run draws with another renderer than the references' (asked for:
+ * each case is then compared at its manifest's tolerance), or when what draws differs in what can
+ * change pixels (drawn-by.js).
+ * @param {import('./drawn-by.js').DrawnBy | null} recorded
+ * @param {boolean} hasReferences
+ * @param {import('./drawn-by.js').DrawnBy} now
+ * @param {{update: boolean, referenceDir: string}} run
+ */
+function sayDrawnBy(recorded, hasReferences, now, { update, referenceDir }) {
+  if (update) return;
+  const was = recorded?.renderer ?? (hasReferences ? 'swiftshader' : null);
+  if (was && was !== now.renderer)
+    io.err(
+      `note: the references were drawn by ${was}, and this run draws with ${now.renderer} as asked: each case is compared at its manifest's tolerance`,
+    );
+  else if (recorded && drawnByDifference(recorded, now))
+    io.err(
+      `note: what draws differs from what drew the references (${path.join(referenceDir, 'drawn-by.json')}): ${drawnByDifference(recorded, now)}`,
+    );
 }
 
 /**
- * A case's Sound tab against its reference WAV (written by --update): what failed, in words.
- * @param {import('../session.js').Session} session
- * @param {import('./manifest.js').TestCase} testCase
- * @param {NonNullable<import('./manifest.js').TestCase['sound']>} sound
- * @param {{update: boolean, out: string, notes: string[]}} run
+ * @param {{values: Record<string, any>, positionals: string[]}} args
+ * @param {{start?: typeof startSession, silenceMs?: number}} [seams] for the tests: how a
+ *   session starts, and guard.js's limit (else silenceLimitMs of the watchdog)
  */
-async function soundCase(session, testCase, { time, duration, tolerance, reference }, { update, out, notes }) {
-  const actual = await renderSound(session, testCase.file, testCase.view, { time, duration });
-  const actualFile = path.join(out, `${testCase.name}-actual.wav`);
-  fs.rmSync(actualFile, { force: true });
-  if (update) {
-    writeWav(reference, actual);
-    notes.push('sound reference written');
-    return [];
-  }
-  if (!fs.existsSync(reference)) {
-    writeWav(actualFile, actual);
-    return [`no sound reference at ${reference}: run with --update to write it`];
-  }
-  const expected = decodeWav(new Uint8Array(fs.readFileSync(reference)));
-  const failures = [];
-  if (expected.sampleRate !== actual.sampleRate || expected.channels !== 2)
-    failures.push(
-      `the sound reference is ${expected.channels} channels at ${expected.sampleRate} Hz, not stereo at ${actual.sampleRate} Hz`,
-    );
-  const rms = rmsDifference(actual.pcm, expected.pcm);
-  const spectrum = spectrumDifference(actual.pcm, expected.pcm);
-  notes.push(`sound: RMS difference ${rms.toExponential(2)}, spectrum ${(spectrum * 100).toFixed(2)}%`);
-  if (rms > tolerance.rms)
-    failures.push(`sound: the RMS difference from the reference is ${rms.toExponential(2)} (at most ${tolerance.rms})`);
-  if (spectrum > tolerance.spectrum)
-    failures.push(
-      `sound: the spectrum differs from the reference's by ${(spectrum * 100).toFixed(2)}% (at most ${tolerance.spectrum * 100}%)`,
-    );
-  if (failures.length) writeWav(actualFile, actual);
-  return failures;
-}
-
-/**
- * Runs one case: renders it, compares with its reference (or writes it, with --update), runs its
- * checks. Returns its outcome; throws only for a session that cannot go on.
- * @param {import('../session.js').Session} session
- * @param {import('./manifest.js').TestCase} testCase
- * @param {{update: boolean, out: string}} run
- */
-async function runCase(session, testCase, { update, out }) {
-  const started = Date.now();
-  const failures = [];
-  const notes = [];
-  const outFile = (suffix) => path.join(out, `${testCase.name}-${suffix}.png`);
-  for (const suffix of ['actual', 'reference', 'diff', 'half']) fs.rmSync(outFile(suffix), { force: true });
-  let image;
-  try {
-    image = await renderShader(session, testCase.file, testCase.view);
-  } catch (error) {
-    if (!(error instanceof CliError || error instanceof UsageError)) throw error;
-    return { name: testCase.name, ok: false, failures: [error.message], notes, ms: Date.now() - started, diffPixels: null };
-  }
-  // a render that went without an input or a pass is no reference, nor a pass, unless allowed
-  const missing = image.notes.filter((n) => n.kind === 'missing').flatMap((n) => n.lines);
-  const unallowed = missing.filter((line) => !allowedMissing(line, testCase.allowMissing));
-  for (const line of missing) notes.push(`went without (allowed): ${line}`);
-  if (unallowed.length) {
-    notes.splice(0);
-    failures.push(
-      ...unallowed.map((line) => `went without: ${line} (allow it with "allowMissing" in shaderproof.json, or give the input)`),
-    );
-    if (update) failures.push('no reference written from a render that went without what the shader asks for');
-    writePng(outFile('actual'), image);
-    return { name: testCase.name, ok: false, failures, notes, ms: Date.now() - started, diffPixels: null };
-  }
-  for (const { lines } of image.notes.filter((n) => n.kind === 'values')) notes.push(...lines);
-  let diffPixels = null;
-  if (update) {
-    writePng(testCase.reference, image);
-    notes.push('reference written');
-  } else if (!fs.existsSync(testCase.reference)) {
-    failures.push(`no reference at ${testCase.reference}: run with --update to write it`);
-    writePng(outFile('actual'), image);
-  } else {
-    const reference = readPng(testCase.reference);
-    if (reference.width !== image.width || reference.height !== image.height) {
-      failures.push(`the render is ${image.width}x${image.height}, the reference ${reference.width}x${reference.height}`);
-      writePng(outFile('actual'), image);
-    } else {
-      const result = compare(image, reference, testCase.tolerance.threshold);
-      diffPixels = result.diffPixels;
-      if (diffPixels > testCase.tolerance.maxDiffPixels) {
-        failures.push(`${diffPixels} pixels differ from the reference (at most ${testCase.tolerance.maxDiffPixels} may)`);
-        writePng(outFile('actual'), image);
-        writePng(outFile('reference'), reference);
-        writePng(outFile('diff'), result.diff);
-      }
-    }
-  }
-  const { checks } = testCase;
-  try {
-    if (checks.deterministic) {
-      const again = await renderShader(session, testCase.file, testCase.view);
-      if (Buffer.compare(Buffer.from(again.data), Buffer.from(image.data)) !== 0)
-        failures.push('deterministic: a second render differs from the first');
-    }
-    if (checks.halfSize) {
-      const { width, height } = testCase.view.size;
-      const half = await renderShader(session, testCase.file, {
-        ...testCase.view,
-        size: { width: Math.floor(width / 2), height: Math.floor(height / 2) },
-      });
-      const { diffPixels: off } = compare(half, halve(image), checks.halfSize.threshold);
-      const allowed = Math.floor(half.width * half.height * checks.halfSize.maxDiffFraction);
-      if (off > allowed) {
-        failures.push(`halfSize: ${off} pixels of the half-size render differ from the full render halved (at most ${allowed} may)`);
-        writePng(outFile('half'), half);
-      }
-    }
-    if (checks.noNaN) {
-      await renderShader(session, testCase.file, testCase.view);
-      const { data } = await session.drawFloat();
-      let bad = 0;
-      for (let i = 0; i < data.length; i += 4)
-        if (!(Number.isFinite(data[i]) && Number.isFinite(data[i + 1]) && Number.isFinite(data[i + 2]))) bad++;
-      if (bad) failures.push(`noNaN: ${bad} pixels have a NaN or infinite colour`);
-    }
-    if (testCase.sound) failures.push(...(await soundCase(session, testCase, testCase.sound, { update, out, notes })));
-    if (checks.maxFrameMs !== undefined) {
-      const page = /** @type {import('puppeteer-core').Page} */ (session.page());
-      await renderShader(session, testCase.file, testCase.view);
-      const { median } = await page.evaluate(() => window.raytracer.renderFrames(5));
-      notes.push(`frame ${median.toFixed(1)} ms`);
-      if (median > checks.maxFrameMs)
-        failures.push(`maxFrameMs: a frame takes ${median.toFixed(1)} ms (median of 5), more than ${checks.maxFrameMs}`);
-    }
-  } catch (error) {
-    if (!(error instanceof CliError || error instanceof UsageError)) throw error;
-    failures.push(error.message);
-  }
-  return { name: testCase.name, ok: failures.length === 0, failures, notes, ms: Date.now() - started, diffPixels };
-}
-
-/** @param {{values: Record<string, any>, positionals: string[]}} args */
-export async function runTest({ values, positionals }) {
+export async function runTest({ values, positionals }, seams = {}) {
   if (positionals.length !== 1) throw new UsageError(`test: expected one DIR, got ${positionals.length ? positionals.join(' ') : 'none'}`);
   const dir = path.resolve(positionals[0]);
   if (!fs.existsSync(dir) || !fs.statSync(dir).isDirectory()) throw new CliError(`${positionals[0]}: not a folder`);
   const shard = readShard(values.shard);
+  const jobs = values.jobs === undefined ? DEFAULT_JOBS : readNumber(values.jobs, '--jobs', { min: 1, max: MAX_JOBS, whole: true });
+  const reporters = readReporters(values.reporter);
   const out = path.resolve(values.out ?? 'shaderproof-output');
   const update = Boolean(values.update);
   const manifest = readManifest(dir);
@@ -203,6 +83,8 @@ export async function runTest({ values, positionals }) {
   if (!all.length) throw new CliError(`${positionals[0]}: no .glsl or .json shaders in it`);
   const cases = all.filter((_, i) => i % shard.count === shard.index);
   fs.mkdirSync(out, { recursive: true });
+  // a report of an earlier run would speak for this one
+  for (const report of ['junit.xml', 'index.html']) fs.rmSync(path.join(out, report), { force: true });
   const referenceDir = path.join(dir, REFERENCE_DIR);
   let recorded;
   try {
@@ -212,56 +94,51 @@ export async function runTest({ values, positionals }) {
   }
   const hasReferences = fs.existsSync(referenceDir) && fs.readdirSync(referenceDir).some((name) => name.endsWith('.png'));
   // the references' renderer unless one is asked for (a flag, or $SHADERPROOF_RENDERER)
-  const options = sessionOptions(values, update ? 'auto' : referenceRenderer(recorded, hasReferences));
-  const started = Date.now();
-  const session = await startSession({ ...options, say: io.err, progress: frameProgress() });
-  const results = [];
-  let environment;
+  const limits = sessionOptions(values, update ? 'auto' : referenceRenderer(recorded, hasReferences));
+  const started = new Date();
+  /** The progress line, drawn once the run's first line is out. */
+  const shown = { progress: /** @type {ReturnType<typeof progressLine> | null} */ (null) };
+  let ran;
+  /** What draws in this run, as the references record it. @type {import('./drawn-by.js').DrawnBy | undefined} */
   let now;
   try {
-    environment = await session.environment();
-    now = drawnByNow(environment);
-    io.err(
-      `${cases.length} of ${all.length} cases${shard.count > 1 ? ` (shard ${shard.index + 1}/${shard.count})` : ''}, drawn by ${environment.label}; iDate at iTime 0: ${runDate}`,
-    );
-    const was = recorded ?? (hasReferences ? { ...now, renderer: 'swiftshader', webgl: 'SwiftShader', mesa: null } : null);
-    if (!update && was && was.renderer !== now.renderer)
-      io.err(
-        `note: the references were drawn by ${was.renderer}, and this run draws with ${now.renderer} as asked: each case is compared at its manifest's tolerance`,
-      );
-    else if (!update && recorded && drawnByDifference(recorded, now))
-      io.err(`note: what draws differs from what drew the references (${referenceDir}/drawn-by.json): ${drawnByDifference(recorded, now)}`);
-    for (const testCase of cases) {
-      if (testCase.skip !== null) {
-        results.push({
-          name: testCase.name,
-          ok: true,
-          skipped: true,
-          failures: [],
-          notes: [`skipped: ${testCase.skip}`],
-          ms: 0,
-          diffPixels: null,
-        });
-        io.out(`skip  ${testCase.name.padEnd(28)} ${'-'.padStart(6)}     ${testCase.skip}`);
-        continue;
-      }
-      const result = await runCase(session, testCase, { update, out });
-      results.push(result);
-      const said = [...result.failures, ...result.notes].join('; ');
-      io.out(`${result.ok ? 'pass' : 'FAIL'}  ${testCase.name.padEnd(28)} ${String(result.ms).padStart(6)} ms  ${said}`);
-    }
+    ran = await runCases(cases, {
+      jobs,
+      start: () => (seams.start ?? startSession)({ ...limits, say: io.err }),
+      silenceMs: seams.silenceMs ?? silenceLimitMs(limits),
+      run: { update, out, thumbnails: reporters.has('html') },
+      verbose: Boolean(values.verbose),
+      say: io.err,
+      onEnvironment: (environment) => {
+        const share = shard.count > 1 ? ` (shard ${shard.index + 1}/${shard.count})` : '';
+        const workers = `${jobs} worker${jobs === 1 ? '' : 's'}`;
+        io.err(`${cases.length} of ${all.length} cases${share}, drawn by ${environment.label}, ${workers}; iDate at iTime 0: ${runDate}`);
+        sayDrawnBy(recorded, hasReferences, (now = drawnByNow(environment)), { update, referenceDir });
+        shown.progress = progressLine(cases.length);
+      },
+      onSettled: (result) => shown.progress?.settled(result),
+      onResult: (result) => reporters.has('dot') && shown.progress?.line(dotLine(result)),
+    });
   } finally {
-    await session.close();
+    shown.progress?.end();
   }
+  const { results, environment } = ran;
   const failed = results.filter((r) => !r.ok);
-  const seconds = (Date.now() - started) / 1000;
-  fs.writeFileSync(
-    path.join(out, 'junit.xml'),
-    junitXml(results, { seconds, renderer: environment?.renderer ?? 'unknown', date: runDate }),
-  );
+  const seconds = (Date.now() - started.getTime()) / 1000;
+  const written = [];
+  if (reporters.has('junit')) {
+    fs.writeFileSync(path.join(out, 'junit.xml'), junitXml(results, { seconds, renderer: environment.renderer, date: runDate }));
+    written.push('junit.xml');
+  }
+  if (reporters.has('html')) {
+    const facts = { dir: positionals[0], renderer: environment.label, chromium: environment.chromium, date: runDate, started, seconds };
+    fs.writeFileSync(path.join(out, 'index.html'), htmlReport(results, { ...facts, shard, total: all.length, update }));
+    written.push('index.html');
+  }
+  const where = path.relative(process.cwd(), out) || '.';
   io.out(
     `${results.length - failed.length} passed, ${failed.length} failed, in ${seconds.toFixed(1)} s` +
-      (failed.length ? `; images and junit.xml in ${path.relative(process.cwd(), out) || '.'}` : ''),
+      (written.length ? `; ${written.join(' and ')} in ${where}` : ''),
   );
   if (update && now && results.some((r) => r.ok && !r.skipped)) writeDrawnBy(referenceDir, now);
   if (update) io.out(`references in ${path.relative(process.cwd(), referenceDir) || '.'}`);

@@ -49,6 +49,35 @@ export function spectrumDifference(actual, reference) {
   return worst;
 }
 
+/** The bands of an outline: from 20 Hz up, each a step of the same ratio (a log axis). */
+const OUTLINE_BANDS = 48;
+
+/**
+ * The spectrum in OUTLINE_BANDS log-spaced bands from 20 Hz to half the sample rate, each the
+ * band's mean magnitude in dB (0 dB: a full-scale sine), the two channels averaged: what the HTML
+ * report draws of a case's sound beside its reference's.
+ * @param {Int16Array} pcm interleaved stereo
+ * @param {number} [sampleRate]
+ * @returns {number[]}
+ */
+export function spectrumOutline(pcm, sampleRate = 44_100) {
+  const [left, right] = [spectrum(pcm, 0), spectrum(pcm, 1)];
+  const binHz = sampleRate / SPECTRUM_SIZE;
+  const [low, high] = [20, sampleRate / 2];
+  // a full-scale sine under the Hann window peaks at SPECTRUM_SIZE / 4
+  const fullScale = SPECTRUM_SIZE / 4;
+  const bands = [];
+  for (let b = 0; b < OUTLINE_BANDS; b++) {
+    const from = Math.floor((low * (high / low) ** (b / OUTLINE_BANDS)) / binHz);
+    const to = Math.max(from + 1, Math.floor((low * (high / low) ** ((b + 1) / OUTLINE_BANDS)) / binHz));
+    let sum = 0;
+    for (let k = from; k < to && k < left.length; k++) sum += (left[k] + right[k]) / 2;
+    const mean = sum / (to - from);
+    bands.push(Math.max(-120, 20 * Math.log10(mean / fullScale + 1e-12)));
+  }
+  return bands;
+}
+
 /** Channel c's Welch spectrum: SPECTRUM_SIZE / 2 magnitudes. */
 function spectrum(pcm, c) {
   const length = pcm.length / 2;
