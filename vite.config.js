@@ -61,6 +61,26 @@ function glslFiles() {
   };
 }
 
+/**
+ * ogv.js's Emscripten modules (the Theora decoder, src/page/inputs/theora-video.js) require Node's
+ * `fs` and `path` in a branch that runs only under Node: for the page they are an empty module,
+ * so that the build neither warns about them nor ships Vite's stand-in.
+ */
+function ogvNodeBuiltins() {
+  const STUB = '\0ogv-node-builtin';
+  return {
+    name: 'ogv-node-builtins',
+    enforce: /** @type {const} */ ('pre'),
+    resolveId(source, importer) {
+      if ((source === 'fs' || source === 'path') && importer?.includes(`${path.sep}node_modules${path.sep}ogv${path.sep}`)) return STUB;
+      return null;
+    },
+    load(id) {
+      return id === STUB ? 'export default {};' : null;
+    },
+  };
+}
+
 /** What the built page lists of its sources (src/engine/page-server.js reads it to tell a stale build). */
 const SOURCES_FILE = 'page-sources.json';
 
@@ -94,7 +114,7 @@ const sourcesSeen = new Set();
 export default defineConfig({
   root: `${repo}src/page`,
   publicDir,
-  plugins: [glslFiles(), pageSources(sourcesSeen, { emit: true })],
+  plugins: [ogvNodeBuiltins(), glslFiles(), pageSources(sourcesSeen, { emit: true })],
   worker: { plugins: () => [pageSources(sourcesSeen, { emit: false })] },
   server: {
     host: '127.0.0.1',
