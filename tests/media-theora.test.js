@@ -17,6 +17,7 @@ import { describe, expect, test } from 'vitest';
 import { REPO_ROOT } from './harness/config.js';
 import { readPixels, solid, withPage, withServedDir } from './page-helpers.js';
 import { checkRow } from './media-fixture.js';
+import { loadNotes } from './page-multipass-helpers.js';
 import { THEORA_FILE, THEORA_READER, expectedProbes, theoraJson } from './theora-fixture.js';
 
 const BIN = path.join(REPO_ROOT, 'bin', 'shaderproof.js');
@@ -75,6 +76,32 @@ describe('the site’s Theora videos, against the frames the fixture was made of
         checkRow(await readPixels(page), both(0.15), 'page, ?media=, iTime 0.15');
         expect(errors).toEqual([]);
       });
+    });
+  });
+
+  test('a page that cannot load its decoder says so in the channel’s note, and draws the channel black', async () => {
+    await withServedDir('test-theora-missing', async (dir, base) => {
+      fs.copyFileSync(THEORA_FILE, path.join(dir, 'colours.ogv'));
+      fs.writeFileSync(path.join(dir, 'reader.glsl'), THEORA_READER);
+      const refuse = async (page) => {
+        await page.setRequestInterception(true);
+        page.on('request', (request) => {
+          if (/\.wasm$/.test(new URL(request.url()).pathname)) request.respond({ status: 404, body: '' });
+          else request.continue();
+        });
+      };
+      await withPage(
+        async ({ page, goto, errors }) => {
+          await goto(`?shader=/${base}/reader.glsl&size=4x1&time=0&iChannel0=/${base}/colours.ogv`);
+          const lines = (await loadNotes(page))?.lines ?? [];
+          expect(lines.join('\n')).toMatch(
+            /^iChannel0: cannot play colours\.ogv as a video: the page could not load its Theora decoder \(\S+ogv-(demuxer|decoder)\S+\.wasm: HTTP 404\); build the page again \(npm run build\); the channel is black$/,
+          );
+          checkRow(await readPixels(page), [[[0, 0, 0], 0, 'the channel is black']], 'page without its decoder');
+          expect(errors, 'nothing but the note: the 404s are not the page’s errors').toEqual([]);
+        },
+        { beforeLoad: refuse },
+      );
     });
   });
 

@@ -73,7 +73,8 @@ export class TheoraStream {
     if (!all.length) throw new Error('it has no Theora video track');
     const headers = all.filter((packet) => isHeader(packet.data));
     const data = all.filter((packet) => !isHeader(packet.data) && packet.data.byteLength > 0);
-    if (headers.length !== 3) throw new Error(`its Theora stream has ${headers.length} of its 3 headers`);
+    if (headers.length !== 3)
+      throw new Error(`its Theora stream has ${headers.length} of its 3 headers (the file is cut short or damaged)`);
     if (!data.length) throw new Error('its Theora stream has no frame');
     const rate = frameRate(headers[0].data);
     const number = (/** @type {number} */ seconds) => Math.round(seconds * rate);

@@ -20,13 +20,18 @@ function binary(url) {
   let bytes = binaries.get(url);
   if (!bytes) {
     bytes = fetch(url).then((response) => {
-      if (!response.ok) throw new Error(`the Theora decoder's ${url} is missing from the page (HTTP ${response.status})`);
+      if (!response.ok) throw new Error(`${url}: HTTP ${response.status}`);
       return response.arrayBuffer();
     });
     bytes.catch(() => binaries.delete(url)); // a later file tries again
     binaries.set(url, bytes);
   }
   return bytes;
+}
+
+/** Fetches the decoder's WebAssembly (once): rejects with why the page could not. */
+export async function loadDecoder() {
+  await Promise.all([binary(demuxerWasmUrl), binary(decoderWasmUrl)]);
 }
 
 /**

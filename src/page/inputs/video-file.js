@@ -95,9 +95,19 @@ export class VideoFile {
     const fail = (/** @type {string} */ why, /** @type {unknown} */ cause) =>
       new Error(`cannot play ${name} as a video: ${why}; use a WebM (VP8, VP9, AV1), MP4 (H.264) or Ogg (Theora) file`, { cause });
     if (!(await isOgg(blob))) return new VideoFile(await openWebCodecs(blob, fail));
-    const { openTheora } = await import('./theora-video.js');
+    let theora;
     try {
-      return new VideoFile(await openTheora(blob));
+      theora = await import('./theora-video.js');
+      await theora.loadDecoder();
+    } catch (error) {
+      // the page's own files, not the video: a build served without its assets
+      throw new Error(
+        `cannot play ${name} as a video: the page could not load its Theora decoder (${error.message}); build the page again (npm run build)`,
+        { cause: error },
+      );
+    }
+    try {
+      return new VideoFile(await theora.openTheora(blob));
     } catch (error) {
       throw fail(error.message, error);
     }
