@@ -42,7 +42,7 @@ async function shaderproof(cwd, ...args) {
 const both = (/** @type {number} */ t) => [...expectedProbes(t), ...expectedProbes(t)];
 
 describe('the site’s Theora videos, against the frames the fixture was made of', () => {
-  test('the page: a video channel (?iChannel0=) at each iTime, and a JSON’s from ?media= with vflip on and off; the decoder loaded only then', async () => {
+  test('the page: a video channel (?iChannel0=) at each iTime, and a JSON’s from ?media= with vflip on and off; the decoder loaded only then, its licences in the build', async () => {
     await withServedDir('test-theora', async (dir, base) => {
       fs.copyFileSync(THEORA_FILE, path.join(dir, 'colours.ogv'));
       fs.mkdirSync(path.join(dir, 'media', 'a'), { recursive: true });
@@ -69,6 +69,17 @@ describe('the site’s Theora videos, against the frames the fixture was made of
           'ogv-demuxer-ogg-wasm',
           'theora-video',
         ]);
+
+        // the build carries the notices the decoder's licences ask of a binary copy
+        for (const [file, holder] of [
+          ['ogv.js.txt', 'Brooke Vibber'],
+          ['libogg.txt', 'Xiph.org'],
+          ['libtheora.txt', 'Xiph.org'],
+        ]) {
+          const response = await fetch(new URL(`/licenses/ogv/${file}`, page.url()));
+          expect(response.status, file).toBe(200);
+          expect(await response.text(), file).toContain(holder);
+        }
 
         await goto(`?shader=/${base}/theora.json&size=8x1&time=0.45&media=/${base}/media/`);
         checkRow(await readPixels(page), both(0.45), 'page, ?media=, iTime 0.45');
