@@ -25,9 +25,8 @@ const isHeader = (/** @type {ArrayBuffer} */ data) => data.byteLength > 0 && (ne
  */
 function frameRate(packet) {
   const view = new DataView(packet);
-  const magic = String.fromCharCode(...new Uint8Array(packet, 1, 6));
-  if (packet.byteLength < 42 || view.getUint8(0) !== 0x80 || magic !== 'theora')
-    throw new Error('its Theora identification header is damaged');
+  const magic = packet.byteLength >= 42 ? String.fromCharCode(...new Uint8Array(packet, 1, 6)) : '';
+  if (view.getUint8(0) !== 0x80 || magic !== 'theora') throw new Error('its Theora identification header is damaged');
   // after the magic: version (3 bytes), frame size in macroblocks (2 × 2), picture size (2 × 3), offset (2 × 1)
   const numerator = view.getUint32(22);
   const denominator = view.getUint32(26);
