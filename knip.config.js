@@ -22,6 +22,9 @@ export default {
     // The floor bench:cli times beside each render: run as a process of its own (cli-start.js).
     'tests/bench/baseline-launch.js',
   ],
+  // ffmpeg makes the Theora fixture again by hand (node tests/theora-fixture.js); no npm package
+  // provides it, and CI never runs it (the fixture is committed).
+  ignoreBinaries: ['ffmpeg'],
   // The files that must all be reached. `!` marks what ships (the page, the command line), for
   // `knip --production`: it checks that package.json's dependencies are what they use.
   project: ['src/**/*.js!', 'bin/**/*.js!', 'tests/**/*.{js,ts}', '*.js'],

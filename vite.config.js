@@ -61,6 +61,37 @@ function glslFiles() {
   };
 }
 
+/**
+ * ogv.js in the build (the Theora decoder, src/page/inputs/theora-video.js). Its Emscripten modules
+ * require Node's `fs` and `path` in a branch that runs only under Node: for the page they are an
+ * empty module, so that the build neither warns about them nor ships Vite's stand-in. Its
+ * WebAssembly is a binary form of libogg and libtheora, whose BSD licences (and ogv.js's MIT one)
+ * ask that it travel with their notices: they go into the build as licenses/ogv/*.txt.
+ */
+function ogvInBuild() {
+  const STUB = '\0ogv-node-builtin';
+  const ogvDist = path.join(repo, 'node_modules', 'ogv', 'dist');
+  return {
+    name: 'ogv-in-build',
+    enforce: /** @type {const} */ ('pre'),
+    resolveId(source, importer) {
+      if ((source === 'fs' || source === 'path') && importer?.includes(`${path.sep}node_modules${path.sep}ogv${path.sep}`)) return STUB;
+      return null;
+    },
+    load(id) {
+      return id === STUB ? 'export default {};' : null;
+    },
+    generateBundle() {
+      for (const [from, to] of [
+        ['COPYING', 'ogv.js.txt'],
+        ['COPYING-ogg.txt', 'libogg.txt'],
+        ['COPYING-theora.txt', 'libtheora.txt'],
+      ])
+        this.emitFile({ type: 'asset', fileName: `licenses/ogv/${to}`, source: fs.readFileSync(path.join(ogvDist, from), 'utf8') });
+    },
+  };
+}
+
 /** What the built page lists of its sources (src/engine/page-server.js reads it to tell a stale build). */
 const SOURCES_FILE = 'page-sources.json';
 
@@ -94,7 +125,7 @@ const sourcesSeen = new Set();
 export default defineConfig({
   root: `${repo}src/page`,
   publicDir,
-  plugins: [glslFiles(), pageSources(sourcesSeen, { emit: true })],
+  plugins: [ogvInBuild(), glslFiles(), pageSources(sourcesSeen, { emit: true })],
   worker: { plugins: () => [pageSources(sourcesSeen, { emit: false })] },
   server: {
     host: '127.0.0.1',

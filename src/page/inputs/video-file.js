@@ -1,51 +1,116 @@
 // A video input from a file, decoded frame by frame at the frame's iTime: the frame shown at
-// iTime is the last one whose timestamp is at or before it (mediabunny's VideoSampleSink.getSample
-// over WebCodecs), never whatever a <video> element had ready, so a recording or the command line
-// gets the same picture on every run.
+// iTime is the last one whose timestamp is at or before it, never whatever a <video> element had
+// ready, so a recording or the command line gets the same picture on every run. WebM and MP4 are
+// decoded by the browser (mediabunny's VideoSampleSink over WebCodecs); Ogg Theora, which
+// Chromium no longer decodes, by ogv.js's WebAssembly (theora-video.js, loaded only for one).
 //
 // On the site a video input is a <video loop> element started when it can play; each frame its
 // current picture is uploaded with UNPACK_FLIP_Y = the sampler's vflip, mipmaps made again when the
 // filter is "mipmap"; iChannelTime is its currentTime and iChannelResolution (videoWidth,
 // videoHeight, 1) (effect.js: NewTexture "video", Paint_Image; piLibs.js UpdateTextureFromImage).
 // Here the video's clock is iTime, looped: iChannelTime = iTime mod its duration.
+//
+// Its sound is not read: the site plays a video's sound aloud but gives a shader only its
+// picture, and the page plays no video's sound (docs/compatibility.md).
 
 /** @typedef {{kind: 'video', image: ImageBitmap, width: number, height: number, time: number}} VideoFrameInput */
+/**
+ * A decoder's frame: its timestamp (seconds from the video's start), its picture on demand.
+ * @typedef {{timestamp: number, image: (vflip: boolean) => Promise<ImageBitmap>, close: () => void}} DecodedFrame
+ */
+/**
+ * A video's frames, whatever decodes them: the one shown `seconds` after its start (from 0 to
+ * its duration), or null if it has none there.
+ * @typedef {{duration: number, sampleAt: (seconds: number) => Promise<DecodedFrame | null>}} FrameSource
+ */
+
+/** An Ogg file starts with its first page's capture pattern. */
+async function isOgg(/** @type {Blob} */ blob) {
+  const head = new Uint8Array(await blob.slice(0, 4).arrayBuffer());
+  return String.fromCharCode(...head) === 'OggS';
+}
+
+/**
+ * The frames of a WebM or MP4 file the browser's WebCodecs decodes.
+ * @param {Blob} blob
+ * @param {(why: string, cause: unknown) => Error} fail
+ * @returns {Promise<FrameSource>}
+ */
+async function openWebCodecs(blob, fail) {
+  const { ALL_FORMATS, BlobSource, Input, VideoSampleSink } = await import('mediabunny');
+  let track;
+  try {
+    const input = new Input({ source: new BlobSource(blob), formats: ALL_FORMATS });
+    track = await input.getPrimaryVideoTrack();
+  } catch (error) {
+    throw fail('not a video file', error);
+  }
+  if (!track) throw fail('it has no video track', null);
+  if (!(await track.canDecode())) throw fail('this browser cannot decode its codec', null);
+  const start = await track.getFirstTimestamp();
+  const duration = (await track.computeDuration()) - start;
+  const sink = new VideoSampleSink(track);
+  return {
+    duration,
+    async sampleAt(seconds) {
+      const sample = (await sink.getSample(start + seconds)) ?? (await sink.getSample(start));
+      if (!sample) return null;
+      return {
+        timestamp: sample.timestamp,
+        async image(vflip) {
+          const videoFrame = sample.toVideoFrame();
+          try {
+            return await createImageBitmap(videoFrame, {
+              imageOrientation: vflip ? 'flipY' : 'from-image',
+              colorSpaceConversion: 'none',
+              premultiplyAlpha: 'none',
+            });
+          } finally {
+            videoFrame.close();
+          }
+        },
+        close: () => sample.close(),
+      };
+    },
+  };
+}
 
 export class VideoFile {
   /**
-   * @param {any} sink mediabunny's VideoSampleSink on the file's video track
-   * @param {number} start the first frame's timestamp
-   * @param {number} duration seconds
+   * @param {FrameSource} source
    */
-  constructor(sink, start, duration) {
-    this.sink = sink;
-    this.start = start;
-    this.duration = duration;
+  constructor(source) {
+    this.source = source;
+    this.duration = source.duration;
     /** The last frame made, by its timestamp and flip, to give again while it is the one shown. @type {{key: string, frame: VideoFrameInput} | null} */
     this._last = null;
   }
 
   /**
-   * Opens a video file (WebM or MP4 the browser's WebCodecs decodes).
+   * Opens a video file: WebM or MP4 the browser's WebCodecs decodes, or Ogg Theora.
    * @param {Blob} blob
    * @param {string} name for the error
    */
   static async open(blob, name) {
-    const { ALL_FORMATS, BlobSource, Input, VideoSampleSink } = await import('mediabunny');
     const fail = (/** @type {string} */ why, /** @type {unknown} */ cause) =>
-      new Error(`cannot play ${name} as a video: ${why}; use a WebM (VP8, VP9, AV1) or MP4 (H.264) file`, { cause });
-    let track;
+      new Error(`cannot play ${name} as a video: ${why}; use a WebM (VP8, VP9, AV1), MP4 (H.264) or Ogg (Theora) file`, { cause });
+    if (!(await isOgg(blob))) return new VideoFile(await openWebCodecs(blob, fail));
+    let theora;
     try {
-      const input = new Input({ source: new BlobSource(blob), formats: ALL_FORMATS });
-      track = await input.getPrimaryVideoTrack();
+      theora = await import('./theora-video.js');
+      await theora.loadDecoder();
     } catch (error) {
-      throw fail('not a video file', error);
+      // the page's own files, not the video: a build served without its assets
+      throw new Error(
+        `cannot play ${name} as a video: the page could not load its Theora decoder (${error.message}); build the page again (npm run build)`,
+        { cause: error },
+      );
     }
-    if (!track) throw fail('it has no video track', null);
-    if (!(await track.canDecode())) throw fail('this browser cannot decode its codec', null);
-    const start = await track.getFirstTimestamp();
-    const duration = (await track.computeDuration()) - start;
-    return new VideoFile(new VideoSampleSink(track), start, duration);
+    try {
+      return new VideoFile(await theora.openTheora(blob));
+    } catch (error) {
+      throw fail(error.message, error);
+    }
   }
 
   /**
@@ -56,18 +121,12 @@ export class VideoFile {
    */
   async frameAt(time, vflip) {
     const local = this.duration > 0 ? time % this.duration : 0;
-    const sample = (await this.sink.getSample(this.start + local)) ?? (await this.sink.getSample(this.start));
+    const sample = await this.source.sampleAt(local);
     if (!sample) throw new Error('the video has no frame');
     try {
       const key = `${sample.timestamp} ${vflip}`;
       if (this._last?.key === key) return { ...this._last.frame, time: local };
-      const videoFrame = sample.toVideoFrame();
-      const image = await createImageBitmap(videoFrame, {
-        imageOrientation: vflip ? 'flipY' : 'from-image',
-        colorSpaceConversion: 'none',
-        premultiplyAlpha: 'none',
-      });
-      videoFrame.close();
+      const image = await sample.image(vflip);
       /** @type {VideoFrameInput} */
       const frame = { kind: 'video', image, width: image.width, height: image.height, time: local };
       this._last = { key, frame };
