@@ -22,12 +22,11 @@ export default {
     // The floor bench:cli times beside each render: run as a process of its own (cli-start.js).
     'tests/bench/baseline-launch.js',
   ],
-  // ffmpeg makes the Theora fixture again by hand (node tests/theora-fixture.js); no npm package
-  // provides it, and CI never runs it (the fixture is committed).
-  ignoreBinaries: ['ffmpeg'],
+  // System programs, not npm packages: ffmpeg makes the Theora fixture again by hand (node
+  // tests/theora-fixture.js; CI never runs it, the fixture is committed); dpkg-query is asked,
+  // best effort, for Mesa's version (src/cli/test/drawn-by.js).
+  ignoreBinaries: ['ffmpeg', 'dpkg-query'],
   // The files that must all be reached. `!` marks what ships (the page, the command line), for
   // `knip --production`: it checks that package.json's dependencies are what they use.
   project: ['src/**/*.js!', 'bin/**/*.js!', 'tests/**/*.{js,ts}', '*.js'],
-  // A system program the test verb asks, best effort, for Mesa's version (src/cli/test/drawn-by.js).
-  ignoreBinaries: ['dpkg-query'],
 };
