@@ -52,7 +52,7 @@ export function formatShaderMessages(messages, userSource, fileName = 'shader') 
   return messages
     .map(({ severity, line, message }) => {
       if (line === null) return `${severity}: ${message}`;
-      const code = lines[line - 1].trim();
+      const code = lines[line - 1]?.trim() ?? '';
       return `${fileName}:${line}: ${severity}: ${message}` + (code ? `\n    ${code}` : '');
     })
     .join('\n');
