@@ -195,3 +195,42 @@ describe('the command line', () => {
     expect(fs.existsSync(path.join(folder, 'x.png'))).toBe(false);
   });
 });
+
+// A global with a non-constant initializer (issue 45, item 5) is an error of GLSL ES 3.00 that
+// the browser's compiler (ANGLE, the site's as well: it compiles every pass as #version 300 es)
+// reports; the page says what it means, that Shadertoy rejects it too, and what to write
+// instead. A built-in function of constants is a constant expression: it compiles and draws.
+describe('a global initialized with a value that is not constant', () => {
+  /** @type {Array<[string, string, string, number | null]>} [what, the globals, the colour's red, its byte (null: refused)] */
+  const CASES = [
+    ['a uniform', 'vec2 p = iResolution.xy;', 'p.x / 32.0', null],
+    ['a uniform in an expression', 'float t0 = iTime * 2.0 + 1.0;', 't0', null],
+    ['another global', 'float a = 0.5;\nfloat b = a * 2.0;', 'b', null],
+    ["a function of the shader's", 'float f() { return 0.25; }\nfloat c = f();', 'c', null],
+    ['a built-in function of constants', 'float g = sin(1.0);', 'g', Math.round(Math.sin(1) * 255)],
+    ['a constant', 'const float k = 2.0;\nfloat m = k * 0.25;', 'm', Math.round(0.5 * 255)],
+  ];
+  test.each(CASES)('%s', async (_, globals, red, byte) => {
+    const source = `${globals}\nvoid mainImage(out vec4 c, in vec2 f) {\n    c = vec4(${red}, 0.0, 0.0, 1.0);\n}\n`;
+    await withPage(async ({ page, goto }) => {
+      await goto('?size=16x8&time=0');
+      const outcome = await page.evaluate((text) => window.raytracer.setSource(text), source);
+      if (byte === null) {
+        const line = globals.split('\n').length; // the initializer is on the globals' last line
+        expect(outcome.ok).toBe(false);
+        const [said, under] = String(outcome.error).split('\n');
+        expect(said).toMatch(new RegExp(`:${line}: error: a global's initial value must be a constant expression in GLSL ES 3\\.00`));
+        expect(said).toMatch(
+          /Shadertoy rejects this shader as well: declare the global without a value and assign it at the start of mainImage/,
+        );
+        expect(under.trim()).toBe(globals.split('\n')[line - 1]);
+        const note = await page.$$eval('#overlay .error-line', (els) => els.map((e) => e.textContent ?? ''));
+        expect(note.join('\n')).toContain('Shadertoy rejects this shader as well');
+      } else {
+        expect(outcome).toEqual({ ok: true });
+        const { data } = await page.evaluate(() => window.raytracer.readPixels());
+        expect(Buffer.from(data, 'base64')[0]).toBe(byte);
+      }
+    });
+  });
+});
