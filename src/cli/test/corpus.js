@@ -11,7 +11,7 @@ import fs from 'node:fs';
 import path from 'node:path';
 import { compareImages } from '../../engine/compare.js';
 import { readPng, writePng } from '../../engine/png.js';
-import { allowedMissing, io, watchdog } from '../io.js';
+import { allowedMissing, io, mergeMissingLines, watchdog } from '../io.js';
 import { findCases, readManifest, REFERENCE_DIR } from './manifest.js';
 import { junitXml } from './junit.js';
 import { renderShader } from '../render.js';
@@ -109,11 +109,14 @@ async function runCase(session, testCase, { update, out }) {
   // a render that went without an input or a pass is no reference, nor a pass, unless allowed
   const missing = image.notes.filter((n) => n.kind === 'missing').flatMap((n) => n.lines);
   const unallowed = missing.filter((line) => !allowedMissing(line, testCase.allowMissing));
-  for (const line of missing) notes.push(`went without (allowed): ${line}`);
+  // each line checked on its own, said once however many passes share it (io.js mergeMissingLines)
+  for (const line of mergeMissingLines(missing)) notes.push(`went without (allowed): ${line}`);
   if (unallowed.length) {
     notes.splice(0);
     failures.push(
-      ...unallowed.map((line) => `went without: ${line} (allow it with "allowMissing" in shaderproof.json, or give the input)`),
+      ...mergeMissingLines(unallowed).map(
+        (line) => `went without: ${line} (allow it with "allowMissing" in shaderproof.json, or give the input)`,
+      ),
     );
     if (update) failures.push('no reference written from a render that went without what the shader asks for');
     writePng(outFile('actual'), image);
@@ -189,7 +192,7 @@ async function runCase(session, testCase, { update, out }) {
 
 /** @param {{values: Record<string, any>, positionals: string[]}} args */
 export async function runTest({ values, positionals }) {
-  if (positionals.length !== 1) throw new UsageError(`test: expected one DIR, got ${positionals.length ? positionals.join(' ') : 'none'}`);
+  if (positionals.length !== 1) throw new UsageError(`expected one DIR, got ${positionals.length ? positionals.join(' ') : 'none'}`);
   const dir = path.resolve(positionals[0]);
   if (!fs.existsSync(dir) || !fs.statSync(dir).isDirectory()) throw new CliError(`${positionals[0]}: not a folder`);
   const shard = readShard(values.shard);
