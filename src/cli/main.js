@@ -14,6 +14,7 @@ import { runRecord } from './record.js';
 import { outputFormat, renderShader, renderTiled, writeFloatImage, writeImage } from './render.js';
 import { CliError, shaderKind, startSession } from './session.js';
 import { DEFAULT_JOBS, runTest } from './test/corpus.js';
+import { DEFAULT_SIZE as TEST_SIZE } from './test/manifest.js';
 import { UsageError, VIEW_FLAGS, dateLabel, readNumber, readViewOptions } from './view-options.js';
 import { frameProgress, io, oneShader, sayNotes, sessionOptions } from './io.js';
 import { argumentError, joinDashValues } from './arguments.js';
@@ -150,10 +151,10 @@ ${MEDIA_HELP}
     summary: 'render every shader of a folder and compare with its reference',
     usage: `${NAME} test DIR [--update] [--shard i/n] [--jobs N] [--reporter dot,junit,html] [options]
 
-Every .glsl and .json file under DIR is a case. DIR/shaderproof.json (optional) sets a case's
-view, tolerance and checks:
+Every .glsl and .json file under DIR is a case, drawn at ${TEST_SIZE.width}x${TEST_SIZE.height} and iTime 0 (render draws
+640x360) unless DIR/shaderproof.json (optional) sets its view; it sets tolerance and checks too:
 
-  { "defaults": { "size": "320x180" },
+  { "defaults": { "size": "640x360" },
     "cases": { "waves.glsl": { "time": 2, "set": { "SPEED": 2 },
                                "tolerance": { "threshold": 0.1, "maxDiffPixels": 0 },
                                "checks": { "deterministic": true, "halfSize": true,
@@ -207,8 +208,8 @@ Chromium is found at $CHROME_PATH, else the usual system paths.`;
 
 /** @param {{values: Record<string, any>, positionals: string[]}} args */
 async function runRender({ values, positionals }) {
-  const file = oneShader(positionals, 'render');
-  if (!values.output) throw new UsageError('render: -o OUT.png is required');
+  const file = oneShader(positionals);
+  if (!values.output) throw new UsageError('-o is required: the file to write, OUT.png, OUT.pfm or OUT.wav');
   if (/\.wav$/i.test(values.output)) return runRenderWav({ values, positionals });
   if (values.duration !== undefined) throw new UsageError('--duration: the length of a .wav; a picture is one instant (--time)');
   const format = outputFormat(values.output);
@@ -250,7 +251,7 @@ async function runRender({ values, positionals }) {
 
 /** `render -o OUT.wav`: the Sound tab's samples from --time for --duration seconds (sound.js). */
 async function runRenderWav({ values, positionals }) {
-  const file = oneShader(positionals, 'render');
+  const file = oneShader(positionals);
   for (const flag of ['frame', 'converge', 'tile'])
     if (values[flag] !== undefined)
       throw new UsageError(`--${flag}: not for a .wav, which is the Sound tab from --time for --duration seconds`);

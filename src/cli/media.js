@@ -18,7 +18,15 @@ import os from 'node:os';
 import path from 'node:path';
 import { fromShadertoyJson, toShadertoyJson } from '../shadertoy/multipass-json.js';
 import { singlePass } from '../shadertoy/multipass.js';
-import { LIBRARY_KINDS, MOVING_LIBRARY_KINDS, cubeFaceFiles, mediaFiles, mediaUrlPath, parseVolume } from '../shadertoy/media.js';
+import {
+  LIBRARY_KINDS,
+  MEDIA_WORDS,
+  MOVING_LIBRARY_KINDS,
+  cubeFaceFiles,
+  mediaFiles,
+  mediaUrlPath,
+  parseVolume,
+} from '../shadertoy/media.js';
 import { UsageError } from './view-options.js';
 import { CliError } from './session.js';
 
@@ -121,6 +129,33 @@ function sayLayout(dir, files, say) {
 
 /** The media paths whose download failed in this process. */
 const failedDownloads = new Set();
+
+/**
+ * A line of the page's "went without" note in the command line's words: the page asks for a
+ * media folder by both its ways (shaderproof --media DIR, the page's ?media=URL) and calls the
+ * folders it was given "the media folder"; here the flags are named, and a file whose download
+ * failed is said to be that, not to be missing from a folder the person never gave.
+ * @param {string} line
+ * @param {import('./view-options.js').MediaOptions | undefined} media what the run was given
+ */
+export function commandLineWords(line, media) {
+  if (line.includes(MEDIA_WORDS.noFolder))
+    return line.replace(
+      MEDIA_WORDS.noFolder,
+      "needs the site's media: give --media DIR (a folder laid out as the site's paths) or --fetch-media",
+    );
+  const notIn = new RegExp(`(\\S+) ${MEDIA_WORDS.notInFolder}`).exec(line);
+  if (!notIn) return line;
+  const file = notIn[1];
+  const where = failedDownloads.has(file)
+    ? `${file} could not be downloaded (the warning above says why)`
+    : media?.dir && media.fetch
+      ? `${file} is neither in --media ${media.dir} nor in the download cache`
+      : media?.dir
+        ? `${file} is not in --media ${media.dir} (--fetch-media downloads what it lacks)`
+        : `${file} is not in the download cache`;
+  return line.replace(notIn[0], where);
+}
 
 /**
  * Downloads `url` into `file` whole: written beside it, then renamed, so that the cache never

@@ -15,7 +15,7 @@ import { readMediaOptions, readNumber } from './view-options.js';
  * @param {{stopped?: Promise<unknown>}} [options] when to stop (default: SIGINT or SIGTERM)
  */
 export async function runOpen({ values, positionals }, { stopped } = {}) {
-  const file = path.resolve(oneShader(positionals, 'open'));
+  const file = path.resolve(oneShader(positionals));
   shaderKind(file);
   const media = readMediaOptions(values);
   const port = values.port === undefined ? 0 : readNumber(values.port, '--port', { min: 0, whole: true });

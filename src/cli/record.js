@@ -8,6 +8,7 @@ import { frameProgress, io, oneShader, progressBar, sayNotes, sessionOptions } f
 import { renderShader } from './render.js';
 import { CliError, shaderKind, startSession } from './session.js';
 import { UsageError, readNumber, readViewOptions } from './view-options.js';
+import { hasSoundTab } from './sound.js';
 
 /** The recorder's limits (src/page/io/recorder.js MAX_FRAMES, MAX_FPS): a recording past them is refused here. */
 const MAX_FRAMES = 36_000;
@@ -17,13 +18,13 @@ const RECORD_FPS = 30;
 
 /** @param {{values: Record<string, any>, positionals: string[]}} args */
 export async function runRecord({ values, positionals }) {
-  const file = oneShader(positionals, 'record');
+  const file = oneShader(positionals);
   const output = values.output;
-  if (!output) throw new UsageError('record: -o OUT.webm or -o OUT.zip is required');
+  if (!output) throw new UsageError('-o OUT.webm or -o OUT.zip is required');
   const format = /\.webm$/i.test(output) ? 'webm' : /\.zip$/i.test(output) ? 'png' : null;
   if (!format) throw new UsageError(`-o ${output}: a recording is a .webm video or a .zip of PNGs`);
   if (values.time !== undefined || values.frame !== undefined)
-    throw new UsageError("record: --time and --frame are a render's; a recording starts at frame 0");
+    throw new UsageError("--time and --frame are a render's; a recording starts at frame 0");
   const frames = values.frames === undefined ? 60 : readNumber(values.frames, '--frames', { min: 1, max: MAX_FRAMES, whole: true });
   const view = readViewOptions(values, { width: 640, height: 360 }, { fps: RECORD_FPS, maxFps: MAX_FPS });
   const fps = view.fps;
@@ -45,6 +46,13 @@ export async function runRecord({ values, positionals }) {
       bar.end();
     }
     writeWhole(output, Buffer.from(result.data, 'base64'));
+    // a WebM carries the Sound tab (the recorder's Opus track); a zip of PNGs has no place for it
+    if (format === 'png' && hasSoundTab(file)) {
+      const wav = output.replace(/\.zip$/i, '.wav');
+      io.err(
+        `warning: ${output}: ${file} has a Sound tab, and a zip of PNGs holds no sound; shaderproof render ${file} -o ${wav} --duration ${Number((frames / fps).toFixed(6))} writes it (or record -o OUT.webm, which carries it)`,
+      );
+    }
     const { label: renderer } = await session.environment();
     const what = format === 'webm' ? `${result.codec} video${result.audio ? `, its Sound tab in ${result.audio}` : ''}` : 'PNGs in a zip';
     io.out(

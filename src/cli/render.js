@@ -10,7 +10,7 @@ import { runLong } from '../engine/long-work.js';
 import { writePng, writeWhole } from '../engine/png.js';
 import { fromBase64 } from '../shared/pixels.js';
 import { io, progressBar } from './io.js';
-import { mediaFolders, withLibraryChannels } from './media.js';
+import { commandLineWords, mediaFolders, withLibraryChannels } from './media.js';
 import { CliError, shaderKind } from './session.js';
 import { UsageError, viewQuery } from './view-options.js';
 
@@ -44,6 +44,7 @@ export async function renderShader(session, file, view, { converge = null, progr
       error.message = error.hung ? `${file}: ${error.message}` : userMessage(error.message.replaceAll(shaderUrl, file), file);
     throw error;
   }
+  image.notes = image.notes.map((note) => ({ ...note, lines: note.lines.map((line) => commandLineWords(line, view.media)) }));
   const missing = view.controls.filter(([name]) => !(name in (image.info.controls ?? {}))).map(([name]) => name);
   if (missing.length) {
     const known = Object.keys(image.info.controls ?? {});

@@ -15,6 +15,7 @@ import { openPage } from '../engine/page-open.js';
 import { CLOSE_TIMEOUT_MS, withTimeout } from '../engine/watch.js';
 import { fromBase64 } from '../shared/pixels.js';
 import { WATCHDOG_LIMITS, hungLine } from './watchdog.js';
+import { jsonSyntaxError } from '../shared/json-syntax.js';
 
 /** An error the person can act on: said in one line, without a stack. */
 export class CliError extends Error {
@@ -244,7 +245,8 @@ export function shaderKind(file) {
     try {
       JSON.parse(text);
     } catch (error) {
-      throw new CliError(`${file}: not a shader: not valid JSON (${error.message}), and a Shadertoy export is JSON`);
+      const where = jsonSyntaxError(text) ?? String(error.message).replace(/\s*\n\s*/g, ' ');
+      throw new CliError(`${file}: not a shader: a Shadertoy export is JSON, and this is not (${where})`);
     }
     return 'json';
   }

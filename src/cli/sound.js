@@ -2,7 +2,10 @@
 // (a stereo 16-bit WAV at 44,100 Hz of the samples the page plays, src/shadertoy/sound.js), and
 // `test`'s comparison of a case's sound with its reference WAV.
 
+import fs from 'node:fs';
 import { writeWhole } from '../engine/png.js';
+import { fromShadertoyJson } from '../shadertoy/multipass-json.js';
+import { soundPass } from '../shadertoy/multipass.js';
 import { encodeWav } from '../shared/wav.js';
 import { renderShader } from './render.js';
 import { CliError } from './session.js';
@@ -38,6 +41,21 @@ export async function renderSound(session, file, view, { time, duration }) {
   const bytes = Buffer.from(sound.data, 'base64');
   const pcm = new Int16Array(bytes.buffer, bytes.byteOffset, bytes.byteLength / 2);
   return { pcm, sampleRate: sound.sampleRate, notes: first.notes };
+}
+
+/**
+ * Whether a shader file has a Sound tab: a Shadertoy JSON with one (a .glsl file is an Image tab
+ * alone; a JSON that cannot be read has none the page would play).
+ * @param {string} file
+ */
+export function hasSoundTab(file) {
+  const text = fs.readFileSync(file, 'utf8');
+  if (!/\.json$/i.test(file) && !/^\s*[[{]/.test(text)) return false;
+  try {
+    return soundPass(fromShadertoyJson(text).model) !== null;
+  } catch {
+    return false;
+  }
 }
 
 /**

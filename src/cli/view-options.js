@@ -10,7 +10,7 @@
 import fs from 'node:fs';
 import path from 'node:path';
 import { MAX_FPS, MIN_FPS, formatUrlParams } from '../shared/url-params.js';
-import { ENGINE_PAGE } from './session.js';
+import { CliError, ENGINE_PAGE } from './session.js';
 
 /** A flag or value the command cannot use: said with the verb's usage, exit 2. */
 export class UsageError extends Error {}
@@ -144,11 +144,29 @@ export function readViewOptions(values, defaultSize, { fps: defaultFps = DEFAULT
       throw new UsageError(
         `--channel${i} ${file}: the command line has no ${device === 'webcam' ? 'webcam' : 'microphone'} (the page has); give a ${device === 'webcam' ? 'video' : 'music'} file instead`,
       );
+    if (file !== null) checkChannelFile(file, i);
     return file;
   });
   const date = readDate(values.date);
   const fps = values.fps === undefined ? defaultFps : readNumber(values.fps, '--fps', { min: MIN_FPS, max: maxFps });
   return { size, time, frame, mouse, controls, channels, date, fps, media: readMediaOptions(values) };
+}
+
+/** What a channel takes, said when it is given something else. */
+const CHANNEL_TAKES = "an image, video or music file, a volume (the site's .bin) or a cubemap's first face";
+
+/**
+ * A --channelN file that can be read and is not a shader, checked before any browser starts: one
+ * that is not there is said with its flag (exit 1, as a SHADER that is not there), and a shader
+ * given as a channel's input is refused (exit 2), not drawn with a black channel and a warning.
+ * @param {string} file
+ * @param {number} index
+ */
+function checkChannelFile(file, index) {
+  const flag = `--channel${index} ${file}`;
+  if (!fs.existsSync(file)) throw new CliError(`${flag}: no such file`);
+  if (fs.statSync(file).isDirectory()) throw new UsageError(`${flag}: a folder; give ${CHANNEL_TAKES}`);
+  if (/\.(glsl|frag|json)$/i.test(file)) throw new UsageError(`${flag}: a shader, not a channel's input; give ${CHANNEL_TAKES}`);
 }
 
 /**

@@ -17,12 +17,36 @@
 
 import { CUBE_A_NAME, CUBE_A_UNIFORMS } from './cube-a.js';
 
-/** Shadertoy's header for a WebGL2 Image pass, line for line. */
-export const SHADERTOY_HEADER = `#version 300 es
+// What the header declares besides the uniforms (issue 45), read in the same copy of the site's
+// player, EffectPass.MakeHeader_Image, and in the site's Image pass as compiled today (copies of it
+// in public repositories, with `vec4 color = vec4(1e20)`, declare the same):
+// - after each channel's sampler, a struct of that channel, `iCh0` … `iCh3`, its `sampler` (of
+//   the channel's sampler type), `size` (iChannelResolution[i]), `time` (iChannelTime[i]) and
+//   `loaded` (1 when the channel holds something; EffectPass.Paint_Image's texIsLoaded). That
+//   player sets no texture unit for the `sampler` (so it would read unit 0, iChannel0's); the
+//   page binds channel i's texture to it, with the channel's filter (channel-bindings.js);
+// - `st_assert(bool)` and `st_assert(bool, int)`, declared after mainImage and defined after the
+//   output: a failed assertion marks a component of the output, which `main` sets to 1 before
+//   mainImage; after it, a marked x makes the pixel red, y green, z blue, w yellow (v 0, 1, 2,
+//   anything else), the later test winning. Only the Image pass has them: MakeHeader_Buffer and
+//   MakeHeader_Cubemap declare neither, so a buffer calling st_assert fails there as here.
+// The older `struct Channel { vec3 resolution; float time; }; uniform Channel iChannel[4];` of
+// copies from before is declared no more: only a leftover of it remains in that player
+// (EffectPass.SetUniforms sets "iChannel[0].time", which no pass declares).
+// piRenderer (piLibs.js, CreateRenderer: mShaderHeader) puts the version and the precisions
+// before every pass, the precisions inside `#ifdef GL_ES`.
+
+/** What the site's renderer puts first in every WebGL2 shader (piLibs.js: mShaderHeader). */
+export const SHADER_PRELUDE = `#version 300 es
+#ifdef GL_ES
 precision highp float;
 precision highp int;
 precision mediump sampler3D;
-#define HW_PERFORMANCE 1
+#endif
+`;
+
+/** The Image, buffer and Cube A passes' uniforms (MakeHeader_Image, _Buffer, _Cubemap). */
+const UNIFORM_DECLARATIONS = `#define HW_PERFORMANCE 1
 uniform vec3 iResolution;
 uniform float iTime;
 uniform float iChannelTime[4];
@@ -33,21 +57,80 @@ uniform vec3 iChannelResolution[4];
 uniform int iFrame;
 uniform float iTimeDelta;
 uniform float iFrameRate;
-uniform sampler2D iChannel0;
-uniform sampler2D iChannel1;
-uniform sampler2D iChannel2;
-uniform sampler2D iChannel3;
-void mainImage(out vec4 c, in vec2 f);
-out vec4 shadertoy_out_color;
+`;
+
+export const SAMPLER_DECLARATIONS = Object.freeze({ '2D': 'sampler2D', Cube: 'samplerCube', '3D': 'sampler3D' });
+
+/**
+ * The four channels' declarations: each one's sampler, and in the Image pass its struct after it.
+ * @param {Array<'2D' | 'Cube' | '3D'>} types
+ * @param {boolean} structs
+ */
+function channelDeclarations(types, structs) {
+  return types
+    .map((type, i) => {
+      const sampler = SAMPLER_DECLARATIONS[type];
+      if (!sampler) throw new Error(`composePassShader: unknown sampler type ${JSON.stringify(type)} for iChannel${i}`);
+      const struct = `uniform struct {\n    ${sampler} sampler;\n    vec3 size;\n    float time;\n    int loaded;\n} iCh${i};\n`;
+      return `uniform ${sampler} iChannel${i};\n${structs ? struct : ''}`;
+    })
+    .join('');
+}
+
+/** The entry point each pass declares before its `main` (MakeHeader_Cubemap: mainCubemap). */
+const MAIN_IMAGE_DECLARATION = 'void mainImage(out vec4 c, in vec2 f);\n';
+const MAIN_CUBEMAP_DECLARATION = 'void mainCubemap(out vec4 c, in vec2 f, in vec3 ro, in vec3 rd);\n';
+
+/** The Image pass's st_assert, declared after mainImage and defined after the output. */
+const ST_ASSERT_DECLARATIONS = 'void st_assert(bool cond);\nvoid st_assert(bool cond, int v);\n';
+const ST_ASSERT_DEFINITIONS = `void st_assert(bool cond, int v) {
+    if (!cond) {
+        if (v == 0) shadertoy_out_color.x = -1.0;
+        else if (v == 1) shadertoy_out_color.y = -1.0;
+        else if (v == 2) shadertoy_out_color.z = -1.0;
+        else shadertoy_out_color.w = -1.0;
+    }
+}
+void st_assert(bool cond) {
+    if (!cond) shadertoy_out_color.x = -1.0;
+}
 `;
 
 /**
- * Shadertoy's `main` for the Image pass, the header's last lines: the colour starts at
- * vec4(1e20) (a shader that never writes it renders white), and alpha is forced to 1.
+ * A pass's header up to its `main`: the prelude, the uniforms, the channels, the entry point's
+ * declaration, the output; the Image pass's with its channel structs and st_assert.
+ * @param {'image' | 'buffer' | 'cubemap'} kind
+ * @param {Array<'2D' | 'Cube' | '3D'>} types the four channels' sampler types
+ */
+function passHeader(kind, types) {
+  const image = kind === 'image';
+  return (
+    SHADER_PRELUDE +
+    UNIFORM_DECLARATIONS +
+    channelDeclarations(types, image) +
+    (kind === 'cubemap' ? MAIN_CUBEMAP_DECLARATION : MAIN_IMAGE_DECLARATION) +
+    (image ? ST_ASSERT_DECLARATIONS : '') +
+    'out vec4 shadertoy_out_color;\n' +
+    (image ? ST_ASSERT_DEFINITIONS : '')
+  );
+}
+
+/** Shadertoy's header for a WebGL2 Image pass with four 2D channels, line for line, up to its `main`. */
+export const SHADERTOY_HEADER = passHeader('image', ['2D', '2D', '2D', '2D']);
+
+/**
+ * Shadertoy's `main` for the Image pass, the header's last lines: the output starts at 1 (a
+ * failed st_assert makes a component of it negative), the colour at vec4(1e20) (a shader that
+ * never writes it renders white); a marked component gives the pixel its colour; alpha is 1.
  */
 export const SHADERTOY_IMAGE_MAIN = `void main(void) {
+    shadertoy_out_color = vec4(1.0, 1.0, 1.0, 1.0);
     vec4 color = vec4(1e20);
     mainImage(color, gl_FragCoord.xy);
+    if (shadertoy_out_color.x < 0.0) color = vec4(1.0, 0.0, 0.0, 1.0);
+    if (shadertoy_out_color.y < 0.0) color = vec4(0.0, 1.0, 0.0, 1.0);
+    if (shadertoy_out_color.z < 0.0) color = vec4(0.0, 0.0, 1.0, 1.0);
+    if (shadertoy_out_color.w < 0.0) color = vec4(1.0, 1.0, 0.0, 1.0);
     shadertoy_out_color = vec4(color.xyz, 1.0);
 }
 `;
@@ -202,12 +285,6 @@ void main(void) {
 }
 `;
 
-/** The Cube A pass declares mainCubemap where the others declare mainImage (MakeHeader_Cubemap). */
-const MAIN_IMAGE_DECLARATION = 'void mainImage(out vec4 c, in vec2 f);';
-const MAIN_CUBEMAP_DECLARATION = 'void mainCubemap(out vec4 c, in vec2 f, in vec3 ro, in vec3 rd);';
-
-export const SAMPLER_DECLARATIONS = Object.freeze({ '2D': 'sampler2D', Cube: 'samplerCube', '3D': 'sampler3D' });
-
 /**
  * A tiled still (the command line's --tile: a picture larger than one draw may be) draws each
  * tile with iResolution the whole picture's and fragCoord moved by the tile's place in it: the
@@ -242,13 +319,8 @@ const TILED_IMAGE_MAIN = SHADERTOY_IMAGE_MAIN.replace('gl_FragCoord.xy', `gl_Fra
  */
 export function composePassShader(code, { common = null, hostBlock = '', kind = 'image', name, channelTypes, tiled = false } = {}) {
   if (tiled && kind !== 'image') throw new Error('composePassShader: only the Image pass is drawn in tiles');
-  let header = SHADERTOY_HEADER;
-  (channelTypes ?? []).forEach((type, i) => {
-    const declaration = SAMPLER_DECLARATIONS[type];
-    if (!declaration) throw new Error(`composePassShader: unknown sampler type ${JSON.stringify(type)} for iChannel${i}`);
-    header = header.replace(`uniform sampler2D iChannel${i};`, `uniform ${declaration} iChannel${i};`);
-  });
-  if (kind === 'cubemap') header = header.replace(MAIN_IMAGE_DECLARATION, MAIN_CUBEMAP_DECLARATION);
+  const types = /** @type {Array<'2D' | 'Cube' | '3D'>} */ ([0, 1, 2, 3].map((i) => channelTypes?.[i] ?? '2D'));
+  const header = passHeader(kind, types);
   const main =
     { buffer: SHADERTOY_BUFFER_MAIN, cubemap: SHADERTOY_CUBEMAP_MAIN }[kind] ?? (tiled ? TILED_IMAGE_MAIN : SHADERTOY_IMAGE_MAIN);
   // the tile's uniform is declared before the `main` that reads it
@@ -288,7 +360,7 @@ export function locatePassLine(sections, line) {
  */
 export function composeCommonShader(common) {
   const before = [
-    ...SHADERTOY_HEADER.split('\n').slice(0, 4),
+    SHADER_PRELUDE.trimEnd(),
     'uniform vec4 iDate;',
     'uniform float iSampleRate;',
     'out vec4 shadertoy_out_color;',

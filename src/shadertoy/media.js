@@ -16,6 +16,16 @@
 // - the sampler's filter, wrap and vflip apply as read (Sampler2Renderer); its `srgb` is read and
 //   kept but applied by nothing there, so not here either.
 
+/**
+ * How the page says that a channel's media needs a media folder, and that a file is not in the
+ * one it has: the command line, which knows what --media and --fetch-media were given, says the
+ * same in its own words (src/cli/media.js commandLineWords).
+ */
+export const MEDIA_WORDS = Object.freeze({
+  noFolder: "needs the site's media: give a media folder (shaderproof --media DIR, or the page's ?media=URL)",
+  notInFolder: 'is not in the media folder',
+});
+
 /** The site's media paths: `/media/a/<hash>.<ext>` (and the older `/presets/…` previews). */
 const SITE_MEDIA = /^\/media\/(.+)$/;
 

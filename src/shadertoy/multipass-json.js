@@ -23,6 +23,7 @@
 
 import { BUFFER_NAMES, DEFAULT_SAMPLER, MultipassError, bufferPassName, unsupportedNote, validateModel } from './multipass.js';
 import { CUBE_A_FILE, CUBE_A_ID, CUBE_A_LEGACY_ID, CUBE_A_NAME } from './cube-a.js';
+import { jsonSyntaxError } from '../shared/json-syntax.js';
 
 const SITE_IDS = { A: '4dXGR8', B: 'XsXGR8', C: '4sXGR8', D: 'XdfGR8', keyboard: '4dXGRr', image: '4dfGRr', cube: CUBE_A_ID };
 const LEGACY_IDS = { A: 257, B: 258, C: 259, D: 260, keyboard: 33, image: 37, cube: CUBE_A_LEGACY_ID };
@@ -50,7 +51,7 @@ export function fromShadertoyJson(json) {
     try {
       value = JSON.parse(value);
     } catch (error) {
-      throw new MultipassError(`not JSON: ${error.message}`);
+      throw new MultipassError(`not JSON: ${jsonSyntaxError(value) ?? String(error.message).replace(/\s*\n\s*/g, ' ')}`);
     }
   }
   if (Array.isArray(value)) {

@@ -27,7 +27,7 @@
 //   iChannelResolution and iChannel0..3, and nothing else (no iTime, iResolution, iMouse,
 //   iFrame); Common is included before the tab, as in every pass.
 
-import { SAMPLER_DECLARATIONS, countNewlines } from './header.js';
+import { SAMPLER_DECLARATIONS, SHADER_PRELUDE, countNewlines } from './header.js';
 
 /** Samples a second (the site's mSampleRate and iSampleRate). */
 export const SAMPLE_RATE = 44_100;
@@ -41,11 +41,7 @@ export const PLAY_SECONDS = 180;
 export const SAMPLE_OFFSET_UNIFORM = 'iSampleOffset';
 export const TIME_OFFSET_UNIFORM = 'iTimeOffset';
 
-const SOUND_HEADER = `#version 300 es
-precision highp float;
-precision highp int;
-precision mediump sampler3D;
-#define HW_PERFORMANCE 1
+const SOUND_HEADER = `${SHADER_PRELUDE}#define HW_PERFORMANCE 1
 uniform float iChannelTime[4];
 uniform float ${TIME_OFFSET_UNIFORM};
 uniform int ${SAMPLE_OFFSET_UNIFORM};

@@ -68,7 +68,7 @@ function sayDrawnBy(recorded, hasReferences, now, { update, referenceDir }) {
  *   session starts, and guard.js's limit (else silenceLimitMs of the watchdog)
  */
 export async function runTest({ values, positionals }, seams = {}) {
-  if (positionals.length !== 1) throw new UsageError(`test: expected one DIR, got ${positionals.length ? positionals.join(' ') : 'none'}`);
+  if (positionals.length !== 1) throw new UsageError(`expected one DIR, got ${positionals.length ? positionals.join(' ') : 'none'}`);
   const dir = path.resolve(positionals[0]);
   if (!fs.existsSync(dir) || !fs.statSync(dir).isDirectory()) throw new CliError(`${positionals[0]}: not a folder`);
   const shard = readShard(values.shard);

@@ -35,7 +35,8 @@ const SKIPPED_DIRS = /^(\.|__|node_modules$)/;
 const DEFAULT_TOLERANCE = Object.freeze({ threshold: 0, maxDiffPixels: 0 });
 /** A half-size render is a different sampling of the picture: close, not equal. */
 const DEFAULT_HALF_SIZE = Object.freeze({ threshold: 0.1, maxDiffFraction: 0.05 });
-const DEFAULT_SIZE = { width: 320, height: 180 };
+/** A case's size unless its manifest says otherwise: smaller than render's 640x360, a suite being many renders. */
+export const DEFAULT_SIZE = Object.freeze({ width: 320, height: 180 });
 
 const CASE_KEYS = [
   'size',

@@ -9,8 +9,8 @@
 
 import * as THREE from 'three';
 import { composePassShader } from '../../shadertoy/header.js';
-import { formatShaderMessages, parseShaderLog, userLineOffset } from '../../shadertoy/shader-errors.js';
-import { formatPassMessages, parsePassShaderLog } from '../../shadertoy/pass-errors.js';
+import { parseShaderLog, userLineOffset } from '../../shadertoy/shader-errors.js';
+import { formatCompileMessages, passCheck, passMessages } from '../../shadertoy/pass-errors.js';
 import { channelTypes, frameSchedule } from '../../shadertoy/multipass.js';
 import { ShaderCompileError } from './errors.js';
 import { verbatimStandIn } from './verbatim-source.js';
@@ -80,8 +80,6 @@ export class PassCompiler {
   async compileSteps(project, hostBlock, fileName, passUniforms, { tiled = false } = {}) {
     const schedule = frameSchedule(project);
     if (tiled && schedule.length > 1) throw new Error("a shader with buffers is not drawn in tiles: its buffers are the picture's size");
-    const multipass = project.common !== null || schedule.length > 1;
-    const sources = Object.fromEntries([['Common', project.common ?? ''], ...project.passes.map((pass) => [pass.name, pass.code])]);
     const messages = [];
     /** @type {Step[]} */
     const steps = [];
@@ -95,10 +93,7 @@ export class PassCompiler {
         channelTypes: channelTypes(pass),
         tiled,
       });
-      const check = {
-        userText: (project.common === null ? '' : project.common + '\n') + pass.code,
-        sections: multipass ? composed.sections : null,
-      };
+      const check = passCheck(project, pass, composed);
       try {
         // the Cube A pass has uniforms of its own (cube-buffer.js), its iResolution among them
         const uniforms = pass.kind === 'cubemap' ? () => ({ ...passUniforms(), ...CubeBuffer.ownUniforms() }) : passUniforms;
@@ -112,8 +107,7 @@ export class PassCompiler {
     }
     if (messages.length) {
       for (const step of steps) this._remember(step.material.fragmentShader, step.material);
-      const report = multipass ? formatPassMessages(messages, sources) : formatShaderMessages(messages, project.passes[0].code, fileName);
-      throw new ShaderCompileError(report, messages);
+      throw new ShaderCompileError(formatCompileMessages(messages, project, fileName), messages);
     }
     for (const step of steps) this._remember(step.material.fragmentShader, step.material);
     return steps;
@@ -202,11 +196,8 @@ export class PassCompiler {
     if (!check) return;
     const offset = userLineOffset(gl.getShaderSource(fragmentShader) ?? '', check.code, check.firstSourceLine, check.userText);
     const log = gl.getShaderInfoLog(fragmentShader) ?? '';
-    const fragment = check.sections
-      ? parsePassShaderLog(log, offset, check.sections)
-      : parseShaderLog(log, offset, check.userText.split('\n').length).map((m) => ({ ...m, pass: null }));
     const messages = [
-      ...fragment,
+      ...passMessages(log, offset, check),
       ...parseShaderLog(gl.getShaderInfoLog(vertexShader) ?? '', null, 0).map((m) => ({
         ...m,
         pass: null,

@@ -12,6 +12,7 @@
 
 import {
   LIBRARY_KINDS,
+  MEDIA_WORDS,
   MOVING_LIBRARY_KINDS,
   cubeFaceOrder,
   isOneChannelTexture,
@@ -195,14 +196,14 @@ export class MediaLibrary {
     const files = mediaFiles(channel);
     const what = `the site's ${channel.kind} ${channel.src || '(no file)'}`;
     if (!files.length) return `${what} is not a path of the site's media (/media/…)`;
-    if (!this.base) return `${what} needs the site's media: give a media folder (shaderproof --media DIR, or the page's ?media=URL)`;
+    if (!this.base) return `${what} ${MEDIA_WORDS.noFolder}`;
     const base = this.base;
     const fetched = await Promise.allSettled(files.map((file) => this.fetchFile(new URL(mediaUrlPath(file), base).href)));
     const failed = fetched.findIndex((result) => result.status === 'rejected');
     if (failed >= 0) {
       const { message } = /** @type {PromiseRejectedResult} */ (fetched[failed]).reason;
       return /HTTP 404/.test(message)
-        ? `${what}: ${files[failed]} is not in the media folder`
+        ? `${what}: ${files[failed]} ${MEDIA_WORDS.notInFolder}`
         : `${what}: could not fetch ${files[failed]} from the media folder (${message})`;
     }
     const blobs = fetched.map((result) => /** @type {PromiseFulfilledResult<Blob>} */ (result).value);

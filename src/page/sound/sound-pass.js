@@ -9,7 +9,7 @@
 
 import * as THREE from 'three';
 import { ShaderCompileError } from '../gpu/errors.js';
-import { formatPassMessages } from '../../shadertoy/pass-errors.js';
+import { formatCompileMessages, passCheck } from '../../shadertoy/pass-errors.js';
 import { channelTypes, soundPass } from '../../shadertoy/multipass.js';
 import { mediaKey } from '../gpu/channels/channel-bindings.js';
 import {
@@ -54,16 +54,16 @@ export class SoundPass {
     const pass = soundPass(project);
     if (!pass) return null;
     const composed = composeSoundShader(pass.code, { common: project.common, channelTypes: channelTypes(pass) });
-    const check = { userText: (project.common === null ? '' : project.common + '\n') + pass.code, sections: composed.sections };
+    const check = passCheck(project, pass, composed);
     try {
       const material = await this.renderer.compiler.compileOne(composed, check, () => this.uniforms());
       material.userData.channelTypes = channelTypes(pass); // what each channel is declared: bindMedia
       return material;
     } catch (error) {
       if (!error.messages) throw error;
-      // said as the other tabs' errors are: "Sound:3: ERROR: ..." with the line under it
-      const sources = { Common: project.common ?? '', Sound: pass.code };
-      throw new ShaderCompileError(formatPassMessages(error.messages, sources), error.messages);
+      // said as the other tabs' errors are: "Sound:3: error: ..." with the line under it (a
+      // shader with a Sound tab has two tabs at least: its messages name tabs, never the file)
+      throw new ShaderCompileError(formatCompileMessages(error.messages, project, ''), error.messages);
     }
   }
 

@@ -4,9 +4,7 @@
 // context, a frame that may never finish, a page that could not start. What the tests read of
 // the same states (data-error, data-hung, ...) is the automation hook's: page-marks.js.
 
-import { formatShaderMessages } from '../../shadertoy/shader-errors.js';
-import { formatPassMessages } from '../../shadertoy/pass-errors.js';
-import { projectTabs } from '../io/project-files.js';
+import { formatCompileMessages } from '../../shadertoy/pass-errors.js';
 import { goBack } from '../app/gpu-context.js';
 import { element } from './dom.js';
 import { extraSamplesViewNote } from '../../raytracer/extra-samples.js';
@@ -242,10 +240,9 @@ export function installViewNote(app, stage) {
  * @param {string} fileName
  */
 function messageFormatter(app, fileName) {
-  const tabs = Object.fromEntries(projectTabs(app.project).map((t) => [t.name, t.code]));
-  const source = app.source;
+  const project = app.project;
   return (/** @type {{severity: string, pass?: string | null, line: number | null, message: string}} */ m) =>
-    m.pass ? formatPassMessages([{ ...m, pass: m.pass }], tabs) : formatShaderMessages([m], source, fileName);
+    formatCompileMessages([m], project, fileName);
 }
 
 /**

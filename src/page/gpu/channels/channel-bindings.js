@@ -14,6 +14,8 @@ import * as THREE from 'three';
  * @param {THREE.Texture} black the 1×1 black texture
  */
 export function ownChannelUniforms(black) {
+  /** The Image pass's struct of a channel (header.js: iCh0 … iCh3); other passes declare none. */
+  const struct = () => ({ value: { sampler: black, size: [0, 0, 0], time: 0, loaded: 0 } });
   return {
     iChannel0: { value: black },
     iChannel1: { value: black },
@@ -21,6 +23,10 @@ export function ownChannelUniforms(black) {
     iChannel3: { value: black },
     iChannelResolution: { value: new Array(12).fill(0) },
     iChannelTime: { value: [0, 0, 0, 0] },
+    iCh0: struct(),
+    iCh1: struct(),
+    iCh2: struct(),
+    iCh3: struct(),
   };
 }
 
@@ -40,7 +46,8 @@ export const mediaKey = (passName, channel) => `${passName}:${channel}`;
  *   channels: Array<THREE.Texture | null>, black: THREE.Texture, media: Map<string, {texture: THREE.Texture, size: [number, number, number]}>}} sources
  *   media: the site's media each pass's channels name, by mediaKey (media-textures.js)
  */
-export function bindChannels(step, width, height, { buffers, cube, keyboard, channels, black, media }) {
+export function bindChannels(step, width, height, sources) {
+  const { buffers, cube, keyboard, channels, black } = sources;
   const uniforms = step.material.uniforms;
   const resolution = uniforms.iChannelResolution.value;
   const times = uniforms.iChannelTime.value;
@@ -48,23 +55,31 @@ export function bindChannels(step, width, height, { buffers, cube, keyboard, cha
     const i = binding.channel;
     let texture = null;
     times[i] = 0;
+    // the site's texIsLoaded (EffectPass.Paint_Image): the channel holds something, a buffer or
+    // Cube A no pass writes included (its texture exists, never drawn into); not media this run lacks
+    const kind = step.pass.channels[i]?.kind;
+    let loaded = kind === 'buffer' || kind === 'cubebuffer' || kind === 'keyboard';
     let size = binding.resolution === 'canvas' ? [width, height, 1] : binding.resolution;
     if (binding.source === 'buffer') texture = buffers.read(/** @type {string} */ (binding.buffer));
     else if (binding.source === 'cubebuffer') texture = cube.read();
     else if (binding.source === 'keyboard') texture = keyboard;
-    else if (binding.source === 'black' && media.has(mediaKey(step.pass.name, i))) {
-      const loaded = /** @type {import('./media-textures.js').ChannelTexture} */ (media.get(mediaKey(step.pass.name, i)));
-      texture = loaded.texture;
-      size = loaded.size;
+    else if (binding.source === 'black' && sources.media.has(mediaKey(step.pass.name, i))) {
+      const media = /** @type {import('./media-textures.js').ChannelTexture} */ (sources.media.get(mediaKey(step.pass.name, i)));
+      texture = media.texture;
+      size = media.size;
       times[i] = texture.userData.time ?? 0; // a video's or music's iChannelTime
+      loaded = true;
     } else if (binding.source === 'none' && step.target === 'screen' && channels[i]) {
       texture = channels[i]; // an image the page put into this channel, or a moving one's frame
       size = [texture.image.width, texture.image.height, 1];
       times[i] = texture.userData.time ?? 0; // a video's or music's iChannelTime (media-input.js)
+      loaded = true;
     } else if (binding.samplerType === '2D') texture = black;
     // else null: three.js binds an empty cube or 3D texture for a samplerCube / sampler3D
     uniforms[`iChannel${i}`].value = texture;
     resolution.splice(i * 3, 3, ...size);
+    // the Image pass's iCh<i> (header.js): the same texture, iChannelResolution, iChannelTime
+    Object.assign(uniforms[`iCh${i}`].value, { sampler: texture, size: [...size], time: times[i], loaded: loaded ? 1 : 0 });
   }
 }
 
@@ -213,17 +228,26 @@ export class ChannelSamplers {
     const gl = this.gl;
     /** @type {number[]} */
     const samplerTypes = [gl.SAMPLER_2D, gl.SAMPLER_CUBE, gl.SAMPLER_3D, gl.SAMPLER_2D_ARRAY, gl.SAMPLER_2D_SHADOW];
+    /** The units of each channel's samplers: iChannel i's and, in the Image pass, iCh<i>.sampler's. @type {Map<number, number[]>} */
     const units = new Map();
     let unit = 0;
-    for (const uniform of program.getUniforms().seq) {
-      if (!samplerTypes.includes(uniform.type)) continue;
-      const channel = /^iChannel([0-3])$/.exec(uniform.id);
-      if (channel) units.set(Number(channel[1]), unit);
-      unit++;
-    }
+    /** @param {Array<{id: string | number, type?: number, seq?: any[]}>} seq @param {string} [struct] */
+    const visit = (seq, struct) => {
+      for (const uniform of seq) {
+        // a struct's members take their units in their order, where the struct is (StructuredUniform.setValue)
+        if (uniform.seq) visit(uniform.seq, String(uniform.id));
+        if (uniform.type === undefined || !samplerTypes.includes(uniform.type)) continue;
+        const channel = struct ? /^iCh([0-3])$/.exec(struct) : /^iChannel([0-3])$/.exec(String(uniform.id));
+        if (channel) units.set(Number(channel[1]), [...(units.get(Number(channel[1])) ?? []), unit]);
+        unit++;
+      }
+    };
+    visit(program.getUniforms().seq);
     return step.bindings
       .filter((binding) => ['buffer', 'keyboard', 'cubebuffer'].includes(binding.source) && binding.sampler && units.has(binding.channel))
-      .map((binding) => ({ unit: units.get(binding.channel), sampler: this._samplerObject(/** @type {any} */ (binding.sampler)) }));
+      .flatMap((binding) =>
+        (units.get(binding.channel) ?? []).map((at) => ({ unit: at, sampler: this._samplerObject(/** @type {any} */ (binding.sampler)) })),
+      );
   }
 
   /** @param {import('../../../shadertoy/multipass.js').Sampler} sampler */
