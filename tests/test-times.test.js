@@ -1,4 +1,4 @@
-// tests/scripts/test-times.js: the README's per-file table from vitest's JSON report.
+// tests/scripts/test-times.js: the per-file table of docs/testing.md from vitest's JSON report.
 import fs from 'node:fs';
 import os from 'node:os';
 import path from 'node:path';
@@ -33,7 +33,7 @@ describe('the suite time table', () => {
     expect(times.inFiles).toBe(12.75);
   });
 
-  test("a report from another checkout (a worktree) links the README's own paths", () => {
+  test("a report from another checkout (a worktree) links the repository's own paths", () => {
     const elsewhere = fs.mkdtempSync(path.join(os.tmpdir(), 'checkout-'));
     fs.writeFileSync(path.join(elsewhere, 'package.json'), '{}');
     const report = { ...REPORT, testResults: [{ ...REPORT.testResults[0], name: path.join(elsewhere, 'tests', 'bench', 'x.test.js') }] };

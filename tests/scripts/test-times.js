@@ -1,4 +1,4 @@
-// The suite's time, file by file, in README.md's Tests section (between the test-times markers).
+// The suite's time, file by file, in docs/testing.md (between the test-times markers).
 //
 //   npm run test:times                  runs `npm test` with vitest's JSON reporter beside its own,
 //                                       then writes the table
@@ -16,7 +16,7 @@ import path from 'node:path';
 import { OUTPUT_DIR, REPO_ROOT } from '../harness/config.js';
 import { replaceMarkedSection } from './readme-section.js';
 
-const README = path.join(REPO_ROOT, 'README.md');
+const TIMES_DOC = path.join(REPO_ROOT, 'docs', 'testing.md');
 const DEFAULT_REPORT = path.join(OUTPUT_DIR, 'test-times.json');
 
 /**
@@ -26,7 +26,7 @@ const DEFAULT_REPORT = path.join(OUTPUT_DIR, 'test-times.json');
 
 /**
  * The checkout a test file belongs to: the nearest folder above it with a package.json (a run in
- * another worktree names its own files, whose links must still be the README's own paths).
+ * another worktree names its own files, whose links must still be the repository's own paths).
  * @param {string} file
  */
 function checkoutOf(file) {
@@ -52,14 +52,17 @@ export function timesOf(report) {
   return { files, wall, inFiles, tests: report.numTotalTests, failed: report.numFailedTests };
 }
 
-/** The README's table. @param {ReturnType<typeof timesOf>} times @param {string} machine */
-export function tableOf({ files, wall, inFiles, tests, failed }, machine) {
+/**
+ * The table, its links relative to `linkFrom` (the folder of the document it goes in).
+ * @param {ReturnType<typeof timesOf>} times @param {string} machine @param {string} [linkFrom]
+ */
+export function tableOf({ files, wall, inFiles, tests, failed }, machine, linkFrom = '') {
   const lines = [
     `${tests} tests in ${files.length} files, ${wall.toFixed(0)} s of wall time (${inFiles.toFixed(0)} s in the files, the rest set-up: the build, Chromium)${failed ? `, ${failed} failed` : ''}, on ${machine}; written by \`npm run test:times\`.`,
     '',
     '| file | tests | s |',
     '|---|---:|---:|',
-    ...files.map((f) => `| [${path.basename(f.file)}](${f.file}) | ${f.tests} | ${f.seconds.toFixed(1)} |`),
+    ...files.map((f) => `| [${path.basename(f.file)}](${linkFrom}${f.file}) | ${f.tests} | ${f.seconds.toFixed(1)} |`),
   ];
   return lines.join('\n');
 }
@@ -86,7 +89,7 @@ function main(argv) {
       { cwd: REPO_ROOT, stdio: 'inherit' },
     );
     if (run.status !== 0) {
-      console.error(`test-times: the suite failed (exit ${run.status}); README.md is left as it was.`);
+      console.error(`test-times: the suite failed (exit ${run.status}); docs/testing.md is left as it was.`);
       return run.status ?? 1;
     }
   }
@@ -94,11 +97,11 @@ function main(argv) {
   const report = JSON.parse(fs.readFileSync(reportFile, 'utf8'));
   const times = timesOf(report);
   if (times.failed) {
-    console.error(`test-times: ${times.failed} tests failed in ${reportFile}; README.md is left as it was.`);
+    console.error(`test-times: ${times.failed} tests failed in ${reportFile}; docs/testing.md is left as it was.`);
     return 1;
   }
-  replaceMarkedSection(README, 'test-times', tableOf(times, machineName()));
-  console.log(`README.md: ${times.tests} tests, ${times.wall.toFixed(0)} s of wall time, ${times.files.length} files.`);
+  replaceMarkedSection(TIMES_DOC, 'test-times', tableOf(times, machineName(), '../'));
+  console.log(`docs/testing.md: ${times.tests} tests, ${times.wall.toFixed(0)} s of wall time, ${times.files.length} files.`);
   return 0;
 }
 
