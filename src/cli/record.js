@@ -3,6 +3,7 @@
 // mediabunny) or a zip of PNGs, with a progress bar on a terminal.
 
 import { runLong } from '../engine/long-work.js';
+import { hungLine } from './watchdog.js';
 import { writeWhole } from '../engine/png.js';
 import { frameProgress, io, oneShader, progressBar, sayNotes, sessionOptions } from './io.js';
 import { renderShader } from './render.js';
@@ -39,9 +40,10 @@ export async function runRecord({ values, positionals }) {
     const bar = progressBar('frames');
     let result;
     try {
-      result = await runLong(page, { method: 'record', request, total: frames, progress: bar.update });
+      result = await runLong(page, { method: 'record', request, total: frames, progress: bar.update, limits: session.limits });
     } catch (error) {
-      throw Object.assign(new CliError(`${file}: ${error.message.split('\n')[0]}`), { hung: Boolean(error.hung) });
+      const said = error.hung ? hungLine(session.limits) : error.message.split('\n')[0];
+      throw Object.assign(new CliError(`${file}: ${said}`), { hung: Boolean(error.hung) });
     } finally {
       bar.end();
     }

@@ -7,6 +7,7 @@
 import fs from 'node:fs';
 import path from 'node:path';
 import { runLong } from '../engine/long-work.js';
+import { hungLine } from './watchdog.js';
 import { writePng, writeWhole } from '../engine/png.js';
 import { fromBase64 } from '../shared/pixels.js';
 import { io, progressBar } from './io.js';
@@ -64,12 +65,13 @@ export async function renderShader(session, file, view, { converge = null, progr
             request: { frame: view.frame, fps: view.fps, width: view.size.width, height: view.size.height },
             total: /** @type {number} */ (view.frame) + 1,
           };
-    const value = await runLong(page, { ...work, progress: progress ? bar.update : undefined });
+    const value = await runLong(page, { ...work, progress: progress ? bar.update : undefined, limits: session.limits });
     const shot = converge !== null ? await page.evaluate(() => window.raytracer.capture()) : value;
     return { width: shot.width, height: shot.height, data: fromBase64(shot.data), info: image.info, notes: image.notes };
   } catch (error) {
     const what = converge !== null ? `--converge ${converge}` : `--frame ${view.frame}`;
-    throw Object.assign(new CliError(`${what}: ${file}: ${error.message.split('\n')[0]}`), { hung: Boolean(error.hung) });
+    const said = error.hung ? hungLine(session.limits) : error.message.split('\n')[0];
+    throw Object.assign(new CliError(`${what}: ${file}: ${said}`), { hung: Boolean(error.hung) });
   } finally {
     bar.end();
   }

@@ -21,10 +21,13 @@ const POLL_MS = 250;
  * `progressOf` reading: 'recording' for record and frameAt, 'stillFrames' for a converge).
  * Rejects with the page's error, or with `hung` set when the watchdog gave up on the shader.
  * @param {import('puppeteer-core').Page} page
+ * With `limits` (the command line's watchdog, view.js), a page that leaves an ask unanswered for
+ * longer than a program's first draw may take has hung too: its own thread is held, and its
+ * watchdog cannot speak.
  * @param {{method: 'record' | 'frameAt' | 'converge', request: any, total: number,
- *   progress?: (done: number, total: number) => void}} work
+ *   progress?: (done: number, total: number) => void, limits?: import('./view.js').ProgressLimits | null}} work
  */
-export async function runLong(page, { method, request, total, progress = () => {} }) {
+export async function runLong(page, { method, request, total, progress = () => {}, limits = null }) {
   await page.evaluate(
     (m, r, t) => {
       const hook = /** @type {any} */ (window.raytracer);
@@ -54,8 +57,8 @@ export async function runLong(page, { method, request, total, progress = () => {
     total,
   );
   for (;;) {
-    /** @type {Poll | {state: 'started'}} */
-    const poll = await page.evaluate(
+    /** @type {Promise<Poll | {state: 'started'}>} */
+    const asked = page.evaluate(
       (m, t) => {
         const hook = /** @type {any} */ (window.raytracer);
         const settled = /** @type {any} */ (window).__longWork.settled;
@@ -76,6 +79,13 @@ export async function runLong(page, { method, request, total, progress = () => {
       method,
       total,
     );
+    asked.catch(() => {}); // an ask given up on below fails when the page is closed
+    let timer;
+    const poll = await (limits
+      ? Promise.race([asked, new Promise((resolve) => (timer = setTimeout(resolve, limits.compileHangMs, null)))])
+      : asked);
+    clearTimeout(timer);
+    if (poll === null) throw Object.assign(new Error('the page stopped answering while it drew'), { hung: true });
     if (poll.state === 'done') return poll.value;
     if (poll.state === 'failed') throw new Error(poll.error);
     if (poll.state === 'hung')
