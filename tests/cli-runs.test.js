@@ -198,7 +198,7 @@ describe('never a silent half-render (issue 37, item 4; its words: issue 45, ite
   );
   // one texture, two passes: one line naming both
   const NOISE_LINE = new RegExp(
-    `^warning: half\\.json: iChannel0 of Image and Sound: the site's texture /media/a/noise\\.png ${MEDIA}; the channel is black$`,
+    `^warning: half\\.json: Image and Sound, iChannel0: the site's texture /media/a/noise\\.png ${MEDIA}; both channels are black$`,
     'm',
   );
 

@@ -9,7 +9,8 @@ import os from 'node:os';
 import path from 'node:path';
 import { afterAll, beforeAll, describe, expect, test } from 'vitest';
 import { main } from '../src/cli/main.js';
-import { io, mergeMissingLines, progressBar, sayNotes } from '../src/cli/io.js';
+import { io, progressBar, sayNotes } from '../src/cli/io.js';
+import { sayOnce } from '../src/shared/said-once.js';
 import { commandLineWords, mediaFolders } from '../src/cli/media.js';
 import { DEFAULT_SIZE as TEST_SIZE } from '../src/cli/test/manifest.js';
 import { MEDIA_WORDS } from '../src/shadertoy/media.js';
@@ -195,7 +196,7 @@ describe('one line in our words (issue 45, item 6)', () => {
       { kind: 'values', title: 'Some values were not used as given', lines: ['SPEED: 9 is past its largest, 4'] },
     ]);
     expect(err).toEqual([
-      `warning: wave.json: iChannel0 of Buffer A, Buffer B and Image: ${TEXTURE} needs the site's media: give --media DIR (a folder laid out as the site's paths) or --fetch-media; the channel is black`,
+      `warning: wave.json: Buffer A, Buffer B and Image, iChannel0: ${TEXTURE} needs the site's media: give --media DIR (a folder laid out as the site's paths) or --fetch-media; all 3 channels are black`,
       'warning: wave.json: Some values were not used as given: SPEED: 9 is past its largest, 4',
     ]);
     expect(err.join('\n')).not.toMatch(/wave\.json: wave\.json|\?media=|the page's/);
@@ -253,16 +254,16 @@ describe('one line in our words (issue 45, item 6)', () => {
     [['Image, iChannel0: A'], ['Image, iChannel0: A']],
     [
       ['Image, iChannel0: A', 'Buffer A, iChannel0: A', 'Image, iChannel1: B'],
-      ['iChannel0 of Image and Buffer A: A', 'Image, iChannel1: B'],
+      ['Image and Buffer A, iChannel0: A', 'Image, iChannel1: B'],
     ],
-    [['Image, iChannel0: A', 'Sound, iChannel2: A'], ['Image iChannel0, Sound iChannel2: A']],
+    [['Image, iChannel0: A', 'Sound, iChannel2: A'], ["Image's iChannel0 and Sound's iChannel2: A"]],
     [['Image, iChannel0: A', 'Image, iChannel1: A'], ['Image, iChannel0 and iChannel1: A']],
     [
       ['Sound: no audio here', 'Sound: no audio here', 'Image, iChannel0: A'],
       ['Sound: no audio here', 'Image, iChannel0: A'],
     ],
   ])('merged: %j', (lines, merged) => {
-    expect(mergeMissingLines(lines)).toEqual(merged);
+    expect(sayOnce(lines)).toEqual(merged);
   });
 
   test('--channel0 of a file that is not there names the flag, before any browser', async () => {

@@ -76,7 +76,7 @@ describe('the site’s media from the command line, against what the test comput
       const without = await shaderproof('render', 'cube.json', '--size', size, '--media', 'empty', '-o', 'b.png');
       expect(without.code).toBe(0);
       expect(without.stderr).toMatch(
-        /warning: cube\.json: Image, iChannel0 and iChannel1: the site's cubemap \/media\/a\/cube\.png: a\/cube\.png is not in --media \S+empty \(--fetch-media downloads what it lacks\); the channel is black/,
+        /warning: cube\.json: Image, iChannel0 and iChannel1: the site's cubemap \/media\/a\/cube\.png: a\/cube\.png is not in --media \S+empty \(--fetch-media downloads what it lacks\); both channels are black/,
       );
       const strict = await shaderproof('render', 'cube.json', '--size', size, '--strict', '-o', 'c.png');
       expect(strict.code).toBe(1);

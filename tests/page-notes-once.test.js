@@ -1,10 +1,10 @@
 // The note on what a loaded shader goes without says each thing once (issue 45, item 12): one
 // missing video that three passes name was three identical lines over most of an 800x600
-// canvas; it is one line that names the passes. The merging (notices.js sayOnce), case by case;
+// canvas; it is one line that names the passes. The merging (src/shared/said-once.js sayOnce, the command line's too), case by case;
 // then the page at 800x600.
 
 import { afterAll, describe, expect, test } from 'vitest';
-import { sayOnce } from '../src/page/ui/notices.js';
+import { sayOnce } from '../src/shared/said-once.js';
 import { disconnect } from './harness/page.js';
 import { withPage } from './page-helpers.js';
 import { loadNotes } from './page-multipass-helpers.js';

@@ -2,6 +2,7 @@
 // progress and errors), its one SHADER argument, and the watchdog's flag.
 
 import { RENDERER_ENV, chooseRenderer } from '../engine/renderers.js';
+import { sayOnce } from '../shared/said-once.js';
 import { CliError } from './session.js';
 import { watchdogFor } from './watchdog.js';
 import { UsageError, readNumber } from './view-options.js';
@@ -18,7 +19,7 @@ export const io = {
  * The page's notes on a view, one warning line each on stderr: what the shader went without
  * (the note's title, "NAME runs without…", is the line's `warning: FILE:` here), and values
  * that were not used as given (a control clamped into range), as the page shows them. One input
- * missing from several passes is one line naming them (mergeMissingLines). With `strict`, a view
+ * missing from several passes is one line naming them (sayOnce, src/shared/said-once.js). With `strict`, a view
  * that went without an input or a pass is an error instead (nothing is written): a render never
  * claims what did not happen, nor, then, what it drew in its place.
  * @param {string} file
@@ -26,9 +27,10 @@ export const io = {
  * @param {{strict?: boolean}} [options]
  */
 export function sayNotes(file, notes, { strict = false } = {}) {
-  const missing = mergeMissingLines(notes.filter((note) => note.kind === 'missing').flatMap((note) => note.lines));
+  const missing = sayOnce(notes.filter((note) => note.kind === 'missing').flatMap((note) => note.lines));
   if (strict && missing.length) {
-    const what = missing[0].replace(/; the channel is black.*$/, '');
+    // nothing was drawn, so nothing was drawn black ("the channel is", "both channels are", ...)
+    const what = missing[0].replace(/; (the channel is|both channels are|all \d+ channels are) black.*$/, '');
     throw new CliError(
       `${file}: --strict: nothing written, as it goes without ${missing.length === 1 ? what : `${missing.length} of what it asks for, the first: ${what}`}`,
     );
@@ -36,50 +38,6 @@ export function sayNotes(file, notes, { strict = false } = {}) {
   for (const line of missing) io.err(`warning: ${file}: ${line}`);
   for (const { title, lines } of notes.filter((note) => note.kind !== 'missing'))
     for (const line of lines) io.err(`warning: ${file}: ${title}: ${line}`);
-}
-
-/**
- * Lines of the "went without" note, each said once: "PASS, iChannelN: WHAT" lines that differ
- * in where they are (one texture three passes read) become one: "iChannel0 of A, B and C: WHAT",
- * "Image, iChannel0 and iChannel1: WHAT", or "A iChannel0, B iChannel2: WHAT"; the first one's
- * place is kept.
- * @param {string[]} lines
- */
-export function mergeMissingLines(lines) {
-  /** @type {Map<string, Array<{pass: string, channel: string}>>} what → where, in order */
-  const groups = new Map();
-  /** @type {Array<string | {what: string}>} */
-  const order = [];
-  for (const line of lines) {
-    const match = /^([^,:]+), (iChannel\d): (.*)$/.exec(line);
-    if (!match) {
-      if (!order.includes(line)) order.push(line);
-      continue;
-    }
-    const [, pass, channel, what] = match;
-    if (!groups.has(what)) {
-      groups.set(what, []);
-      order.push({ what });
-    }
-    const places = /** @type {Array<{pass: string, channel: string}>} */ (groups.get(what));
-    if (!places.some((p) => p.pass === pass && p.channel === channel)) places.push({ pass, channel });
-  }
-  const list = (/** @type {string[]} */ items) =>
-    items.length < 2 ? items.join('') : `${items.slice(0, -1).join(', ')} and ${items.at(-1)}`;
-  return order.map((entry) => {
-    if (typeof entry === 'string') return entry;
-    const places = /** @type {Array<{pass: string, channel: string}>} */ (groups.get(entry.what));
-    if (places.length === 1) return `${places[0].pass}, ${places[0].channel}: ${entry.what}`;
-    const channels = new Set(places.map((p) => p.channel));
-    const passes = new Set(places.map((p) => p.pass));
-    const where =
-      passes.size === 1
-        ? `${places[0].pass}, ${list(places.map((p) => p.channel))}`
-        : channels.size === 1
-          ? `${places[0].channel} of ${list(places.map((p) => p.pass))}`
-          : places.map((p) => `${p.pass} ${p.channel}`).join(', ');
-    return `${where}: ${entry.what}`;
-  });
 }
 
 /**

@@ -51,7 +51,8 @@ async function start() {
   }
   watchHangs(app, new HangGuard());
   const noticeAfterCompile = showAppOnPage(app, overlay);
-  const showNotes = () => showLoadNotes(stage, `${app.fileName} runs without some of what it asks for`, missingLines(app));
+  const showNotes = () =>
+    showLoadNotes(stage, `${app.fileName} runs without some of what it asks for`, missingLines(app), 'note', { merge: false });
   app.on('source', showNotes);
   app.on('notes', showNotes);
   const open = (/** @type {string} */ query) => {

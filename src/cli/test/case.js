@@ -9,7 +9,8 @@ import fs from 'node:fs';
 import path from 'node:path';
 import { compareImages } from '../../engine/compare.js';
 import { readPng, writePng } from '../../engine/png.js';
-import { allowedMissing, mergeMissingLines } from '../io.js';
+import { allowedMissing } from '../io.js';
+import { sayOnce } from '../../shared/said-once.js';
 import { renderShader } from '../render.js';
 import { renderSound, writeWav } from '../sound.js';
 import { CliError } from '../session.js';
@@ -117,14 +118,12 @@ export async function runCase(session, testCase, { update, out, thumbnails }) {
   const missing = image.notes.filter((n) => n.kind === 'missing').flatMap((n) => n.lines);
   result.missing = missing.map((line) => ({ line, allowed: allowedMissing(line, testCase.allowMissing) }));
   const unallowed = result.missing.filter((m) => !m.allowed).map((m) => m.line);
-  // each line checked on its own, said once however many passes share it (io.js mergeMissingLines)
-  for (const line of mergeMissingLines(missing)) notes.push(`went without (allowed): ${line}`);
+  // each line checked on its own, said once however many passes share it (src/shared/said-once.js)
+  for (const line of sayOnce(missing)) notes.push(`went without (allowed): ${line}`);
   if (unallowed.length) {
     notes.splice(0);
     failures.push(
-      ...mergeMissingLines(unallowed).map(
-        (line) => `went without: ${line} (allow it with "allowMissing" in shaderproof.json, or give the input)`,
-      ),
+      ...sayOnce(unallowed).map((line) => `went without: ${line} (allow it with "allowMissing" in shaderproof.json, or give the input)`),
     );
     if (update) failures.push('no reference written from a render that went without what the shader asks for');
     keep('actual', image);

@@ -4,6 +4,7 @@
 // context, a frame that may never finish, a page that could not start. What the tests read of
 // the same states (data-error, data-hung, ...) is the automation hook's: page-marks.js.
 
+import { sayOnce } from '../../shared/said-once.js';
 import { formatCompileMessages } from '../../shadertoy/pass-errors.js';
 import { goBack } from '../app/gpu-context.js';
 import { element } from './dom.js';
@@ -70,49 +71,19 @@ function showNote(stage, id, title, lines, kind = 'note') {
   return note;
 }
 
-/** "A", "A and B", "A, B and C". @param {string[]} names */
-const listed = (names) => (names.length < 2 ? names.join('') : `${names.slice(0, -1).join(', ')} and ${names[names.length - 1]}`);
-
-/**
- * The lines of a note, each thing said once: lines that say the same of several channels
- * ("Buffer A, iChannel0: the site's video … is not in the media folder; the channel is black",
- * and the same of Buffer B and Image) become one line that names them all ("Buffer A, Buffer B
- * and Image, iChannel0: …; all 3 channels are black"), where the first of them was; a line said
- * twice is said once.
- * @param {string[]} lines
- * @returns {string[]}
- */
-export function sayOnce(lines) {
-  /** What is said, and of which channels, in the order first said. @type {Map<string, Array<{pass: string, channel: string}>>} */
-  const said = new Map();
-  for (const line of lines) {
-    const of = /^(.+?), (iChannel\d): (.*)$/s.exec(line);
-    const what = of ? of[3] : line;
-    const channels = said.get(what) ?? [];
-    if (of && !channels.some((c) => c.pass === of[1] && c.channel === of[2])) channels.push({ pass: of[1], channel: of[2] });
-    said.set(what, channels);
-  }
-  return [...said].map(([what, channels]) => {
-    if (channels.length === 0) return what;
-    if (channels.length === 1) return `${channels[0].pass}, ${channels[0].channel}: ${what}`;
-    const oneChannel = channels.every((c) => c.channel === channels[0].channel);
-    const where = oneChannel
-      ? `${listed(channels.map((c) => c.pass))}, ${channels[0].channel}`
-      : listed(channels.map((c) => `${c.pass}'s ${c.channel}`));
-    const all = channels.length === 2 ? 'both channels are' : `all ${channels.length} channels are`;
-    return `${where}: ${what.replace(/; the channel is black/, `; ${all} black`)}`;
-  });
-}
-
 /**
  * The note on a loaded shader: what it cannot have (media its JSON names), each thing once
- * (sayOnce), or why a file could not be read as a shader (`kind` 'error').
+ * (sayOnce), or why a file could not be read as a shader (`kind` 'error'). The engine page shows
+ * the lines as they are (`merge` false): the command line reads them one by one (a test case's
+ * allowMissing names a pass and a channel) and says each thing once itself.
  * @param {HTMLElement} stage
  * @param {string} title
  * @param {string[]} lines
  * @param {'note' | 'error'} [kind]
+ * @param {{merge?: boolean}} [options]
  */
-export const showLoadNotes = (stage, title, lines, kind = 'note') => showNote(stage, NOTE_ID, title, sayOnce(lines), kind);
+export const showLoadNotes = (stage, title, lines, kind = 'note', { merge = true } = {}) =>
+  showNote(stage, NOTE_ID, title, merge ? sayOnce(lines) : lines, kind);
 
 /**
  * The note that a Sound tab waits for the person (browsers start no sound before a click or a
