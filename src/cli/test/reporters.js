@@ -30,7 +30,7 @@ export function readReporters(given) {
 export function dotLine(result) {
   if (result.skipped) return `skip  ${result.name.padEnd(28)} ${'-'.padStart(6)}     ${result.notes.join('; ').replace(/^skipped: /, '')}`;
   const said = [...result.failures, ...result.notes].join('; ');
-  return `${result.ok ? 'pass' : 'FAIL'}  ${result.name.padEnd(28)} ${String(result.ms).padStart(6)} ms  ${said}`;
+  return `${result.ok ? 'pass' : 'FAIL'}  ${result.name.padEnd(28)} ${String(result.ms).padStart(6)} ms  ${said}`.trimEnd();
 }
 
 /** "1:05" from milliseconds. @param {number} ms */
