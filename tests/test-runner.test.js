@@ -157,7 +157,7 @@ describe('--jobs N (issue 45, item 8)', () => {
         html: strip(fs.readFileSync(path.join(report, 'index.html'), 'utf8')),
       });
     }
-    expect(outputs[0].lines.filter((line) => / ms /.test(line))).toHaveLength(names.length);
+    expect(outputs[0].lines.filter((line) => / ms( |$)/.test(line))).toHaveLength(names.length);
     expect(outputs[1]).toEqual(outputs[0]);
   });
 
