@@ -1,0 +1,39 @@
+// The engine page has one client (src/engine/client.js): no other module under src/ runs code on a
+// page, and the command line and the engine modules read no DOM of the page (its ids, selectors,
+// data- attributes are the page's own; what they say comes back as data through the hook). These
+// read the source, so that a second way in fails here rather than drifting unseen.
+
+import fs from 'node:fs';
+import path from 'node:path';
+import { describe, expect, it } from 'vitest';
+
+const ROOT = path.resolve(import.meta.dirname, '..');
+
+/** The .js files under `folder` (relative to the repository). @param {string} folder */
+function sources(folder) {
+  return fs
+    .readdirSync(path.join(ROOT, folder), { recursive: true, encoding: 'utf8' })
+    .filter((file) => file.endsWith('.js'))
+    .map((file) => path.join(folder, file).split(path.sep).join('/'))
+    .sort();
+}
+
+/** A module's code without its comments (a comment may name what the code must not). @param {string} text */
+const code = (text) => text.replace(/\/\*[\s\S]*?\*\//g, '').replace(/(^|[^:\\'"`])\/\/.*$/gm, '$1');
+
+/** The modules of `files` whose code matches `pattern`. @param {string[]} files @param {RegExp} pattern */
+const matching = (files, pattern) => files.filter((file) => pattern.test(code(fs.readFileSync(path.join(ROOT, file), 'utf8'))));
+
+describe('the engine client is the one way into the page', () => {
+  it.each([
+    // a call of page.evaluate, evaluateOnNewDocument or evaluateHandle, on any object
+    ['runs code on a page', /\.evaluate(OnNewDocument|Handle)?\s*\(/, sources('src'), ['src/engine/client.js']],
+  ])('only the client %s', (_, pattern, files, allowed) => {
+    expect(matching(files, pattern)).toEqual(allowed);
+  });
+
+  it('the check finds a call when there is one', () => {
+    expect(code('await page\n  .evaluate(() => 0); // page.evaluate')).toMatch(/\.evaluate(OnNewDocument|Handle)?\s*\(/);
+    expect(code('// a trivial page.evaluate(() => 0)')).not.toMatch(/\.evaluate\s*\(/);
+  });
+});
