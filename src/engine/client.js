@@ -8,9 +8,10 @@
 // started on the page into a slot of its own (window.__view, window.__longWork) and asked after
 // with short questions: a wait on the page is bounded (watch.js), and a poll shows progress.
 //
-// The page's DOM is read in two places only, both documented as needed: load() waits for the
-// hook or the page's start-up error (data-error, set before any hook exists), and describePage()
-// tells what a page that does not answer was doing, whether or not it has a hook.
+// What the page says beside the picture (its notes), the watchdog's message and the page's error
+// come back as data from the hook (notes(), hang(), info()), not from its DOM: the page's ids and
+// attributes are its own. The one exception is describePage(), which tells what a page that does
+// not answer was doing, and so must read a page that may have no hook yet.
 
 /**
  * How a view started on the page (startView) stands: drawn, failed (`compile` when the shader did
@@ -52,8 +53,8 @@ export function engineClient(page) {
     async load(url) {
       const response = await page.goto(url, { waitUntil: 'load' });
       if (!response || (!response.ok() && response.status() !== 304)) return `the page answered HTTP ${response?.status()}`;
-      // the hook, or the error of a page that could not start (it has no hook to say it with)
-      await page.waitForFunction(() => window.raytracer || document.documentElement.dataset.error, { polling: 100 });
+      // a page that could not start has a hook too (automation.js installFailedAutomation)
+      await page.waitForFunction(() => Boolean(window.raytracer), { polling: 100 });
       return null;
     },
 
@@ -65,7 +66,7 @@ export function engineClient(page) {
      */
     startView(query) {
       return page.evaluate((opening) => {
-        if (!window.raytracer) return `page error: ${document.documentElement.dataset.error}`;
+        if (!window.raytracer) return 'page error: the page has no engine hook (window.raytracer)';
         const slot = { settled: /** @type {any} */ (null) };
         /** @type {any} */ (window).__view = slot;
         const opened = opening === null ? window.raytracer.ready : window.raytracer.open(opening);
@@ -83,10 +84,8 @@ export function engineClient(page) {
       return page.evaluate(() => {
         const settled = /** @type {any} */ (window).__view?.settled;
         if (settled) return settled;
-        if (document.documentElement.dataset.hung === 'true') {
-          const alert = document.querySelector('[role="alert"]')?.textContent?.trim().replace(/\s+/g, ' ') ?? '';
-          return { state: 'hung', message: alert };
-        }
+        const hang = window.raytracer.hang();
+        if (hang?.phase === 'drawing') return { state: 'hung', message: hang.message };
         const { progress, band } = window.raytracer.info();
         return { state: 'running', rows: progress?.y ?? 0, height: progress?.height ?? 0, bands: progress?.bands ?? 0, band };
       });
@@ -96,24 +95,14 @@ export function engineClient(page) {
      * The drawn view: its pixels (one frame drawn and read back), the frames drawn so far, what
      * the page says of itself (info), its notes, and its start-up error if any.
      * @returns {Promise<{pixels: PageImage, frame: number, info: any,
-     *   notes: import('./view.js').PageNote[], datasetError: string | undefined}>}
+     *   notes: import('./view.js').PageNote[], pageError: string | undefined}>}
      */
     readView() {
       return page.evaluate(async () => {
         const pixels = await window.raytracer.readPixels();
-        const canvas = /** @type {HTMLCanvasElement | null} */ (document.querySelector('canvas[data-frame]'));
-        const frame = canvas ? Number(canvas.dataset.frame) : NaN;
-        const info = window.raytracer.info();
-        const notes = /** @type {const} */ ([
-          ['load-notes', 'missing'],
-          ['value-notes', 'values'],
-        ]).flatMap(([id, kind]) => {
-          const note = document.getElementById(id);
-          if (!note) return [];
-          const text = (/** @type {Element | null} */ element) => element?.textContent?.trim().replace(/\s+/g, ' ') ?? '';
-          return [{ kind, title: text(note.querySelector('strong')), lines: [...note.querySelectorAll('li')].map(text) }];
-        });
-        return { pixels, frame, info: JSON.parse(JSON.stringify(info)), notes, datasetError: document.documentElement.dataset.error };
+        const info = JSON.parse(JSON.stringify(window.raytracer.info()));
+        const notes = window.raytracer.notes();
+        return { pixels, frame: info.frame, info, notes, pageError: info.error ?? undefined };
       });
     },
 
@@ -190,10 +179,8 @@ export function engineClient(page) {
         (m, t) => {
           const hook = /** @type {any} */ (window.raytracer);
           const settled = /** @type {any} */ (window).__longWork.settled;
-          if (document.documentElement.dataset.hung === 'true') {
-            const alert = document.querySelector('[role="alert"]')?.textContent?.trim().replace(/\s+/g, ' ') ?? '';
-            return { state: 'hung', message: alert };
-          }
+          const hang = hook.hang();
+          if (hang?.phase === 'drawing') return { state: 'hung', message: hang.message };
           if (m === 'converge') {
             if (settled?.state === 'failed') return settled;
             const { stillFrames } = hook.info();

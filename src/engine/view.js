@@ -10,7 +10,7 @@
  * of itself and its notes (PageNote), or `error` (why there is no frame) with `hung` when the
  * watchdog gave up on the shader (it may never finish) and `compile` when it did not compile.
  * @typedef {{pixels: {width: number, height: number, data: string}, frame: number, info: any,
- *   notes: {kind: 'missing' | 'values', title: string, lines: string[]}[], datasetError: string | undefined, error?: undefined}
+ *   notes: {kind: 'missing' | 'values', title: string, lines: string[]}[], pageError: string | undefined, error?: undefined}
  *   | {error: string, hung?: boolean, compile?: boolean}} DrawnView
  */
 

@@ -9,7 +9,7 @@ import builtinSource from '../../shaders/raytrace.glsl?raw';
 import { RaytracerApp } from './app/app.js';
 import { installAutomation, installFailedAutomation } from './automation.js';
 import { Overlay } from './ui/overlay.js';
-import { showAppOnPage, showLoadNotes, showStartupFailure } from './ui/notices.js';
+import { missingNotesTitle, showAppOnPage, showLoadNotes, showStartupFailure } from './ui/notices.js';
 import { parseUrlParams } from '../shared/url-params.js';
 import { fetchMedia, loadChannel, shaderName } from './io/shader-loader.js';
 import { HangGuard, watchHangs } from './io/hang-guard.js';
@@ -51,7 +51,7 @@ async function start() {
   }
   watchHangs(app, new HangGuard());
   const noticeAfterCompile = showAppOnPage(app, overlay);
-  const showNotes = () => showLoadNotes(stage, `${app.fileName} runs without some of what it asks for`, missingLines(app));
+  const showNotes = () => showLoadNotes(stage, missingNotesTitle(app.fileName), missingLines(app));
   app.on('source', showNotes);
   app.on('notes', showNotes);
   const open = (/** @type {string} */ query) => {

@@ -159,7 +159,7 @@ export async function renderView(view) {
     });
     if (drawn.error !== undefined) throw fail(drawn.error);
     const result = /** @type {Extract<import('../../src/engine/view.js').DrawnView, {pixels: object}>} */ (drawn);
-    if (result.datasetError) throw fail(`the page reports an error: ${result.datasetError}`);
+    if (result.pageError) throw fail(`the page reports an error: ${result.pageError}`);
     if (!(result.frame >= 1)) throw fail(`no rendered frame: canvas data-frame is ${result.frame}`);
     const { pixels, info } = result;
     if (pixels.width !== width || pixels.height !== height) {
