@@ -54,3 +54,7 @@ describe('the engine client is the one way into the page', () => {
     expect(outside).not.toMatch(/getElementById|querySelector|\.dataset\b|data-[a-z]|role=/);
   });
 });
+
+it('both pages start their app in one place (start-page.js)', () => {
+  expect(matching(sources('src/page'), /RaytracerApp\.start\s*\(/)).toEqual(['src/page/start-page.js']);
+});
