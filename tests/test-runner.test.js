@@ -64,7 +64,7 @@ function fakeSession() {
       return { width: 4, height: 4, data, info: { controls: {} }, notes: [] };
     },
     drawFloat: async () => ({ width: 0, height: 0, data: new Float32Array() }),
-    page: () => null,
+    client: () => null,
     takeLogged: () => [],
     async kill() {
       killed = true;

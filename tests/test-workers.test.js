@@ -74,7 +74,7 @@ describe('a page that stops answering (issue 45, item 1)', () => {
         async draw(query) {
           if (!query.includes('a-stuck.glsl')) return session.draw(query);
           await session.draw(query);
-          await session.page()?.evaluate(() => void setTimeout(() => { for (;;); }, 0)); // prettier-ignore
+          await session.client()?.page.evaluate(() => void setTimeout(() => { for (;;); }, 0)); // prettier-ignore
           return session.draw(query);
         },
       };

@@ -35,12 +35,12 @@ export async function runRecord({ values, positionals }) {
   try {
     const first = await renderShader(session, file, view); // compiles it and draws its first frame (errors said as a render's)
     sayNotes(file, first.notes, { strict: values.strict });
-    const page = /** @type {import('puppeteer-core').Page} */ (session.page());
+    const client = /** @type {import('../engine/client.js').EngineClient} */ (session.client());
     const request = { format, frames, fps, width: view.size.width, height: view.size.height };
     const bar = progressBar('frames');
     let result;
     try {
-      result = await runLong(page, { method: 'record', request, total: frames, progress: bar.update, limits: session.limits });
+      result = await runLong(client, { method: 'record', request, total: frames, progress: bar.update, limits: session.limits });
     } catch (error) {
       const said = error.hung ? hungLine(session.limits) : error.message.split('\n')[0];
       throw Object.assign(new CliError(`${file}: ${said}`), { hung: Boolean(error.hung) });

@@ -16,6 +16,14 @@ import { CliError, shaderKind } from './session.js';
 import { UsageError, viewQuery } from './view-options.js';
 
 /**
+ * The live controls a converge sets before its samples: the raytracer's sample count drawn over
+ * the picture (its SHOW_SAMPLE_COUNT, which "Converge when still" turns on for a person: the
+ * page's src/page/app/converge.js) off, since a render is the picture alone. A shader without it
+ * ignores it.
+ */
+const CONVERGE_CONTROLS = { SHOW_SAMPLE_COUNT: 0 };
+
+/**
  * Draws the shader `file` at `view` and returns the image and what the page said.
  * @param {import('./session.js').Session} session
  * @param {string} file
@@ -53,20 +61,20 @@ export async function renderShader(session, file, view, { converge = null, progr
       `--set ${missing.join(', ')}: ${path.basename(file)} has no such control (${known.length ? `its controls: ${known.join(', ')}` : 'it has none'})`,
     );
   }
-  const page = /** @type {import('puppeteer-core').Page} */ (session.page());
+  const client = /** @type {import('../engine/client.js').EngineClient} */ (session.client());
   if (converge === null && view.frame === null) return image;
   const bar = progressBar(converge !== null ? 'samples' : 'frames');
   try {
     const work =
       converge !== null
-        ? { method: /** @type {const} */ ('converge'), request: null, total: converge }
+        ? { method: /** @type {const} */ ('converge'), request: null, total: converge, controls: CONVERGE_CONTROLS }
         : {
             method: /** @type {const} */ ('frameAt'),
             request: { frame: view.frame, fps: view.fps, width: view.size.width, height: view.size.height },
             total: /** @type {number} */ (view.frame) + 1,
           };
-    const value = await runLong(page, { ...work, progress: progress ? bar.update : undefined, limits: session.limits });
-    const shot = converge !== null ? await page.evaluate(() => window.raytracer.capture()) : value;
+    const value = await runLong(client, { ...work, progress: progress ? bar.update : undefined, limits: session.limits });
+    const shot = converge !== null ? await client.capture() : value;
     return { width: shot.width, height: shot.height, data: fromBase64(shot.data), info: image.info, notes: image.notes };
   } catch (error) {
     const what = converge !== null ? `--converge ${converge}` : `--frame ${view.frame}`;
@@ -98,17 +106,15 @@ export async function renderTiled(session, file, view, tile) {
   const pageSize = { width: Math.max(1, Math.round(width * scale)), height: Math.max(1, Math.round(height * scale)) };
   const mouse = view.mouse && view.mouse.map((v, i) => v * (i % 2 === 0 ? pageSize.width / width : pageSize.height / height));
   const first = await renderShader(session, file, { ...view, size: pageSize, mouse });
-  const page = /** @type {import('puppeteer-core').Page} */ (session.page());
+  const client = /** @type {import('../engine/client.js').EngineClient} */ (session.client());
   const data = new Uint8Array(width * height * 4);
   for (let y = 0; y < height; y += tile)
     for (let x = 0; x < width; x += tile) {
       const w = Math.min(tile, width - x);
       const h = Math.min(tile, height - y);
-      const shot = await page
-        .evaluate((t) => window.raytracer.captureTile(t), { x, y, width: w, height: h, fullWidth: width, fullHeight: height })
-        .catch((error) => {
-          throw new CliError(`--tile: ${path.basename(file)}: ${error.message.split('\n')[0]}`);
-        });
+      const shot = await client.captureTile({ x, y, width: w, height: h, fullWidth: width, fullHeight: height }).catch((error) => {
+        throw new CliError(`--tile: ${path.basename(file)}: ${error.message.split('\n')[0]}`);
+      });
       const pixels = fromBase64(shot.data);
       // the tile's rows come top to bottom; its top row is the picture's row height - (y + h)
       for (let row = 0; row < h; row++) {

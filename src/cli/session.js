@@ -11,6 +11,7 @@ import { killBrowser } from '../engine/watch.js';
 import { findChrome } from '../engine/chrome-path.js';
 import { builtPage, startPageServer } from '../engine/page-server.js';
 import { drawView } from '../engine/view.js';
+import { engineClient } from '../engine/client.js';
 import { openPage } from '../engine/page-open.js';
 import { CLOSE_TIMEOUT_MS, withTimeout } from '../engine/watch.js';
 import { fromBase64 } from '../shared/pixels.js';
@@ -82,7 +83,7 @@ export async function startSession({
   const starter = server.mountText(STARTER, 'start.glsl');
   /** @type {Awaited<ReturnType<typeof startBrowser>> | null} */
   let chromium = null;
-  /** @type {import('puppeteer-core').Page | null} */
+  /** The page the views are drawn on, through its client. @type {import('../engine/client.js').EngineClient | null} */
   let page = null;
   /** What the current page logged as errors (page-open.js). @type {string[]} */
   let pageErrors = [];
@@ -109,7 +110,8 @@ export async function startSession({
     const { browser: b } = await browser();
     const { page: opened, errors } = await openPage(b, { waitTimeoutMs: WAIT_MS, timeouts: { hangMs, compileHangMs } });
     pageErrors = errors;
-    const started = await drawView(opened, {
+    const client = engineClient(opened);
+    const started = await drawView(client, {
       baseUrl: server.baseUrl,
       query: `${ENGINE_PAGE}?shader=${starter}&size=2x2&time=0`,
       fresh: true,
@@ -123,7 +125,7 @@ export async function startSession({
       throw new CliError(error.message);
     }
     mark('page loaded, first frame, WebGL2 checked');
-    return opened;
+    return client;
   }
 
   /** Drops the browser (after a hang: its GPU process is stuck); the next view starts another. */
@@ -157,7 +159,7 @@ export async function startSession({
      */
     async draw(query) {
       if (!page || page.isClosed()) page = await freshPage();
-      const current = /** @type {import('puppeteer-core').Page} */ (page);
+      const current = /** @type {import('../engine/client.js').EngineClient} */ (page);
       let result;
       try {
         result = await drawView(current, { baseUrl: server.baseUrl, query, fresh: false, limits, progress });
@@ -190,12 +192,15 @@ export async function startSession({
      */
     async drawFloat() {
       if (!page) throw new Error('drawFloat: no view has been drawn');
-      const { width, height, data } = await page.evaluate(() => window.raytracer.captureFloat());
+      const { width, height, data } = await page.captureFloat();
       const bytes = fromBase64(data);
       return { width, height, data: new Float32Array(bytes.buffer, bytes.byteOffset, bytes.byteLength / 4) };
     },
-    /** The page the last view was drawn on (for what only it can do: record, frame steps). */
-    page: () => page,
+    /**
+     * The client of the page the last view was drawn on (for what only it can do: record, frame
+     * steps, sound, a tile), or null when there is none.
+     */
+    client: () => page,
     /** Console errors and page errors the current page logged since the last call. */
     takeLogged: () => pageErrors.splice(0),
     /** Kills the browser at once (it stopped answering: src/cli/test/guard.js), for good. */

@@ -29,15 +29,13 @@ const SOUND_VIEW_SIZE = { width: 64, height: 36 };
  */
 export async function renderSound(session, file, view, { time, duration }) {
   const first = await renderShader(session, file, { ...view, size: SOUND_VIEW_SIZE, time });
-  const page = /** @type {import('puppeteer-core').Page} */ (session.page());
-  const sound = await page
-    .evaluate((range) => window.raytracer.renderSound(range), { time, duration })
-    .catch((error) => {
-      const message = error.message.split('\n')[0];
-      if (/no Sound tab/.test(message))
-        throw new CliError(`${file}: has no Sound tab (mainSound), so no .wav; give a shader with one, or -o OUT.png for a picture`);
-      throw new CliError(`${file}: its sound: ${message}`);
-    });
+  const client = /** @type {import('../engine/client.js').EngineClient} */ (session.client());
+  const sound = await client.renderSound({ time, duration }).catch((error) => {
+    const message = error.message.split('\n')[0];
+    if (/no Sound tab/.test(message))
+      throw new CliError(`${file}: has no Sound tab (mainSound), so no .wav; give a shader with one, or -o OUT.png for a picture`);
+    throw new CliError(`${file}: its sound: ${message}`);
+  });
   const bytes = Buffer.from(sound.data, 'base64');
   const pcm = new Int16Array(bytes.buffer, bytes.byteOffset, bytes.byteLength / 2);
   return { pcm, sampleRate: sound.sampleRate, notes: first.notes };

@@ -12,6 +12,7 @@ import puppeteer from 'puppeteer-core';
 import { findChrome } from './chrome-path.js';
 import { BASE_ARGS, LLVMPIPE_ARGS, SWIFTSHADER_ARGS, MESA_PACKAGES, drawnBy, findMesa, llvmpipeEnv, mesaMissingLine } from './renderers.js';
 import { closeBrowser } from './watch.js';
+import { webglIdentity } from './client.js';
 
 /** SwiftShader's flags: what the goldens are drawn with, and the default of launchBrowser. */
 export const CHROME_ARGS = [...SWIFTSHADER_ARGS];
@@ -50,16 +51,7 @@ export function rendererLabel(renderer) {
 async function probeWebGL(browser) {
   const page = await browser.newPage();
   try {
-    return await page.evaluate(() => {
-      const gl = document.createElement('canvas').getContext('webgl2');
-      if (!gl) return null;
-      const debug = gl.getExtension('WEBGL_debug_renderer_info');
-      return {
-        renderer: debug ? gl.getParameter(debug.UNMASKED_RENDERER_WEBGL) : gl.getParameter(gl.RENDERER),
-        vendor: debug ? gl.getParameter(debug.UNMASKED_VENDOR_WEBGL) : gl.getParameter(gl.VENDOR),
-        version: gl.getParameter(gl.VERSION),
-      };
-    });
+    return await webglIdentity(page);
   } finally {
     await page.close();
   }

@@ -3,6 +3,7 @@
 // at the viewport the goldens were drawn at, with scripts injected before the page's own (the
 // page's timeouts; the tests' deterministic clock), collecting what the page logs as errors.
 
+import { beforeEachLoad } from './client.js';
 import { watchPage, withTimeout } from './watch.js';
 
 /** The viewport every page opens at: the size its fixed-size views are drawn in. */
@@ -32,10 +33,6 @@ export async function openPage(browser, { waitTimeoutMs, timeouts, scripts = [] 
   page.on('pageerror', (error) => errors.push(`page error: ${/** @type {Error} */ (error)?.message ?? error}`));
   page.on('error', (error) => errors.push(`page crashed: ${error?.message ?? error}`));
   await page.setViewport(VIEWPORT);
-  for (const script of scripts) await page.evaluateOnNewDocument(script);
-  if (timeouts)
-    await page.evaluateOnNewDocument((chosen) => {
-      /** @type {any} */ (window).__raytracerTimeouts = chosen;
-    }, /** @type {any} */ (timeouts));
+  await beforeEachLoad(page, scripts, timeouts);
   return { page, errors };
 }

@@ -56,6 +56,15 @@ const typeOf = (file) => TYPES[path.extname(file).toLowerCase()] ?? 'application
 const SOURCES_FILE = 'page-sources.json';
 
 /**
+ * What the bundles hold of node_modules, which the build's list leaves out (its module graphs
+ * stop at the package's own files): an npm install or upgrade rewrites package-lock.json (a
+ * changed dependency in a pull) and node_modules/.package-lock.json (any install), so a newer
+ * one of either makes the build stale. Each counts only where it is there (a package installed
+ * from npm has neither, and must not rebuild on every run).
+ */
+const DEPENDENCY_FILES = ['package-lock.json', 'node_modules/.package-lock.json'];
+
+/**
  * What the tests write into public/ while they run (git ignores them): never a source of the
  * page, so never a reason to build it again under a running suite.
  */
@@ -80,7 +89,8 @@ function newestMtime(file) {
 
 /**
  * The sources of the build in `dir` changed since it was made (newer than its index.html), by the
- * build's own list of them; every source when the list is missing (a build from before it).
+ * build's own list of them and the dependencies' lock files (DEPENDENCY_FILES); every source when
+ * the list is missing (a build from before it).
  * @param {string} dir a built page
  * @returns {string[]} paths relative to the package
  */
@@ -92,7 +102,8 @@ export function staleSources(dir) {
   } catch {
     return [`(${SOURCES_FILE} is missing: the build is from before the list)`];
   }
-  return listed.filter((/** @type {string} */ file) => newestMtime(path.join(PACKAGE_ROOT, file)) > built);
+  const dependencies = DEPENDENCY_FILES.filter((file) => fs.existsSync(path.join(PACKAGE_ROOT, file)));
+  return [...listed, ...dependencies].filter((/** @type {string} */ file) => newestMtime(path.join(PACKAGE_ROOT, file)) > built);
 }
 
 /**

@@ -10,7 +10,7 @@
  * of itself and its notes (PageNote), or `error` (why there is no frame) with `hung` when the
  * watchdog gave up on the shader (it may never finish) and `compile` when it did not compile.
  * @typedef {{pixels: {width: number, height: number, data: string}, frame: number, info: any,
- *   notes: {kind: 'missing' | 'values', title: string, lines: string[]}[], datasetError: string | undefined, error?: undefined}
+ *   notes: {kind: 'missing' | 'values', title: string, lines: string[]}[], pageError: string | undefined, error?: undefined}
  *   | {error: string, hung?: boolean, compile?: boolean}} DrawnView
  */
 
@@ -24,7 +24,7 @@
 /**
  * The command line's watchdog (src/cli/watchdog.js), for a page that stops answering: a page whose
  * own thread is held by the GPU (a canvas waiting on a GPU process stuck in an endless draw) can
- * no longer run its own watchdog (the page's data-hung), nor answer. A page unanswered for longer
+ * no longer run its own watchdog (the hang it shows), nor answer. A page unanswered for longer
  * than the band it was last on may take (`compileHangMs` for a program's first draw, `hangMs`
  * else) has hung all the same.
  * @typedef {{hangMs: number, compileHangMs: number}} ProgressLimits
@@ -40,69 +40,39 @@ const POLL_MS = 100;
  */
 
 /**
- * Brings `page` to the view `query` and reads one frame. `fresh`: the page is loaded at
- * baseUrl + query (else it is a loaded page, and open() brings it there). With `limits`, the
- * page is asked how far it has got every POLL_MS, and a page that shows no progress for longer
- * than they allow is a hang (`hung`), whether or not it still answers; `progress` hears each
- * answer.
- * @param {import('puppeteer-core').Page} page
+ * Brings the page of `client` to the view `query` and reads one frame. `fresh`: the page is
+ * loaded at baseUrl + query (else it is a loaded page, and open() brings it there). With
+ * `limits`, the page is asked how far it has got every POLL_MS, and a page that shows no progress
+ * for longer than they allow is a hang (`hung`), whether or not it still answers; `progress`
+ * hears each answer.
+ * @param {import('./client.js').EngineClient} client
  * @param {{baseUrl: string, query: string, fresh: boolean, limits?: ProgressLimits | null,
  *   progress?: (state: ViewProgress) => void}} view
  * @returns {Promise<DrawnView>}
  */
-export async function drawView(page, { baseUrl, query, fresh, limits = null, progress = () => {} }) {
+export async function drawView(client, { baseUrl, query, fresh, limits = null, progress = () => {} }) {
   if (fresh) {
-    const response = await page.goto(baseUrl + query, { waitUntil: 'load' });
-    if (!response || (!response.ok() && response.status() !== 304)) return { error: `the page answered HTTP ${response?.status()}` };
-    await page.waitForFunction(() => window.raytracer || document.documentElement.dataset.error, { polling: 100 });
+    const failed = await client.load(baseUrl + query);
+    if (failed !== null) return { error: failed };
   }
-  const started = await page.evaluate(
-    (opening) => {
-      if (!window.raytracer) return `page error: ${document.documentElement.dataset.error}`;
-      const slot = { settled: /** @type {any} */ (null) };
-      /** @type {any} */ (window).__view = slot;
-      const opened = opening === null ? window.raytracer.ready : window.raytracer.open(opening);
-      opened.then(
-        () => (slot.settled = { state: 'drawn' }),
-        (error) =>
-          (slot.settled = { state: 'failed', error: error?.report ?? error?.message ?? String(error), compile: Boolean(error?.report) }),
-      );
-      return null;
-    },
-    fresh ? null : query,
-  );
+  const started = await client.startView(fresh ? null : query);
   if (started !== null) return { error: started };
-  const outcome = await waitForView(page, limits, progress);
+  const outcome = await waitForView(client, limits, progress);
   if (outcome.state === 'failed') return { error: outcome.error, compile: outcome.compile };
   if (outcome.state === 'hung') return { error: outcome.error, hung: true };
-  return page.evaluate(async () => {
-    const pixels = await window.raytracer.readPixels();
-    const canvas = /** @type {HTMLCanvasElement | null} */ (document.querySelector('canvas[data-frame]'));
-    const frame = canvas ? Number(canvas.dataset.frame) : NaN;
-    const info = window.raytracer.info();
-    const notes = /** @type {const} */ ([
-      ['load-notes', 'missing'],
-      ['value-notes', 'values'],
-    ]).flatMap(([id, kind]) => {
-      const note = document.getElementById(id);
-      if (!note) return [];
-      const text = (/** @type {Element | null} */ element) => element?.textContent?.trim().replace(/\s+/g, ' ') ?? '';
-      return [{ kind, title: text(note.querySelector('strong')), lines: [...note.querySelectorAll('li')].map(text) }];
-    });
-    return { pixels, frame, info: JSON.parse(JSON.stringify(info)), notes, datasetError: document.documentElement.dataset.error };
-  });
+  return client.readView();
 }
 
 /**
  * Asks the page after the view drawView started until it is drawn, failed, or hung: the page's
- * own watchdog gave up on it (data-hung), or, with `limits`, the page left a question unanswered
- * for longer than they allow.
- * @param {import('puppeteer-core').Page} page
+ * own watchdog gave up on it, or, with `limits`, the page left a question unanswered for longer
+ * than they allow.
+ * @param {import('./client.js').EngineClient} client
  * @param {ProgressLimits | null} limits
  * @param {(state: ViewProgress) => void} progress
  * @returns {Promise<{state: 'drawn'} | {state: 'failed', error: string, compile: boolean} | {state: 'hung', error: string}>}
  */
-async function waitForView(page, limits, progress) {
+async function waitForView(client, limits, progress) {
   const hung = (/** @type {string} */ said) => ({
     state: /** @type {const} */ ('hung'),
     error: `the shader did not finish drawing a frame: the watchdog gave up on it${said ? ` ("${said}")` : ''}`,
@@ -110,19 +80,11 @@ async function waitForView(page, limits, progress) {
   /** Whether the band last heard of is a first draw (or none has been heard of yet). */
   let compiling = true;
   for (;;) {
-    const asked = page.evaluate(() => {
-      const settled = /** @type {any} */ (window).__view?.settled;
-      if (settled) return settled;
-      if (document.documentElement.dataset.hung === 'true') {
-        const alert = document.querySelector('[role="alert"]')?.textContent?.trim().replace(/\s+/g, ' ') ?? '';
-        return { state: 'hung', message: alert };
-      }
-      const { progress, band } = window.raytracer.info();
-      return { state: 'running', rows: progress?.y ?? 0, height: progress?.height ?? 0, bands: progress?.bands ?? 0, band };
-    });
+    const asked = client.pollView();
     asked.catch(() => {}); // a question given up on below fails when the page is closed
     const limit = limits ? (compiling ? limits.compileHangMs : limits.hangMs) : null;
     let timer;
+    /** @type {import('./client.js').ViewPoll | null} */
     const answer = await (limit === null
       ? asked
       : Promise.race([asked, new Promise((resolve) => (timer = setTimeout(resolve, limit + POLL_MS, null)))]));

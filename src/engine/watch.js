@@ -6,6 +6,8 @@
 // the page, and a wait on a crashed page never ended (puppeteer settles it only when the page is
 // closed).
 
+import { describePage } from './client.js';
+
 /**
  * One wait on a page in a test (a load, `ready`, a frame, a read-back): SwiftShader compiles on
  * the CPU, and a test has 120 s (tests/vitest.config.js), so a hang fails the wait first.
@@ -93,32 +95,7 @@ export function watchPage(page, browser, { waitTimeoutMs = WAIT_TIMEOUT_MS } = {
     if (crash) return `${crash}.`;
     const asked = timer(DESCRIBE_TIMEOUT_MS);
     const state = await Promise.race([
-      original
-        .evaluate(() => {
-          const canvas = /** @type {HTMLCanvasElement | null} */ (
-            document.querySelector('canvas[data-frame]') ?? document.querySelector('canvas')
-          );
-          const overlay = /** @type {HTMLElement | null} */ (document.querySelector('[role="alert"]'));
-          /** @type {object | null} */
-          let info;
-          // the hook may not be there yet, or not whole: this page is being asked why it is stuck
-          const hook = /** @type {Partial<import('../page/automation.js').RaytracerHook> | undefined} */ (window.raytracer);
-          try {
-            const { fileName, origin, time, playing, width, height } = hook?.info?.() ?? {};
-            info = hook?.info ? { fileName, origin, time, playing, width, height } : null;
-          } catch (error) {
-            info = { error: String(error?.message ?? error) };
-          }
-          return {
-            url: location.href,
-            frame: canvas?.dataset.frame ?? null,
-            error: document.documentElement.dataset.error ?? null,
-            overlay: overlay && !overlay.hidden ? overlay.textContent.trim().replace(/\s+/g, ' ') : null,
-            raytracer: Boolean(window.raytracer),
-            info,
-          };
-        })
-        .catch((error) => ({ failed: String(error?.message ?? error) })),
+      describePage(original.evaluate).catch((error) => ({ failed: String(error?.message ?? error) })),
       asked.promise,
       crashed,
     ]);

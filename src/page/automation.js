@@ -85,6 +85,13 @@
 //                         (inspect/compare.js; figures as src/reference/error.js gives them);
 //                         rejects with why it cannot.
 //   comparison()          {running, error, stale, shown}: the comparison's state on the page.
+//   notes()               [{kind, title, lines}]: the notes beside the picture, as data: what the
+//                         shader goes without (kind 'missing': "PASS, iChannelN: WHAT", a line
+//                         for each place, as the app has them) and the values of the last view not used as given
+//                         ('values'); a note with no lines is left out.
+//   hang()                null, or {phase, seconds, message}: the watchdog's message while a
+//                         band has gone unfinished ('compiling': a program's first draw;
+//                         'drawing': it may never finish), in the words the page shows.
 //   info()                {renderer (UNMASKED_RENDERER_WEBGL), vendor, version, shadingLanguage,
 //                         width, height, frame (frames drawn since the page started),
 //                         iFrame (the next frame's), time, playing, speed, mouse (iMouse),
@@ -97,7 +104,8 @@
 //                         'drawing': hung), progress ({y,
 //                         height, bands}: how far the frame being drawn has got; null if none),
 //                         band ({seconds, compiling}: the band the GPU is on; null if none),
-//                         converging, stillFrames (frames since the last change)}
+//                         converging, stillFrames (frames since the last change), error
+//                         ('shader-compile' while no shader could run, else null)}
 //
 // The page's state is also on the page as attributes the tests wait on (page-marks.js:
 // data-error, data-context, data-hung on <html>, data-frame on the canvas).
@@ -112,6 +120,8 @@ import { singlePass } from '../shadertoy/multipass.js';
 import { SAMPLE_RATE, toPcm16 } from '../shadertoy/sound.js';
 import { hasSound, sampleRange, soundSamples } from './sound/samples.js';
 import { markApp, markStartupFailure } from './page-marks.js';
+import { missingLines } from './io/project-files.js';
+import { VALUE_NOTES_TITLE, missingNotesTitle, watchdogDetail, watchdogTitle } from './ui/notices.js';
 
 /** The window, with the hook. @type {Window & {raytracer?: object}} */
 const hooked = window;
@@ -152,6 +162,18 @@ export function installAutomation(app, ready, { open, recorder, ui: pageUi }) {
   let opening = Promise.resolve();
   /** The last record()'s progress: frames done of total. */
   let recorded = { done: 0, total: 0 };
+  /** The last view's values not used as given (open-view.js). @type {string[]} */
+  let valueLines = [];
+  app.on('values', (_, lines) => (valueLines = lines));
+  /** The watchdog's last word: null while drawing goes on. @type {{seconds: number, phase: string} | null} */
+  let watchdog = null;
+  app.on('hang', (_, seconds, phase = 'drawing') => (watchdog = seconds === null ? null : { seconds, phase }));
+  /** 'shader-compile' while no shader could run (page-marks.js says the same as data-error). @type {string | null} */
+  let compileError = null;
+  app.on('compile', (_, error) => {
+    if (!error) compileError = null;
+    else if (!app.compiles.hasProgram) compileError = 'shader-compile';
+  });
 
   const hook = {
     ready,
@@ -344,6 +366,23 @@ export function installAutomation(app, ready, { open, recorder, ui: pageUi }) {
     cancelRecording: () => recorder.cancel(),
     recording: () => ({ busy: recorder.busy, ...recorded }),
 
+    notes() {
+      // each line as the app has it ("PASS, iChannelN: WHAT"): the page's note says each once
+      // (sayOnce, src/shared/said-once.js), and so does the command line, in the same words
+      const missing = missingLines(app);
+      return [
+        ...(missing.length ? [{ kind: /** @type {const} */ ('missing'), title: missingNotesTitle(app.fileName), lines: missing }] : []),
+        ...(valueLines.length ? [{ kind: /** @type {const} */ ('values'), title: VALUE_NOTES_TITLE, lines: [...valueLines] }] : []),
+      ];
+    },
+    hang() {
+      if (!watchdog) return null;
+      const { seconds, phase } = watchdog;
+      const back = app.frames.lastFinished?.name ?? null;
+      const detail = watchdogDetail(app.fileName, Math.floor(seconds), phase, back);
+      return { phase, seconds, message: `${watchdogTitle(app.fileName, phase)}: ${detail.replace(/\s+/g, ' ')}` };
+    },
+
     info() {
       return {
         ...app.gpu.info(),
@@ -367,6 +406,7 @@ export function installAutomation(app, ready, { open, recorder, ui: pageUi }) {
         band: app.gpu.band,
         converging: app.converge.on,
         stillFrames: app.frames.stillFrames,
+        error: compileError,
       };
     },
   };
@@ -414,6 +454,8 @@ export function installFailedAutomation(error) {
     frameAt: fail,
     cancelRecording() {},
     recording: () => ({ busy: false, done: 0, total: 0 }),
+    notes: () => [],
+    hang: () => null,
     play() {},
     pause() {},
     togglePlay() {},

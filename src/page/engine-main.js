@@ -3,19 +3,18 @@
 // and none of the interactive page's widgets (main.js: the editor, the panel, the inspector, kept
 // work), whose code the engine page never loads. A view is opened as on the interactive page
 // (open-view.js), and what it says, a compile error, the watchdog, what a shader went without,
-// goes where the command line reads it: the overlay, page-marks.js's attributes, the notes.
+// is shown as a person would see it (the overlay, the notes) and comes back to the command line
+// as data through window.raytracer (notes(), hang(), info()). Its start is main.js's
+// (start-page.js).
 
 import builtinSource from '../../shaders/raytrace.glsl?raw';
-import { RaytracerApp } from './app/app.js';
-import { installAutomation, installFailedAutomation } from './automation.js';
-import { Overlay } from './ui/overlay.js';
-import { showAppOnPage, showLoadNotes, showStartupFailure } from './ui/notices.js';
+import { installAutomation } from './automation.js';
+import { missingNotesTitle, showLoadNotes } from './ui/notices.js';
 import { parseUrlParams } from '../shared/url-params.js';
-import { fetchMedia, loadChannel, shaderName } from './io/shader-loader.js';
-import { HangGuard, watchHangs } from './io/hang-guard.js';
 import { missingLines } from './io/project-files.js';
 import { Recorder } from './io/recorder.js';
-import { BUILTIN_NAME, openView, useBuiltinSource } from './open-view.js';
+import { openView, useBuiltinSource } from './open-view.js';
+import { startPage } from './start-page.js';
 
 useBuiltinSource(builtinSource);
 
@@ -29,30 +28,10 @@ const NO_WIDGETS = {
 
 async function start() {
   const stage = /** @type {HTMLElement} */ (document.getElementById('stage'));
-  const canvas = /** @type {HTMLCanvasElement} */ (document.getElementById('view'));
-  const overlay = new Overlay(/** @type {HTMLElement} */ (document.getElementById('overlay')));
-  const params = parseUrlParams(location.search, location.href);
-  let app;
-  try {
-    app = await RaytracerApp.start({
-      canvas,
-      loadChannel,
-      fetchMedia,
-      fileName: params.shader ? shaderName(params.shader) : BUILTIN_NAME,
-      size: params.size ?? null,
-      scale: params.scale ?? 1,
-      cap: params.cap ?? 0,
-      playing: params.time === undefined,
-    });
-  } catch (error) {
-    showStartupFailure(overlay, error);
-    installFailedAutomation(error);
-    return;
-  }
-  watchHangs(app, new HangGuard());
-  const noticeAfterCompile = showAppOnPage(app, overlay);
-  const showNotes = () =>
-    showLoadNotes(stage, `${app.fileName} runs without some of what it asks for`, missingLines(app), 'note', { merge: false });
+  const started = await startPage();
+  if (!started) return;
+  const { app, params, noticeAfterCompile } = started;
+  const showNotes = () => showLoadNotes(stage, missingNotesTitle(app.fileName), missingLines(app));
   app.on('source', showNotes);
   app.on('notes', showNotes);
   const open = (/** @type {string} */ query) => {

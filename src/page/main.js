@@ -3,14 +3,11 @@
 // shows what the app reports (ui/notices.js), and installs window.raytracer (automation.js).
 
 import builtinSource from '../../shaders/raytrace.glsl?raw';
-import { RaytracerApp } from './app/app.js';
-import { installAutomation, installFailedAutomation } from './automation.js';
-import { Overlay } from './ui/overlay.js';
+import { installAutomation } from './automation.js';
 import { installUi } from './ui/ui.js';
-import { showAppOnPage, showStartupFailure } from './ui/notices.js';
 import { parseUrlParams } from '../shared/url-params.js';
-import { fetchMedia, fetchShader, loadChannel, shaderName } from './io/shader-loader.js';
-import { HangGuard, watchHangs } from './io/hang-guard.js';
+import { fetchShader, shaderName } from './io/shader-loader.js';
+import { startPage } from './start-page.js';
 import { openShader } from './io/open-shader.js';
 import { Recorder } from './io/recorder.js';
 import { BUILTIN_NAME, linkedShader, openView, useBuiltinSource } from './open-view.js';
@@ -19,29 +16,9 @@ import { singlePass } from '../shadertoy/multipass.js';
 useBuiltinSource(builtinSource);
 
 async function start() {
-  const canvas = /** @type {HTMLCanvasElement} */ (document.getElementById('view'));
-  const overlay = new Overlay(/** @type {HTMLElement} */ (document.getElementById('overlay')));
-  const params = parseUrlParams(location.search, location.href);
-  let app;
-  try {
-    app = await RaytracerApp.start({
-      canvas,
-      loadChannel,
-      fetchMedia,
-      fileName: params.shader ? shaderName(params.shader) : BUILTIN_NAME,
-      size: params.size ?? null,
-      scale: params.scale ?? 1,
-      cap: params.cap ?? 0,
-      playing: params.time === undefined, // ?time=T shows that instant, paused
-    });
-  } catch (error) {
-    showStartupFailure(overlay, error);
-    installFailedAutomation(error);
-    return null;
-  }
-
-  watchHangs(app, new HangGuard());
-  const noticeAfterCompile = showAppOnPage(app, overlay);
+  const page = await startPage();
+  if (!page) return null;
+  const { app, overlay, params, noticeAfterCompile } = page;
   const recorder = new Recorder(app); // the page's: the Record dialog and window.raytracer share it
   const ui = installUi(app, { builtinSource, recorder });
   overlay.onLine = (line, pass) => ui.editor.goToLine(line, pass);
@@ -68,7 +45,7 @@ async function start() {
   return app;
 }
 
-/** @type {RaytracerApp | null} */
+/** @type {import('./app/app.js').RaytracerApp | null} */
 let app = null;
 start().then((started) => (app = started));
 

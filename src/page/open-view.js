@@ -194,7 +194,9 @@ export async function openView(app, ui, params, { hash, noticeAfterCompile, agai
     const standIn = ui.kept.open(params.shader ?? BUILTIN_NAME, loaded); // kept-work.js
     const { warnings } = app.applyControls(params.controls, 'URL');
     avoidHungShader(app, noticeAfterCompile); // after the link's values: a value can be what hung
-    showValueNotes(stage, [...params.warnings, ...warnings].map(plainWarning));
+    const valueLines = [...params.warnings, ...warnings].map(plainWarning);
+    app.emit('values', valueLines); // the hook's notes() (automation.js)
+    showValueNotes(stage, valueLines);
     return standIn;
   });
   app.setLoading(opened.then(() => {}));

@@ -9,6 +9,7 @@ import { fromBase64 } from '../../src/shared/pixels.js';
 import { CLOSE_TIMEOUT_MS, SCRIPT_WAIT_TIMEOUT_MS, WAIT_TIMEOUT_MS, closeBrowser, withTimeout } from '../../src/engine/watch.js';
 import { PAGE_PARAMS, viewQuery, viewSize } from '../views.js';
 import { drawView } from '../../src/engine/view.js';
+import { engineClient } from '../../src/engine/client.js';
 import { openPage as openEnginePage } from '../../src/engine/page-open.js';
 
 const INJECTION_SOURCE = fs.readFileSync(new URL('./deterministic-injection.js', import.meta.url), 'utf8');
@@ -153,12 +154,12 @@ export async function renderView(view) {
     return new Error(`${view.name} (${url}): ${message}${said}`);
   };
   try {
-    const drawn = await drawView(page, { baseUrl: context.baseUrl, query, fresh: !reused }).catch((error) => {
+    const drawn = await drawView(engineClient(page), { baseUrl: context.baseUrl, query, fresh: !reused }).catch((error) => {
       throw fail(`${error.message}${navigations > 1 ? ` (the page navigated ${navigations} times)` : ''}`);
     });
     if (drawn.error !== undefined) throw fail(drawn.error);
     const result = /** @type {Extract<import('../../src/engine/view.js').DrawnView, {pixels: object}>} */ (drawn);
-    if (result.datasetError) throw fail(`the page reports an error: ${result.datasetError}`);
+    if (result.pageError) throw fail(`the page reports an error: ${result.pageError}`);
     if (!(result.frame >= 1)) throw fail(`no rendered frame: canvas data-frame is ${result.frame}`);
     const { pixels, info } = result;
     if (pixels.width !== width || pixels.height !== height) {

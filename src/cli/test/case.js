@@ -204,8 +204,8 @@ async function runChecks(session, testCase, image, { update, result, keep, file 
   if (testCase.sound) await soundCase(session, testCase, testCase.sound, { update, result, file });
   if (checks.maxFrameMs !== undefined) {
     await renderShader(session, testCase.file, testCase.view);
-    const page = /** @type {import('puppeteer-core').Page} */ (session.page());
-    const { median } = await page.evaluate(() => window.raytracer.renderFrames(5));
+    const client = /** @type {import('../../engine/client.js').EngineClient} */ (session.client());
+    const { median } = await client.renderFrames(5);
     notes.push(`frame ${median.toFixed(1)} ms`);
     if (median > checks.maxFrameMs)
       failures.push(`maxFrameMs: a frame takes ${median.toFixed(1)} ms (median of 5), more than ${checks.maxFrameMs}`);

@@ -49,7 +49,7 @@ export function guarded(session, work, { silenceMs }) {
   /** @type {any} */
   const view = {
     ...session,
-    page: () => (given ? null : session.page()),
+    client: () => (given ? null : session.client()),
     kill: session.kill,
   };
   for (const name of /** @type {const} */ (['draw', 'drawFloat', 'environment'])) {
@@ -65,11 +65,11 @@ export function guarded(session, work, { silenceMs }) {
   }
 
   const ask = () => {
-    const page = session.page();
-    if (asking || !page || page.isClosed()) return;
+    const client = session.client();
+    if (asking || !client || client.isClosed()) return;
     asking = true;
-    page
-      .evaluate(() => 0)
+    client
+      .ping()
       .then(alive, () => {})
       .finally(() => (asking = false));
   };

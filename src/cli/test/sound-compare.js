@@ -6,6 +6,8 @@
 // A spectrum check passes sound that is the same music a few samples late; the RMS one does not.
 
 /** Samples a spectrum frame (a power of two: about 93 ms at 44,100 Hz). */
+import { fft } from '../../shared/fft.js';
+
 const SPECTRUM_SIZE = 4096;
 
 /** The default tolerances: a few 16-bit steps of RMS, 1% of the spectrum. */
@@ -97,32 +99,4 @@ function spectrum(pcm, c) {
   }
   for (let k = 0; k < out.length; k++) out[k] /= frames;
   return out;
-}
-
-/** An in-place radix-2 FFT of re + i·im (length a power of two). */
-function fft(re, im) {
-  const n = re.length;
-  for (let i = 1, j = 0; i < n; i++) {
-    let bit = n >> 1;
-    for (; j & bit; bit >>= 1) j ^= bit;
-    j ^= bit;
-    if (i < j) {
-      [re[i], re[j]] = [re[j], re[i]];
-      [im[i], im[j]] = [im[j], im[i]];
-    }
-  }
-  for (let size = 2; size <= n; size <<= 1) {
-    const step = (-2 * Math.PI) / size;
-    for (let start = 0; start < n; start += size)
-      for (let k = 0; k < size / 2; k++) {
-        const [wr, wi] = [Math.cos(step * k), Math.sin(step * k)];
-        const [p, q] = [start + k, start + k + size / 2];
-        const tr = re[q] * wr - im[q] * wi;
-        const ti = re[q] * wi + im[q] * wr;
-        re[q] = re[p] - tr;
-        im[q] = im[p] - ti;
-        re[p] += tr;
-        im[p] += ti;
-      }
-  }
 }

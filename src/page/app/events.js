@@ -24,6 +24,8 @@
  *   success, else its error (app.compiles.hasProgram tells whether an older shader still runs)
  * @property {[]} source a new source was loaded (its controls read)
  * @property {[]} notes what the shader goes without changed (its media came, or could not)
+ * @property {[lines: string[]]} values the values of the view last opened that were not used as
+ *   given (a link's or the hook's: a control clamped into range), each line what was used instead
  * @property {[lost: boolean]} context the GPU context was lost (true) or restored (false)
  * @property {[seconds: number | null, phase?: import('./render-client.js').HangPhase]} hang a frame has gone that long without finishing a band
  *   ('compiling': a program's first draw, which compiles it on SwiftShader)

@@ -19,6 +19,8 @@
 // drawn: `render --time 3` equals frame 3·fps of a recording. getByteTimeDomainData into an array
 // shorter than fftSize keeps its first elements: row 1 is the oldest 512 samples of the window.
 
+import { fft } from '../../shared/fft.js';
+
 const FFT_SIZE = 2048;
 const TEXTURE_WIDTH = 512;
 const SMOOTHING = 0.8;
@@ -52,37 +54,6 @@ function magnitudes(sampleAt, end) {
   const out = new Float64Array(TEXTURE_WIDTH);
   for (let k = 0; k < TEXTURE_WIDTH; k++) out[k] = Math.hypot(re[k], im[k]) / FFT_SIZE;
   return out;
-}
-
-/** In-place iterative radix-2 FFT (e^{-2πikn/N}). @param {Float64Array} re @param {Float64Array} im */
-function fft(re, im) {
-  const n = re.length;
-  for (let i = 1, j = 0; i < n; i++) {
-    let bit = n >> 1;
-    for (; j & bit; bit >>= 1) j ^= bit;
-    j ^= bit;
-    if (i < j) {
-      [re[i], re[j]] = [re[j], re[i]];
-      [im[i], im[j]] = [im[j], im[i]];
-    }
-  }
-  for (let size = 2; size <= n; size *= 2) {
-    const step = (-2 * Math.PI) / size;
-    for (let s = 0; s < n; s += size) {
-      for (let k = 0; k < size / 2; k++) {
-        const c = Math.cos(step * k);
-        const d = Math.sin(step * k);
-        const a = s + k;
-        const b = a + size / 2;
-        const tr = re[b] * c - im[b] * d;
-        const ti = re[b] * d + im[b] * c;
-        re[b] = re[a] - tr;
-        im[b] = im[a] - ti;
-        re[a] += tr;
-        im[a] += ti;
-      }
-    }
-  }
 }
 
 /**

@@ -105,7 +105,13 @@ export const soundNote = (stage, waiting) =>
  * @param {HTMLElement} stage
  * @param {string[]} lines
  */
-export const showValueNotes = (stage, lines) => showNote(stage, 'value-notes', 'Some values were not used as given', lines);
+export const showValueNotes = (stage, lines) => showNote(stage, 'value-notes', VALUE_NOTES_TITLE, lines);
+
+/** The title of the note on what a loaded shader goes without. @param {string} name the shader's */
+export const missingNotesTitle = (name) => `${name} runs without some of what it asks for`;
+
+/** The title of the note on values not used as given. */
+export const VALUE_NOTES_TITLE = 'Some values were not used as given';
 
 /**
  * A note about kept work, with its buttons, replacing any other: the first of the notes.
@@ -301,9 +307,16 @@ function showWatchdog(app, overlay) {
           },
         ]
       : [];
-    overlay.showActions(phase === 'compiling' ? `Compiling ${app.fileName}…` : `${app.fileName} may never finish`, detail, actions);
+    overlay.showActions(watchdogTitle(app.fileName, phase), detail, actions);
   });
 }
+
+/**
+ * The watchdog message's title.
+ * @param {string} name the shader on the GPU
+ * @param {string} phase 'compiling' or 'drawing'
+ */
+export const watchdogTitle = (name, phase) => (phase === 'compiling' ? `Compiling ${name}…` : `${name} may never finish`);
 
 /**
  * The watchdog message's text, with the seconds as they are now.
@@ -312,7 +325,7 @@ function showWatchdog(app, overlay) {
  * @param {string} phase 'compiling' or 'drawing'
  * @param {string | null} back the shader "Go back" runs
  */
-function watchdogDetail(name, seconds, phase, back) {
+export function watchdogDetail(name, seconds, phase, back) {
   return [
     phase === 'compiling'
       ? `SwiftShader (the CPU renderer) turns a shader into machine code when it first draws it, and ${name} has been compiling for ${seconds} s. A large shader takes a while; the first frame follows.`

@@ -9,7 +9,7 @@ import { Toolbar } from './toolbar.js';
 import { installRecordDialog } from './record-dialog.js';
 import { installShortcuts, watchKeyboard } from './keys.js';
 import { pageActions } from './actions.js';
-import { channelLoaded, installViewNote, showLoadNotes } from './notices.js';
+import { channelLoaded, installViewNote, missingNotesTitle, showLoadNotes } from './notices.js';
 import { installSound } from '../sound/sound-controls.js';
 import { KeptWork } from '../kept-work.js';
 import { droppedKind } from '../io/shader-loader.js';
@@ -145,7 +145,7 @@ export function installUi(app, { builtinSource, recorder }) {
     if (key === notesShown && app.origin === 'editor' && !pastedShader) return;
     notesShown = key;
     pastedShader = false;
-    showLoadNotes(stage, `${app.fileName} runs without some of what it asks for`, lines);
+    showLoadNotes(stage, missingNotesTitle(app.fileName), lines);
   };
 
   /**

@@ -1,0 +1,270 @@
+// The command line's and the harness's one client of the engine page's API (window.raytracer,
+// src/page/automation.js): one method for each thing they ask the page, and the only module
+// under src/ that runs code on a page (page.evaluate). Everything else (view.js, long-work.js,
+// the session, render, sound, test) asks through it, so that what the page is asked, and what
+// comes back, is written once and typed here.
+//
+// Work that takes longer than one question (a view being drawn, a converge, a recording) is
+// started on the page into a slot of its own (window.__view, window.__longWork) and asked after
+// with short questions: a wait on the page is bounded (watch.js), and a poll shows progress.
+//
+// What the page says beside the picture (its notes), the watchdog's message and the page's error
+// come back as data from the hook (notes(), hang(), info()), not from its DOM: the page's ids and
+// attributes are its own. The one exception is describePage(), which tells what a page that does
+// not answer was doing, and so must read a page that may have no hook yet.
+
+/**
+ * How a view started on the page (startView) stands: drawn, failed (`compile` when the shader did
+ * not compile), hung (the page's watchdog gave up on it: the message it shows), or still running
+ * (`rows` of `height` drawn of the pass under way, `bands` so far, the band the GPU is on).
+ * @typedef {{state: 'drawn'} | {state: 'failed', error: string, compile: boolean}
+ *   | {state: 'hung', message: string}
+ *   | {state: 'running', rows: number, height: number, bands: number, band: {seconds: number, compiling: boolean} | null}} ViewPoll
+ */
+
+/**
+ * How long work started by startLong stands: `done` with its value, failed, hung (the page's
+ * watchdog), `started` (a converge whose samples have not begun), or how far it has got.
+ * @typedef {{state: 'done', value: any} | {state: 'failed', error: string} | {state: 'started'}
+ *   | {state: 'hung', message: string} | {state: 'running', done: number, total: number}} LongPoll
+ */
+
+/** @typedef {'record' | 'frameAt' | 'converge'} LongMethod */
+
+/** An image from the page: base64 data, rows top to bottom. @typedef {{width: number, height: number, data: string}} PageImage */
+
+/**
+ * A client for the engine page on `page`.
+ * @param {import('puppeteer-core').Page} page
+ */
+export function engineClient(page) {
+  return {
+    /** The Puppeteer page, for the tests that drive the browser itself (src/ asks through the methods below). */
+    get page() {
+      return page;
+    },
+    isClosed: () => page.isClosed(),
+    close: () => page.close(),
+
+    /**
+     * Loads `url` and waits for the hook (or the page's start-up error): null, or why not.
+     * @param {string} url
+     */
+    async load(url) {
+      const response = await page.goto(url, { waitUntil: 'load' });
+      if (!response || (!response.ok() && response.status() !== 304)) return `the page answered HTTP ${response?.status()}`;
+      // a page that could not start has a hook too (automation.js installFailedAutomation)
+      await page.waitForFunction(() => Boolean(window.raytracer), { polling: 100 });
+      return null;
+    },
+
+    /**
+     * Starts bringing the page to the view `query` (null: the view it loaded at): null, or the
+     * page's start-up error.
+     * @param {string | null} query
+     * @returns {Promise<string | null>}
+     */
+    startView(query) {
+      return page.evaluate((opening) => {
+        if (!window.raytracer) return 'page error: the page has no engine hook (window.raytracer)';
+        const slot = { settled: /** @type {any} */ (null) };
+        /** @type {any} */ (window).__view = slot;
+        const opened = opening === null ? window.raytracer.ready : window.raytracer.open(opening);
+        opened.then(
+          () => (slot.settled = { state: 'drawn' }),
+          (error) =>
+            (slot.settled = { state: 'failed', error: error?.report ?? error?.message ?? String(error), compile: Boolean(error?.report) }),
+        );
+        return null;
+      }, query);
+    },
+
+    /** How the view startView started stands. @returns {Promise<ViewPoll>} */
+    pollView() {
+      return page.evaluate(() => {
+        const settled = /** @type {any} */ (window).__view?.settled;
+        if (settled) return settled;
+        const hang = window.raytracer.hang();
+        if (hang?.phase === 'drawing') return { state: 'hung', message: hang.message };
+        const { progress, band } = window.raytracer.info();
+        return { state: 'running', rows: progress?.y ?? 0, height: progress?.height ?? 0, bands: progress?.bands ?? 0, band };
+      });
+    },
+
+    /**
+     * The drawn view: its pixels (one frame drawn and read back), the frames drawn so far, what
+     * the page says of itself (info), its notes, and its start-up error if any.
+     * @returns {Promise<{pixels: PageImage, frame: number, info: any,
+     *   notes: import('./view.js').PageNote[], pageError: string | undefined}>}
+     */
+    readView() {
+      return page.evaluate(async () => {
+        const pixels = await window.raytracer.readPixels();
+        const info = JSON.parse(JSON.stringify(window.raytracer.info()));
+        const notes = window.raytracer.notes();
+        return { pixels, frame: info.frame, info, notes, pageError: info.error ?? undefined };
+      });
+    },
+
+    /** What the page says of itself (automation.js info()). */
+    info: () => page.evaluate(() => JSON.parse(JSON.stringify(window.raytracer.info()))),
+    /** The last frame drawn again (RGBA8). @returns {Promise<PageImage>} */
+    capture: () => page.evaluate(() => window.raytracer.capture()),
+    /** The last frame's Image pass in RGBA32F. @returns {Promise<PageImage>} */
+    captureFloat: () => page.evaluate(() => window.raytracer.captureFloat()),
+    /**
+     * A tile of the last frame drawn at the full size.
+     * @param {{x: number, y: number, width: number, height: number, fullWidth: number, fullHeight: number}} tile
+     * @returns {Promise<PageImage>}
+     */
+    captureTile: (tile) => page.evaluate((t) => window.raytracer.captureTile(t), tile),
+    /** `n` whole frames drawn back to back: their median time in ms. @param {number} n */
+    renderFrames: (n) => page.evaluate((count) => window.raytracer.renderFrames(count), n),
+    /**
+     * The Sound tab's samples over [time, time + duration): base64 interleaved 16-bit PCM.
+     * @param {{time: number, duration: number}} range
+     * @returns {Promise<{data: string, sampleRate: number}>}
+     */
+    renderSound: (range) => page.evaluate((r) => window.raytracer.renderSound(r), range),
+    /** Answers at once if the page's thread is free: a heartbeat. */
+    ping: () => page.evaluate(() => 0),
+
+    /**
+     * Starts long work on the page: `record` or `frameAt` with `request`, or a converge of `total`
+     * still frames, whose live controls are first set to `controls` (what the shader's
+     * convergence needs: the raytracer's, src/page/app/converge.js, are given by the caller).
+     * @param {LongMethod} method
+     * @param {{request: any, total: number, controls?: Record<string, number>}} work
+     */
+    startLong(method, { request, total, controls = {} }) {
+      return page.evaluate(
+        (m, r, t, c) => {
+          const hook = /** @type {any} */ (window.raytracer);
+          const slot = { settled: /** @type {any} */ (null) };
+          /** @type {any} */ (window).__longWork = slot;
+          // a converge is "Converge when still" of t samples, done when t still frames are drawn: its
+          // live controls settle into constants first (a compile), then a restart clears the sum
+          const constants = () =>
+            new Promise((resolve) => {
+              const id = setInterval(() => hook.info().liveControls === 'constants' && (clearInterval(id), resolve(null)), 50);
+            });
+          const started =
+            m === 'converge'
+              ? hook
+                  .setConverging(true, { frames: t })
+                  .then(() => hook.setControls(c))
+                  .then(constants)
+                  .then(() => hook.restart())
+              : hook[m](r);
+          started.then(
+            (/** @type {any} */ value) => (slot.settled = m === 'converge' ? { state: 'started' } : { state: 'done', value }),
+            (/** @type {any} */ error) => (slot.settled = { state: 'failed', error: String(error?.message ?? error) }),
+          );
+        },
+        method,
+        request,
+        total,
+        controls,
+      );
+    },
+
+    /**
+     * How the long work startLong started stands.
+     * @param {LongMethod} method
+     * @param {number} total
+     * @returns {Promise<LongPoll>}
+     */
+    pollLong(method, total) {
+      return page.evaluate(
+        (m, t) => {
+          const hook = /** @type {any} */ (window.raytracer);
+          const settled = /** @type {any} */ (window).__longWork.settled;
+          const hang = hook.hang();
+          if (hang?.phase === 'drawing') return { state: 'hung', message: hang.message };
+          if (m === 'converge') {
+            if (settled?.state === 'failed') return settled;
+            const { stillFrames } = hook.info();
+            if (settled && stillFrames >= t) return { state: 'done', value: null };
+            return { state: 'running', done: settled ? Math.min(stillFrames, t) : 0, total: t };
+          }
+          if (settled) return settled;
+          const { done, total: all } = hook.recording();
+          return { state: 'running', done, total: all || t };
+        },
+        method,
+        total,
+      );
+    },
+  };
+}
+
+/** @typedef {ReturnType<typeof engineClient>} EngineClient */
+
+/**
+ * What a page that does not answer in time was doing (watch.js says it beside the timeout): its
+ * address, the canvas's frame count, its start-up error, the message it shows and what its hook
+ * says, asked with `evaluate` (the page's own, unbounded: the caller races it). It reads the DOM
+ * because the page may have no hook yet, or one that is not whole.
+ * @param {import('puppeteer-core').Page['evaluate']} evaluate
+ * @returns {Promise<{url: string, frame: string | null, error: string | null, overlay: string | null, raytracer: boolean, info: object | null}>}
+ */
+export function describePage(evaluate) {
+  return evaluate(() => {
+    const canvas = /** @type {HTMLCanvasElement | null} */ (
+      document.querySelector('canvas[data-frame]') ?? document.querySelector('canvas')
+    );
+    const overlay = /** @type {HTMLElement | null} */ (document.querySelector('[role="alert"]'));
+    /** @type {object | null} */
+    let info;
+    // the hook may not be there yet, or not whole: this page is being asked why it is stuck
+    const hook = /** @type {Partial<import('../page/automation.js').RaytracerHook> | undefined} */ (window.raytracer);
+    try {
+      const { fileName, origin, time, playing, width, height } = hook?.info?.() ?? {};
+      info = hook?.info ? { fileName, origin, time, playing, width, height } : null;
+    } catch (error) {
+      info = { error: String(error?.message ?? error) };
+    }
+    return {
+      url: location.href,
+      frame: canvas?.dataset.frame ?? null,
+      error: document.documentElement.dataset.error ?? null,
+      overlay: overlay && !overlay.hidden ? overlay.textContent.trim().replace(/\s+/g, ' ') : null,
+      raytracer: Boolean(window.raytracer),
+      info,
+    };
+  });
+}
+
+/**
+ * Who WebGL2 is on the blank page `page`: its renderer, vendor and version strings, or null when
+ * it has no WebGL2 (browser.js checks the renderer it launched).
+ * @param {import('puppeteer-core').Page} page
+ * @returns {Promise<{renderer: string, vendor: string, version: string} | null>}
+ */
+export function webglIdentity(page) {
+  return page.evaluate(() => {
+    const gl = document.createElement('canvas').getContext('webgl2');
+    if (!gl) return null;
+    const debug = gl.getExtension('WEBGL_debug_renderer_info');
+    return {
+      renderer: debug ? gl.getParameter(debug.UNMASKED_RENDERER_WEBGL) : gl.getParameter(gl.RENDERER),
+      vendor: debug ? gl.getParameter(debug.UNMASKED_VENDOR_WEBGL) : gl.getParameter(gl.VENDOR),
+      version: gl.getParameter(gl.VERSION),
+    };
+  });
+}
+
+/**
+ * Runs `scripts` (sources) before the page's own on every load of `page`, and gives the page its
+ * `timeouts` (src/shared/timeouts.js) before it starts.
+ * @param {import('puppeteer-core').Page} page
+ * @param {string[]} scripts
+ * @param {Partial<import('../shared/timeouts.js').Timeouts> | undefined} timeouts
+ */
+export async function beforeEachLoad(page, scripts, timeouts) {
+  for (const script of scripts) await page.evaluateOnNewDocument(script);
+  if (timeouts)
+    await page.evaluateOnNewDocument((chosen) => {
+      /** @type {any} */ (window).__raytracerTimeouts = chosen;
+    }, /** @type {any} */ (timeouts));
+}
