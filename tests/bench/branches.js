@@ -1,21 +1,28 @@
-// What does SwiftShader skip? The experiments behind the shader's structure (docs/benchmark.md, "What
-// SwiftShader rewards"): the same 60 sin() calls run straight, behind an `if` that no pixel
-// takes, and in loops of 0, 1 and 2 trips written two ways (condition at the top, as a `for`
-// reads; exit at the bottom, as the shader's loops are written); conditions joined with && and
-// with all(); then the project's shader with one extra radiance() call behind
-// `if (iFrame < 0)`, which never runs. On a GPU the guarded
-// versions cost next to nothing; on SwiftShader an `if` costs its whole body and a loop one body
-// per trip, plus one more when the condition is tested at the top.
+// What does a CPU renderer skip? The experiments behind the shader's structure (docs/benchmark.md,
+// "What the CPU renderers reward"): the same 60 sin() calls run straight, behind an `if` that no
+// pixel takes (decided per pixel, and on a uniform), and in loops of 0, 1 and 2 trips written two
+// ways (condition at the top, as a `for` reads; exit at the bottom, as the shader's loops are
+// written); conditions joined with && and with all(); then the project's shader with one extra
+// radiance() call behind `if (iFrame < 0)`, which never runs. On a GPU the guarded versions cost
+// next to nothing. On SwiftShader (2x2 quads as SIMD lanes) an `if` costs its whole body and a
+// loop one body per trip, plus one more when the condition is tested at the top; this measures
+// whether llvmpipe (8 lanes) does the same.
 //
-//   npm run bench:branches        (640x360, median of 9 interleaved frames)
+//   npm run bench:branches                        both CPU renderers, interleaved; 640x360,
+//                                                 median of 9 frames; writes the table between
+//                                                 the branches markers in docs/benchmark.md
+//   npm run bench:branches -- --renderer NAME     one renderer (renderer-set.js), nothing written
 
 import fs from 'node:fs';
 import { composeImageShader, hostControlBlock } from '../../src/shadertoy/header.js';
 import { controlDefaults, parseControls } from '../../src/shadertoy/controls.js';
 import { median } from '../../src/shared/stats.js';
-import { SHADER_FILE } from '../harness/config.js';
-import { withHarness } from '../harness/setup.js';
-import { timeShaders } from './timer.js';
+import path from 'node:path';
+import { REPO_ROOT, SHADER_FILE } from '../harness/config.js';
+import { rendererLabel } from '../../src/engine/browser.js';
+import { replaceMarkedSection } from '../scripts/readme-section.js';
+import { CPU_RENDERERS, RENDERER_TITLES, renderersAsked, withRenderers } from './renderer-set.js';
+import { timeShadersOn } from './timer.js';
 
 const CALLS = 60;
 const body = Array.from({ length: CALLS }, (_, i) => `        x = sin(x * 1.${i % 10} + 0.${i % 7});`).join('\n');
@@ -45,6 +52,7 @@ if (!project.includes(call)) throw new Error(`branches: ${SHADER_FILE} no longer
 const CASES = [
   [`${CALLS} sin() calls, straight`, image(body)],
   ['the same behind if (never)', image(`    if (never) {\n${body}\n    }`)],
+  ['the same behind if (iFrame < 0): a uniform condition', image(`    if (iFrame < 0) {\n${body}\n    }`)],
   ['in a for loop with the condition at the top, 0 trips', topLoop(0)],
   ['the same, 1 trip', topLoop(1)],
   ['the same, 2 trips', topLoop(2)],
@@ -61,14 +69,36 @@ const CASES = [
   ],
 ];
 
-await withHarness(async (context) => {
-  const results = await timeShaders(
+const FRAMES = 9;
+let renderers;
+try {
+  renderers = renderersAsked(process.argv.slice(2));
+} catch (error) {
+  console.error(`npm run bench:branches -- ${error.message}`);
+  process.exit(1);
+}
+const measured = await withRenderers(renderers, async (started) => {
+  const runs = await timeShadersOn(
+    started,
     CASES.map(([, code]) => ({ code })),
-    { width: 640, height: 360, frames: 9, warmup: 2 },
+    { width: 640, height: 360, frames: FRAMES, warmup: 2 },
   );
-  console.log(`640x360 on ${context.environment.renderer}, median of 9 interleaved frames:`);
-  results.forEach((r, i) => {
-    if (r.error) throw new Error(`${CASES[i][0]}: ${r.error}`);
-    console.log(`  ${median(r.times).toFixed(1).padStart(7)} ms  ${CASES[i][0]}`);
-  });
+  return started.map((r, i) => ({ environment: r.environment, name: r.name, runs: runs[i] }));
 });
+for (const { name, runs } of measured)
+  runs.forEach((r, i) => {
+    if (r.error) throw new Error(`${CASES[i][0]} on ${name}: ${r.error}`);
+  });
+const cell = (times) => `${median(times).toFixed(1)} (${Math.min(...times).toFixed(1)}–${Math.max(...times).toFixed(1)})`;
+const table = [
+  `Measured by \`npm run bench:branches\` at 640×360 on ${measured.map((m) => rendererLabel(m.environment.renderer)).join(' and ')}, ${measured[0].environment.chromium}: median (min–max) of ${FRAMES} frames${measured.length > 1 ? ', the renderers interleaved round by round' : ''}, in ms.`,
+  '',
+  `| form | ${measured.map((m) => RENDERER_TITLES[m.name]).join(' | ')} |`,
+  `|---|${measured.map(() => '---:|').join('')}`,
+  ...CASES.map(([label], i) => `| ${label} | ${measured.map((m) => cell(m.runs[i].times)).join(' | ')} |`),
+].join('\n');
+console.log(table);
+if (renderers.join() === CPU_RENDERERS.join()) {
+  replaceMarkedSection(path.join(REPO_ROOT, 'docs', 'benchmark.md'), 'branches', table);
+  console.log('\nwrote the branches table in docs/benchmark.md');
+}
