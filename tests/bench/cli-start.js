@@ -153,7 +153,7 @@ const lines = [
   ),
   `| the process's exit, as the shell sees it | ${renderers.map((r) => `${cell(walls(r, 'start'))} | `).join(' | ')} |`,
   '',
-  `The floor, interleaved with those runs: a Node process that launches this Chromium (puppeteer-core, the renderer's flags), opens a blank page and closes it: ${renderers.map((r) => `${cell(samples[r].floor)} for ${title(r)}`).join(', ')}. The render costs ${renderers.map((r) => `${ms(median(walls(r, 'start')) - median(samples[r].floor))} over it on ${title(r)}`).join(', ')} (medians; issue 39's target: 800).`,
+  `The floor, interleaved with those runs: a Node process that launches this Chromium (puppeteer-core, the renderer's flags), opens a blank page and closes it: ${renderers.map((r) => `${cell(samples[r].floor)} for ${title(r)}`).join(', ')}. The render costs ${renderers.map((r) => `${ms(median(walls(r, 'start')) - median(samples[r].floor))} ms over it on ${title(r)}`).join(', ')} (medians; issue 39's target: 800 ms).`,
   '',
   '### Light against heavy, 640×360',
   '',
