@@ -26,15 +26,25 @@
 //   reflected silhouette) takes the n x n grid when ADAPTIVE_AA is on: found by its own rays'
 //   near-miss tests and by derivatives over its 2x2 pixel quad.
 //
-// The cost model the code is written for. SwiftShader (the CPU WebGL2 of the tests and the
-// benchmark) runs a 2x2 pixel quad as four SIMD lanes: it executes both sides of every `if`,
-// and ends a loop only at its bottom, so a loop that no lane needs still runs its body once. A
-// frame costs the code on its path times the loop trips of each quad's slowest pixel. Hence:
-// selects instead of branches and early returns; all()/any() of a bvec instead of && and ||
-// (which short-circuit into branches); loops written `for (;;)` with the exit at the bottom;
-// every object asked for every ray (a bounding-sphere skip saves nothing there). A GPU rewards
-// the same things: less code on the path, one copy of the trace. The measurements, and the
-// commands that make them: docs/benchmark.md ("What SwiftShader rewards").
+// The cost model the code is written for: the two CPU renderers that draw it with no GPU.
+// SwiftShader (the tests' and the goldens') runs a 2x2 pixel quad as four SIMD lanes, Mesa's
+// llvmpipe (the command line's default) a 4x2 block as eight. Both execute both sides of every
+// `if` (llvmpipe too: its `if` is an execution mask, even on a uniform condition; it never jumps
+// over code that no lane needs), and end a loop only at its bottom, once no lane is left in it,
+// so a loop that no lane needs still runs its body once. A frame costs the code on its path
+// times the loop trips of each block's slowest pixel. Hence: selects instead of branches and
+// early returns; all()/any() of a bvec instead of && and || (SwiftShader turns those into
+// branches; llvmpipe costs the same either way); loops written `for (;;)` with the exit at the
+// bottom; every object asked for every ray. A GPU, which does skip a branch no lane of a warp
+// takes, rewards the same things but the last: less code on the path, one copy of the trace.
+// Each branchy form was timed in this shader against its form here, on both renderers
+// interleaved (npm run bench:forms, 640x360; the branchy form's time over this one's, median of
+// the per-round ratios, SwiftShader / llvmpipe): && and || for all() and any() 1.32x / 0.97x;
+// early returns in the intersectors 1.05x / 1.15x (torus scene 1.07x / 1.05x); the new object
+// behind a bounding-sphere `if` 1.10x / 1.00x (torus scene 0.97x / 1.09x); the adaptive frame's
+// extra samples in a loop of their own 1.31x / 1.17x. None is faster on both, or faster by more
+// than the runs' noise (5-10%) on either: the forms here stay. The measurements, and the
+// commands that make them: docs/benchmark.md ("What the CPU renderers reward").
 
 // ---- controls --------------------------------------------------------------------------------
 // Shadertoy compiles this block as it stands; a host defines HOST_CONTROLS and declares the same
@@ -94,9 +104,10 @@ const vec4 MISS = vec4(-1.0, 0.0, 0.0, 0.0);
 // how a scene walk passes the nearest hit so far (and a shadow ray the light's distance); 0
 // rejects everything.
 //
-// Written without branches (the cost model, at the top): every quantity is computed and the
-// answer chosen by selects, so a value that is not a number where the test fails (a division by
-// a zero that the test rules out) is never returned.
+// Written without branches (the cost model, at the top; early returns measured 1.05x / 1.15x the
+// frame, SwiftShader / llvmpipe): every quantity is computed and the answer chosen by selects, so
+// a value that is not a number where the test fails (a division by a zero that the test rules
+// out) is never returned.
 
 // A hit at t with normal n when `hit`, else MISS. mix() with a bool picks one side exactly (no
 // arithmetic), so a NaN on the side not taken does not leak.
@@ -849,9 +860,11 @@ const float GROUND_BAND_ULPS = 64.0;
 // within the rounding band of the ground's plane, on a ray that meets the ground, is the
 // ground's (the float64 reference decides it the same way).
 //
-// Every object is asked, whatever the ray: a bounding-sphere skip (an object's code in a loop of
-// 0 or 1 trips) makes nothing cheaper on SwiftShader, and costs a quad that needs it two bodies
-// (the cost model, at the top). A GPU skips such a loop; there it would pay for the torus.
+// Every object is asked, whatever the ray: a bounding-sphere skip (an object's code behind an
+// `if`, or in a loop of 0 or 1 trips) makes nothing cheaper on SwiftShader or llvmpipe, and the
+// loop costs a block that needs it two bodies (the cost model, at the top; behind an `if`, the
+// cone scene 1.10x / 1.00x and the torus scene 0.97x / 1.09x, SwiftShader / llvmpipe). A GPU
+// skips such a branch; there it would pay for the torus.
 Hit traceScene(Scene s, vec3 ro, vec3 rd, int skipId, float tMax) {
     vec4 ground = intersectPlane(ro, rd, s.ground, skipId == ID_GROUND ? 0.0 : tMax);
     // The objects are asked only for hits nearer than the ground's by more than the band: along
@@ -1419,9 +1432,11 @@ void mainImage(out vec4 fragColor, in vec2 fragCoord) {
             // meeting, and any change of object, of lit or shadowed, or of the object in the first
             // reflection. Derivatives are defined only in uniform control flow: trip 0 is, since
             // no pixel can leave the loop before its first exit test, at the bottom. SwiftShader
-            // runs this body on every trip, so a marked quad pays the tests on each; before the
-            // loop they would need a trace of their own, which measured slower in the torus scene
-            // (docs/benchmark.md). The ground's stripes are already filtered over each pixel's
+            // and llvmpipe run this body on every trip, so a marked quad pays the tests on each;
+            // before the loop they would need a trace of their own, which measured slower in the
+            // torus scene, and the extra samples in a loop of their own after this one measured
+            // 1.31x / 1.17x the frame (SwiftShader / llvmpipe: every block pays that loop's one
+            // body; docs/benchmark.md). The ground's stripes are already filtered over each pixel's
             // footprint: they are in neither test. Measured (640x360, the default view, the "Extra
             // samples" view): the tests of its own rays mark 1.8% of the pixels (silhouettes 0.7%,
             // shadow boundaries 0.2%, reflected silhouettes 0.9%), the quad's derivatives 1.0%

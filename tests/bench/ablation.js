@@ -4,9 +4,15 @@
 // float64 reference. What a feature costs is the project's time less the variant's; what it buys
 // is the error it removes (and, for some, what no RMSE shows: see each row's note).
 //
-//   npm run bench:ablation              640x360, 3 compilations x 5 frames each; writes the table
+//   npm run bench:ablation              640x360 on SwiftShader and llvmpipe, interleaved round by
+//                                       round, 3 compilations x 5 frames each; writes the table
 //                                       between the ablation markers in docs/benchmark.md
 //   npm run bench:ablation -- --quick   every variant once at 160x90, nothing written (CI)
+//   npm run bench:ablation -- --renderer NAME
+//                                       one renderer (renderer-set.js), nothing written
+//   npm run bench:ablation -- --frames N
+//                                       N timed frames a compilation (5 unless said), for a
+//                                       machine too busy for 15 frames to settle a median
 //
 // Each variant is the project's text with one edit, and the edit must apply: a renamed function
 // fails the script instead of timing the project twice.
@@ -16,11 +22,11 @@ import path from 'node:path';
 import { composeImageShader } from '../../src/shadertoy/header.js';
 import { REPO_ROOT, SHADER_FILE } from '../harness/config.js';
 import { rendererLabel } from '../../src/engine/browser.js';
-import { withHarness } from '../harness/setup.js';
 import { replaceMarkedSection } from '../scripts/readme-section.js';
 import { replaceFunction } from '../intersector-naive.js';
 import { composePeer } from './peers/compose-peer.js';
-import { measureVariants } from './measure.js';
+import { measureVariantsOn, pairedRatio } from './measure.js';
+import { CPU_RENDERERS, RENDERER_TITLES, renderersAsked, withRenderers } from './renderer-set.js';
 import { edit, pasteFormOf } from './variant-text.js';
 
 const quick = process.argv.includes('--quick');
@@ -113,42 +119,81 @@ const VARIANTS = [
   },
 ];
 
+const argv = process.argv.slice(2);
+let renderers;
+try {
+  renderers = renderersAsked(argv);
+} catch (error) {
+  console.error(`npm run bench:ablation -- ${error.message}`);
+  process.exit(1);
+}
+const framesAt = argv.indexOf('--frames');
+const FRAMES = quick ? 1 : framesAt >= 0 ? Number(argv[framesAt + 1]) : 5;
+if (!(Number.isInteger(FRAMES) && FRAMES > 0)) {
+  console.error(`npm run bench:ablation -- --frames: expected a whole number of frames, got "${argv[framesAt + 1] ?? ''}"`);
+  process.exit(1);
+}
+const COPIES = quick ? 1 : 3;
 const [width, height] = quick ? [160, 90] : [640, 360];
-const results = await withHarness(async (context) => ({
-  environment: context.environment,
-  measured: await measureVariants(VARIANTS, {
+const results = await withRenderers(renderers, async (started) => {
+  const measured = await measureVariantsOn(started, VARIANTS, {
     source,
     width,
     height,
-    copies: quick ? 1 : 3,
-    frames: quick ? 1 : 5,
+    copies: COPIES,
+    frames: FRAMES,
     warmup: quick ? 1 : 2,
     referenceSamplesPerAxis: quick ? 2 : 8,
-  }),
-}));
-const failed = results.measured.filter((m) => m.error);
+  });
+  return started.map((r, i) => ({ name: r.name, environment: r.environment, measured: measured[i] }));
+});
+const failed = results.flatMap((r) => r.measured.filter((m) => m.error).map((m) => `ablation: ${m.variant.name} on ${r.name}: ${m.error}`));
 if (failed.length) {
-  console.error(failed.map((m) => `ablation: ${m.variant.name}: ${m.error}`).join('\n'));
+  console.error(failed.join('\n'));
   process.exit(1);
 }
-const project = results.measured[0];
-const rows = results.measured.map((m) => {
-  const saved = project.medianMs - m.medianMs;
-  const share = m.variant.name === PROJECT ? '' : `${saved >= 0 ? '−' : '+'}${Math.abs(saved).toFixed(1)} ms`;
-  return `| ${m.variant.name} | ${m.medianMs.toFixed(1)} (${m.minMs.toFixed(1)}–${m.maxMs.toFixed(1)}) | ${share} | ${m.rmse.toFixed(4)} | ${(100 * m.over2).toFixed(2)}% | ${m.variant.buys} |`;
-});
-for (const m of results.measured)
-  console.log(`  ${m.variant.name}: ${m.medianMs.toFixed(1)} ms, RMSE ${m.rmse.toFixed(4)}, >2/255 ${(100 * m.over2).toFixed(2)}%`);
+for (const { name, measured } of results) {
+  console.log(`on ${RENDERER_TITLES[name]}:`);
+  for (const m of measured)
+    console.log(`  ${m.variant.name}: ${m.medianMs.toFixed(1)} ms, RMSE ${m.rmse.toFixed(4)}, >2/255 ${(100 * m.over2).toFixed(2)}%`);
+}
 if (quick) {
-  console.log(`\nquick run: all ${VARIANTS.length} ablation variants compiled, rendered and measured; nothing written.`);
+  console.log(
+    `\nquick run: all ${VARIANTS.length} ablation variants compiled, rendered and measured on ${renderers.join(' and ')}; nothing written.`,
+  );
   process.exit(0);
 }
+const agreed = (values) => (new Set(values).size === 1 ? values[0] : values.join(' / '));
+const rows = VARIANTS.map((variant, i) => {
+  const cells = results.flatMap(({ measured }) => {
+    const m = measured[i];
+    const project = measured[0];
+    const change =
+      i === 0
+        ? ''
+        : `${project.medianMs >= m.medianMs ? '−' : '+'}${Math.abs(project.medianMs - m.medianMs).toFixed(1)} ms, ${pairedRatio(m, project).toFixed(2)}×`;
+    return [`${m.medianMs.toFixed(1)} (${m.minMs.toFixed(1)}–${m.maxMs.toFixed(1)})`, change];
+  });
+  const rmse = agreed(results.map(({ measured }) => measured[i].rmse.toFixed(4)));
+  const over2 = agreed(results.map(({ measured }) => `${(100 * measured[i].over2).toFixed(2)}%`));
+  return `| ${variant.name} | ${cells.join(' | ')} | ${rmse} | ${over2} | ${variant.buys} |`;
+});
+const header = [
+  'variant',
+  ...results.flatMap(({ name }) => [`${RENDERER_TITLES[name]} ms`, 'change']),
+  'RMSE',
+  '>2/255',
+  'what the feature buys',
+];
 const table = [
-  `Measured by \`npm run bench:ablation\` on ${rendererLabel(results.environment.renderer)}, ${results.environment.chromium}, ${width}×${height}, the default view at 1 sample per pixel: median (min–max) of ${project.frames} frames (3 compilations × 5), all variants interleaved in one page; error against the converged float64 reference (64 spp). *Change*: the variant's time less the project's (− is time the feature costs).`,
+  `Measured by \`npm run bench:ablation\` on ${results.map((r) => rendererLabel(r.environment.renderer)).join(' and ')}, ${results[0].environment.chromium}, ${width}×${height}, the default view at 1 sample per pixel: median (min–max) of ${COPIES * FRAMES} frames (${COPIES} compilations × ${FRAMES}), all variants interleaved in one page${results.length > 1 ? ' per renderer, the renderers round by round' : ''}; error against the converged float64 reference (64 spp; one value where the renderers agree to the digits shown). *Change*: the variant's time less the project's (− is time the feature costs), and the median over the rounds of the variant's frame over the project's in the same round.`,
   '',
-  '| variant | ms | change | RMSE | >2/255 | what the feature buys |',
-  '|---|---|---|---|---|---|',
+  `| ${header.join(' | ')} |`,
+  `|${header.map(() => '---|').join('')}`,
   ...rows,
 ].join('\n');
-replaceMarkedSection(path.join(REPO_ROOT, 'docs', 'benchmark.md'), 'ablation', table);
-console.log(`\n${table}\n\nwrote the ablation table in docs/benchmark.md`);
+console.log(`\n${table}`);
+if (renderers.join() === CPU_RENDERERS.join()) {
+  replaceMarkedSection(path.join(REPO_ROOT, 'docs', 'benchmark.md'), 'ablation', table);
+  console.log('\nwrote the ablation table in docs/benchmark.md');
+}

@@ -8,6 +8,8 @@
 //                                    between the apart markers in docs/benchmark.md
 //   npm run bench:apart -- --quick   every variant once at 160x90, nothing written (CI)
 //   npm run bench:apart -- --copies 5 --frames 8   more of each, for a noisy machine
+//   SHADERPROOF_RENDERER=llvmpipe npm run bench:apart
+//                                    the same on llvmpipe, between the apart-llvmpipe markers
 
 import fs from 'node:fs';
 import path from 'node:path';
@@ -308,5 +310,8 @@ const text = [
     return `| ${scene} | ${cell('paste')} | ${cell('uniform')} |`;
   }),
 ].join('\n');
-replaceMarkedSection(path.join(REPO_ROOT, 'docs', 'benchmark.md'), 'apart', text);
-console.log(`\n${text}\n\nwrote the two tables between the apart markers in docs/benchmark.md`);
+// SwiftShader's tables between the apart markers, another renderer's ($SHADERPROOF_RENDERER)
+// between its own (apart-llvmpipe), so that neither overwrites the other
+const marker = results.environment.rendererName === 'swiftshader' ? 'apart' : `apart-${results.environment.rendererName}`;
+replaceMarkedSection(path.join(REPO_ROOT, 'docs', 'benchmark.md'), marker, text);
+console.log(`\n${text}\n\nwrote the tables between the ${marker} markers in docs/benchmark.md`);

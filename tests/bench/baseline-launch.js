@@ -1,14 +1,21 @@
 // The floor under `shaderproof render`'s start, for npm run bench:cli: this Chromium launched
-// headless by puppeteer-core with the command line's own flags (src/engine/browser.js), a blank
-// page opened, and everything closed; run as a new process, as the command is.
+// headless by puppeteer-core with the command line's own flags for a renderer (argument 1:
+// swiftshader, the default, or llvmpipe; src/engine/renderers.js), a blank page opened, and
+// everything closed; run as a new process, as the command is.
 import fs from 'node:fs';
 import os from 'node:os';
 import path from 'node:path';
 import { launchBrowser } from '../../src/engine/browser.js';
+import { LLVMPIPE_ARGS, SWIFTSHADER_ARGS, findMesa, llvmpipeEnv } from '../../src/engine/renderers.js';
 
+const renderer = process.argv[2] ?? 'swiftshader';
+if (!['swiftshader', 'llvmpipe'].includes(renderer)) throw new Error(`baseline-launch.js: no floor for renderer "${renderer}"`);
 const userDataDir = fs.mkdtempSync(path.join(os.tmpdir(), 'shaderproof-floor-'));
 try {
-  const browser = await launchBrowser({ userDataDir });
+  const browser =
+    renderer === 'llvmpipe'
+      ? await launchBrowser({ userDataDir, args: LLVMPIPE_ARGS, env: llvmpipeEnv(findMesa().vendorFile) })
+      : await launchBrowser({ userDataDir, args: SWIFTSHADER_ARGS });
   const page = await browser.newPage();
   await page.goto('about:blank');
   await browser.close();

@@ -6,7 +6,7 @@
 import { imageError } from '../../src/reference/error.js';
 import { median } from '../../src/shared/stats.js';
 import { renderReferenceParallel } from '../harness/reference-threads.js';
-import { timeShaders } from './timer.js';
+import { timeShadersOn } from './timer.js';
 
 /**
  * @typedef {object} Variant
@@ -28,9 +28,41 @@ import { timeShaders } from './timer.js';
  * @param {number} options.warmup untimed rounds per copy
  * @param {number} options.referenceSamplesPerAxis the reference's jittered samples per pixel, per axis
  * @param {{name: string, type: string, value: number | boolean | number[]}[]} [options.uniformValues] for the variants marked `uniforms`
- * @returns {Promise<Array<{variant: V, error?: string, medianMs?: number, minMs?: number, maxMs?: number, frames?: number, rmse?: number, over2?: number}>>}
+ * @returns {Promise<Array<Measured<V>>>}
  */
 export async function measureVariants(variants, options) {
+  const [measured] = await measureVariantsOn([{ on: undefined }], variants, options);
+  return measured;
+}
+
+/**
+ * @template V
+ * @typedef {{variant: V, error?: string, medianMs?: number, minMs?: number, maxMs?: number, frames?: number, rmse?: number, over2?: number,
+ *   rounds?: number[][]}} Measured
+ * rounds: each copy's frame times in the order of the rounds, for pairedRatio
+ */
+
+/**
+ * The median over every copy and round of a's frame over b's in the same round: a ratio of
+ * times that a machine whose load comes and goes between rounds moves less than it moves the
+ * ratio of the two medians (each round draws every variant within a second or two).
+ * @param {{rounds: number[][]}} a
+ * @param {{rounds: number[][]}} b
+ */
+export function pairedRatio(a, b) {
+  return median(a.rounds.flatMap((frames, c) => frames.map((t, r) => t / b.rounds[c][r])));
+}
+
+/**
+ * measureVariants on each of `renderers` (renderer-set.js), all interleaved in one run
+ * (timer.js timeShadersOn), each compared with the same references.
+ * @template {Variant} V
+ * @param {Array<{on: import('./renderer-set.js').BenchRenderer['on'] | undefined}>} renderers
+ * @param {V[]} variants
+ * @param {Parameters<typeof measureVariants>[1]} options
+ * @returns {Promise<Array<Array<Measured<V>>>>} one list a renderer, in order
+ */
+export async function measureVariantsOn(renderers, variants, options) {
   const { source, width, height, copies, frames, warmup, referenceSamplesPerAxis, uniformValues = [] } = options;
   /** The converged float64 reference of each scene (the default one, 0, for every variant but the scenes'). */
   const references = new Map();
@@ -48,28 +80,38 @@ export async function measureVariants(variants, options) {
     );
     console.log(`${((Date.now() - started) / 1000).toFixed(0)} s`);
   }
-  process.stdout.write(`  timing ${variants.length} variants x ${copies} copies, ${warmup} warm-up + ${frames} timed rounds: `);
+  const on = renderers.length > 1 ? ` on ${renderers.length} renderers` : '';
+  process.stdout.write(`  timing ${variants.length} variants x ${copies} copies${on}, ${warmup} warm-up + ${frames} timed rounds: `);
   const programs = variants.flatMap((v) => {
     const code = v.code();
     return Array.from({ length: copies }, (_, k) => ({ code: `${code}\n// copy ${k}\n`, uniforms: v.uniforms ? uniformValues : [] }));
   });
-  const runs = await timeShaders(programs, { width, height, frames, warmup, onRound: (round) => process.stdout.write(`${round + 1} `) });
-  console.log('done');
-  return variants.map((variant, i) => {
-    // One result per variant: the frames of all its copies, and the last copy's image.
-    const ofVariant = runs.slice(i * copies, (i + 1) * copies);
-    const failed = ofVariant.find((c) => c.error);
-    if (failed) return { variant, error: failed.error };
-    const times = ofVariant.flatMap((c) => c.times);
-    const error = imageError(ofVariant[copies - 1], references.get(variant.scene ?? 0));
-    return {
-      variant,
-      medianMs: median(times),
-      minMs: Math.min(...times),
-      maxMs: Math.max(...times),
-      frames: times.length,
-      rmse: error.rmse,
-      over2: error.over2,
-    };
+  const runsOn = await timeShadersOn(renderers, programs, {
+    width,
+    height,
+    frames,
+    warmup,
+    onRound: (round) => process.stdout.write(`${round + 1} `),
   });
+  console.log('done');
+  return runsOn.map((runs) =>
+    variants.map((variant, i) => {
+      // One result per variant: the frames of all its copies, and the last copy's image.
+      const ofVariant = runs.slice(i * copies, (i + 1) * copies);
+      const failed = ofVariant.find((c) => c.error);
+      if (failed) return { variant, error: failed.error };
+      const times = ofVariant.flatMap((c) => c.times);
+      const error = imageError(ofVariant[copies - 1], references.get(variant.scene ?? 0));
+      return {
+        variant,
+        medianMs: median(times),
+        minMs: Math.min(...times),
+        maxMs: Math.max(...times),
+        frames: times.length,
+        rounds: ofVariant.map((c) => c.times),
+        rmse: error.rmse,
+        over2: error.over2,
+      };
+    }),
+  );
 }

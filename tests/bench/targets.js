@@ -144,3 +144,28 @@ export function evaluateSceneTargets(results) {
     },
   ];
 }
+
+// Issue 44's targets, set for llvmpipe (and reported for every renderer): the project at 1 spp
+// at least as fast as the standalone plain peer, adaptive 16 within 1.5x the 1-spp frame, the
+// torus scene within 1.5x the cone scene.
+const RENDERER_TARGETS = { standalone: 1.0, adaptive: 1.5, torus: 1.5 };
+export function evaluateRendererTargets(results) {
+  const one = by(results, PROJECT);
+  const standalone = by(results, STANDALONE);
+  const adaptive = by(results, adaptiveSamples(16));
+  const torus = by(results, sceneVariant(2));
+  return [
+    {
+      met: one.medianMs <= RENDERER_TARGETS.standalone * standalone.medianMs,
+      text: `the project at 1 spp runs at ${x(standalone.medianMs, one.medianMs)} the standalone plain peer's speed (${ms(one)} against ${ms(standalone)}) (target: at least ${RENDERER_TARGETS.standalone.toFixed(1)}×)`,
+    },
+    {
+      met: adaptive.medianMs <= RENDERER_TARGETS.adaptive * one.medianMs,
+      text: `adaptive (16 at edges) takes ${x(adaptive.medianMs, one.medianMs)} the 1-spp time (${ms(adaptive)} against ${ms(one)}) (target: at most ${RENDERER_TARGETS.adaptive.toFixed(1)}×)`,
+    },
+    {
+      met: torus.medianMs <= RENDERER_TARGETS.torus * one.medianMs,
+      text: `the torus scene takes ${x(torus.medianMs, one.medianMs)} the cone scene's time (${ms(torus)} against ${ms(one)}) (target: at most ${RENDERER_TARGETS.torus.toFixed(1)}×)`,
+    },
+  ];
+}

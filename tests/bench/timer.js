@@ -1,5 +1,6 @@
 // The benchmark's timer: complete fragment shaders timed in one raw WebGL2 page
-// (tests/harness/raw-webgl.js), interleaved. Used by run.js and branches.js.
+// (tests/harness/raw-webgl.js), interleaved, on one renderer or several. Used by measure.js
+// (run.js, ablation.js, apart.js), branches.js and primitives.js.
 
 import { decodeRgba } from '../harness/page.js';
 import { openRawPage } from '../harness/raw-webgl.js';
@@ -15,19 +16,81 @@ import { openRawPage } from '../harness/raw-webgl.js';
 /**
  * Times complete fragment shaders in one plain WebGL2 canvas (no page code), interleaved: each
  * round draws every shader once, so that a machine that speeds up or slows down during the run
- * moves all of them alike. `warmup` untimed rounds (the first compiles SwiftShader's code), then
+ * moves all of them alike. `warmup` untimed rounds (the first compiles the renderer's code), then
  * `frames` timed rounds; a frame is a draw plus a 1-pixel readPixels, so that what is timed is
  * the rendering. Then each shader's last frame is read back. Each frame is its own call into the
  * page (no protocol timeout however slow), and `onRound(i)` can show progress.
  * `shaders` is a list of { code, uniforms } where uniforms are { name, type, value } (float,
  * int, bool, vecN), set after Shadertoy's own at their first-frame values (iTime 0, iMouse 0).
+ * On the harness's browser; timeShadersOn times them on several renderers.
  * @param {Array<{code: string, uniforms?: Array<{name: string, type: string, value: number | boolean | number[]}>}>} shaders
  * @param {{width: number, height: number, frames?: number, warmup?: number, onRound?: (round: number) => void}} options
  * @returns {Promise<TimedShader[]>} one a shader, in order
  */
-export async function timeShaders(shaders, { width, height, frames = 15, warmup = 3, onRound = () => {} }) {
+export async function timeShaders(shaders, options) {
+  const [results] = await timeShadersOn([{ on: undefined }], shaders, options);
+  return results;
+}
+
+/**
+ * timeShaders on each of `renderers` (renderer-set.js; `on: undefined` is the harness's own
+ * browser), interleaved: each round draws every shader on one renderer, then on the next, the
+ * renderers' order turned round every other round, so that neither always draws first.
+ * @param {Array<{on: import('./renderer-set.js').BenchRenderer['on'] | undefined}>} renderers
+ * @param {Parameters<typeof timeShaders>[0]} shaders
+ * @param {Parameters<typeof timeShaders>[1]} options
+ * @returns {Promise<TimedShader[][]>} one list a renderer, in order
+ */
+export async function timeShadersOn(renderers, shaders, { width, height, frames = 15, warmup = 3, onRound = () => {} }) {
+  /** @type {Array<Awaited<ReturnType<typeof openTimer>>>} */
+  const timers = [];
+  try {
+    for (const { on } of renderers) timers.push(await openTimer(on, shaders, width, height));
+    const times = timers.map(() => shaders.map(() => /** @type {number[]} */ ([])));
+    for (let round = 0; round < warmup + frames; round++) {
+      const order = timers.map((_, t) => t);
+      if (round % 2) order.reverse();
+      for (const t of order) {
+        for (const i of timers[t].live) {
+          const ms = await timers[t].page.evaluate((k) => window.__benchmark.frame(k), i);
+          if (round >= warmup) times[t][i].push(ms);
+        }
+      }
+      onRound(round);
+    }
+    /** @type {TimedShader[][]} */
+    const all = [];
+    for (const [t, timer] of timers.entries()) {
+      /** @type {TimedShader[]} */
+      const results = [];
+      for (const [i, setup] of timer.setups.entries()) {
+        if (setup.error) {
+          results.push({ error: setup.error });
+          continue;
+        }
+        const data = await timer.page.evaluate((k) => window.__benchmark.pixels(k), i);
+        results.push({ times: times[t][i], width, height, data: decodeRgba(data, width, height, 'benchmark frame') });
+      }
+      if (timer.errors.length) throw new Error(`benchmark page logged errors:\n  ${timer.errors.join('\n  ')}`);
+      all.push(results);
+    }
+    return all;
+  } finally {
+    for (const timer of timers) await timer.page.close().catch(() => {});
+  }
+}
+
+/**
+ * A raw WebGL2 page on `on` (the harness's browser when undefined) with every shader compiled and
+ * linked, and window.__benchmark's frame(i) and pixels(i) to draw them.
+ * @param {import('./renderer-set.js').BenchRenderer['on'] | undefined} on
+ * @param {Parameters<typeof timeShaders>[0]} shaders
+ * @param {number} width
+ * @param {number} height
+ */
+async function openTimer(on, shaders, width, height) {
   // The benchmark needs the real clock: no deterministic injection here.
-  const { page, errors } = await openRawPage('benchmark', { deterministic: false });
+  const { page, errors } = await openRawPage('benchmark', { deterministic: false, on });
   try {
     const setups = await page.evaluate(
       (list, w, h) => {
@@ -64,27 +127,9 @@ export async function timeShaders(shaders, { width, height, frames = 15, warmup 
       height,
     );
     const live = setups.map((s, i) => (s.error ? null : i)).filter((i) => i !== null);
-    const times = shaders.map(() => []);
-    for (let round = 0; round < warmup + frames; round++) {
-      for (const i of live) {
-        const ms = await page.evaluate((k) => window.__benchmark.frame(k), i);
-        if (round >= warmup) times[i].push(ms);
-      }
-      onRound(round);
-    }
-    /** @type {TimedShader[]} */
-    const results = [];
-    for (const [i, setup] of setups.entries()) {
-      if (setup.error) {
-        results.push({ error: setup.error });
-        continue;
-      }
-      const data = await page.evaluate((k) => window.__benchmark.pixels(k), i);
-      results.push({ times: times[i], width, height, data: decodeRgba(data, width, height, 'benchmark frame') });
-    }
-    if (errors.length) throw new Error(`benchmark page logged errors:\n  ${errors.join('\n  ')}`);
-    return results;
-  } finally {
+    return { page, errors, setups, live };
+  } catch (error) {
     await page.close().catch(() => {});
+    throw error;
   }
 }

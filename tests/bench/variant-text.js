@@ -37,3 +37,38 @@ export function edit(text, from, to) {
   if (at < 0 || text.indexOf(from, at + 1) >= 0) throw new Error(`benchmark: "${from}" is not in the shader exactly once`);
   return text.slice(0, at) + to + text.slice(at + from.length);
 }
+
+/**
+ * `text` with every all(bvecN(a, b, ...)) written (a && b && ...) and every any(bvecN(...)) as
+ * (a || b || ...): the short-circuit forms the shader avoids (SwiftShader turns them into
+ * branches). Nested ones are rewritten too.
+ * @param {string} text
+ */
+export function branchyConditions(text) {
+  const opening = /\b(all|any)\(bvec[234]\(/g;
+  let out = '';
+  let from = 0;
+  for (let match = opening.exec(text); match; match = opening.exec(text)) {
+    if (match.index < from) continue;
+    const argsStart = match.index + match[0].length;
+    const args = [];
+    let depth = 0;
+    let start = argsStart;
+    let i = argsStart;
+    for (; i < text.length; i++) {
+      const ch = text[i];
+      if (ch === '(') depth++;
+      else if (ch === ')' && depth > 0) depth--;
+      else if (ch === ')' || (ch === ',' && depth === 0)) {
+        args.push(text.slice(start, i).trim());
+        start = i + 1;
+        if (ch === ')') break;
+      }
+    }
+    if (text[i + 1] !== ')') throw new Error(`benchmark: ${match[0]} at ${match.index} is not closed as all(bvecN(...))`);
+    const joined = args.map((arg) => branchyConditions(arg)).join(match[1] === 'all' ? ' && ' : ' || ');
+    out += `${text.slice(from, match.index)}(${joined})`;
+    from = i + 2;
+  }
+  return out + text.slice(from);
+}

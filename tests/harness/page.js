@@ -84,16 +84,19 @@ export async function disconnect() {
  * console errors and page errors. Every wait on it (evaluate, waitForFunction, goto, ...) ends
  * within `waitTimeoutMs` (WAIT_TIMEOUT_MS in tests, SCRIPT_WAIT_TIMEOUT_MS in scripts), and at
  * once when the page or the browser crashes, with what the page was doing in the message; its
- * close() gives up after a while (watch.js).
- * @param {{deterministic?: boolean, waitTimeoutMs?: number, timeouts?: Partial<import('../../src/shared/timeouts.js').Timeouts>}} [options]
+ * close() gives up after a while (watch.js). `on` opens it on another browser than the run's (the
+ * benchmarks time one renderer beside another: tests/bench/renderer-set.js).
+ * @param {{deterministic?: boolean, waitTimeoutMs?: number, timeouts?: Partial<import('../../src/shared/timeouts.js').Timeouts>,
+ *   on?: {browser: import('puppeteer-core').Browser, context: object}}} [options]
  * @returns {Promise<{page: import('puppeteer-core').Page, errors: string[], context: object}>}
  */
 export async function openPage({
   deterministic = true,
   waitTimeoutMs = scriptContext ? SCRIPT_WAIT_TIMEOUT_MS : WAIT_TIMEOUT_MS,
   timeouts = undefined,
+  on = undefined,
 } = {}) {
-  const { browser, context } = await connect();
+  const { browser, context } = on ?? (await connect());
   // the HTTP cache stays on: the build's files are revalidated (ETag; page-server.js), and what
   // the tests write into public/ is served with no-store (routes.js)
   const { page, errors } = await openEnginePage(browser, { waitTimeoutMs, timeouts, scripts: deterministic ? [INJECTION_SOURCE] : [] });

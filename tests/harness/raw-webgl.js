@@ -45,11 +45,15 @@ export async function openRawPage(title, options) {
  * triangle with Shadertoy's uniforms at their first-frame values (FIRST_FRAME_UNIFORMS of the
  * Shadertoy module): iResolution = (width, height, 1), iTime 0, iFrame 0, iMouse 0, iDate from
  * the (frozen) clock. `uniforms` overrides any of them, e.g.
- * { iTime: 1.5, iFrame: 3, iMouse: [40, 59, 40, -59] }.
+ * { iTime: 1.5, iFrame: 3, iMouse: [40, 59, 40, -59] }. `on`: another browser than the run's
+ * (page.js openPage).
+ * @param {string} code
+ * @param {{width: number, height: number, uniforms?: Record<string, number | number[]>,
+ *   on?: {browser: import('puppeteer-core').Browser, context: object}}} options
  * @returns {Promise<RawShaderResult>}
  */
-export async function renderRawShader(code, { width, height, uniforms = {} }) {
-  const { page, errors } = await openRawPage('raw WebGL2');
+export async function renderRawShader(code, { width, height, uniforms = {}, on = undefined }) {
+  const { page, errors } = await openRawPage('raw WebGL2', { on });
   try {
     const result = await page.evaluate((fragment, options) => window.__rawWebGL.render(fragment, options), code, {
       width,
