@@ -9,10 +9,10 @@
 //   llvmpipe     Mesa's LLVM-compiled rasterizer, reached through ANGLE's OpenGL ES back end on
 //                EGL (`--use-angle=gl-egl`). No X display is needed: ANGLE opens Mesa's EGL on
 //                its surfaceless platform (tried here on Chromium 156 with Mesa 22.3.6; the
-//                desktop-GL back end, `--use-angle=gl`, does need one). 8 lanes wide on AVX2,
-//                every core, and a branch no lane of a block takes is skipped: 2-7x faster on
-//                heavy frames, though LLVM compiles a program more slowly than SwiftShader's
-//                Subzero (docs/renderers.md has the figures).
+//                desktop-GL back end, `--use-angle=gl`, does need one). 8 lanes wide on AVX2, on
+//                every core: 3-8x faster on heavy frames, though LLVM compiles a program more
+//                slowly than SwiftShader's Subzero. Like SwiftShader it runs both sides of every
+//                branch, masked (docs/benchmark.md, bench:branches).
 //   gpu          the machine's own GPU, checked to be hardware, never a software one in its
 //                place: for the benchmark and for a person's own renders, never for goldens.
 
