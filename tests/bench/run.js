@@ -229,7 +229,7 @@ async function main() {
     console.error(`npm run bench -- --report: there is no ${path.relative(REPO_ROOT, file)} to report; run npm run bench first.`);
     process.exit(1);
   }
-  const written = [OUTPUT.json, OUTPUT.markdown].map((f) => `tests/bench/${f}`);
+  const written = [...(reportOnly ? [] : [OUTPUT.json]), OUTPUT.markdown].map((f) => `tests/bench/${f}`);
   if (OUTPUT.charts)
     for (const [name, { results: entries }] of Object.entries(results)) {
       const [w, h] = SIZES[0];
