@@ -39,11 +39,11 @@
 // takes, rewards the same things but the last: less code on the path, one copy of the trace.
 // Each branchy form was timed in this shader against its form here, on both renderers
 // interleaved (npm run bench:forms, 640x360; the branchy form's time over this one's, median of
-// the per-round ratios, SwiftShader / llvmpipe): && and || for all() and any() 1.32x / 0.97x;
-// early returns in the intersectors 1.05x / 1.15x (torus scene 1.07x / 1.05x); the new object
-// behind a bounding-sphere `if` 1.10x / 1.00x (torus scene 0.97x / 1.09x); the adaptive frame's
-// extra samples in a loop of their own 1.31x / 1.17x. None is faster on both, or faster by more
-// than the runs' noise (5-10%) on either: the forms here stay. The measurements, and the
+// the per-round ratios, SwiftShader / llvmpipe): && and || for all() and any() 1.30x / 0.98x;
+// early returns in the intersectors 1.16x / 1.01x (torus scene 1.01x / 1.04x); the new object
+// behind a bounding-sphere `if` 1.13x / 0.99x (torus scene 0.98x / 1.04x); the adaptive frame's
+// extra samples in a loop of their own 1.37x / 1.14x. None is faster on both, or by more than
+// 2% on either, where most cost SwiftShader 13-37%: the forms here stay. The measurements, and the
 // commands that make them: docs/benchmark.md ("What the CPU renderers reward").
 
 // ---- controls --------------------------------------------------------------------------------
@@ -104,7 +104,7 @@ const vec4 MISS = vec4(-1.0, 0.0, 0.0, 0.0);
 // how a scene walk passes the nearest hit so far (and a shadow ray the light's distance); 0
 // rejects everything.
 //
-// Written without branches (the cost model, at the top; early returns measured 1.05x / 1.15x the
+// Written without branches (the cost model, at the top; early returns measured 1.16x / 1.01x the
 // frame, SwiftShader / llvmpipe): every quantity is computed and the answer chosen by selects, so
 // a value that is not a number where the test fails (a division by a zero that the test rules
 // out) is never returned.
@@ -863,7 +863,7 @@ const float GROUND_BAND_ULPS = 64.0;
 // Every object is asked, whatever the ray: a bounding-sphere skip (an object's code behind an
 // `if`, or in a loop of 0 or 1 trips) makes nothing cheaper on SwiftShader or llvmpipe, and the
 // loop costs a block that needs it two bodies (the cost model, at the top; behind an `if`, the
-// cone scene 1.10x / 1.00x and the torus scene 0.97x / 1.09x, SwiftShader / llvmpipe). A GPU
+// cone scene 1.13x / 0.99x and the torus scene 0.98x / 1.04x, SwiftShader / llvmpipe). A GPU
 // skips such a branch; there it would pay for the torus.
 Hit traceScene(Scene s, vec3 ro, vec3 rd, int skipId, float tMax) {
     vec4 ground = intersectPlane(ro, rd, s.ground, skipId == ID_GROUND ? 0.0 : tMax);
@@ -1435,7 +1435,7 @@ void mainImage(out vec4 fragColor, in vec2 fragCoord) {
             // and llvmpipe run this body on every trip, so a marked quad pays the tests on each;
             // before the loop they would need a trace of their own, which measured slower in the
             // torus scene, and the extra samples in a loop of their own after this one measured
-            // 1.31x / 1.17x the frame (SwiftShader / llvmpipe: every block pays that loop's one
+            // 1.37x / 1.14x the frame (SwiftShader / llvmpipe: every block pays that loop's one
             // body; docs/benchmark.md). The ground's stripes are already filtered over each pixel's
             // footprint: they are in neither test. Measured (640x360, the default view, the "Extra
             // samples" view): the tests of its own rays mark 1.8% of the pixels (silhouettes 0.7%,

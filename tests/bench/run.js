@@ -19,6 +19,8 @@
 //                              (add --size 640x360 for one size)
 //                              (with --quick or --renderer too): their times and errors printed,
 //                              interleaved as in a full run; no targets, nothing written
+//   npm run bench -- --frames N
+//                              N timed frames a compilation (5 unless said): for a busy machine
 //
 // Each variant is compiled inside Shadertoy's header and timed in headless Chromium (timer.js:
 // all variants in one page per renderer, interleaved round by round, a frame being a draw plus a
@@ -42,7 +44,7 @@ import { chartSvg } from './chart.js';
 import { ALL_VARIANTS, extraSamplesView, source, uniformValues } from './variants.js';
 import { RENDERER_TITLES, renderersAsked, withRenderers } from './renderer-set.js';
 import { mergeResults, readResults } from './results-file.js';
-import { benchMarkdown } from './report.js';
+import { benchMarkdown, comparisonTable } from './report.js';
 import { SCENES_GROUP } from './targets.js';
 
 const argv = process.argv.slice(2);
@@ -97,7 +99,13 @@ const SIZES = sizeMatch
 // 34.3, 34.0, 33.9 ms for three copies in one run, 34.8 and 41.7 in another), so one program a
 // variant would rank variants by luck.
 const COPIES = quick ? 1 : 3;
-const FRAMES = quick ? 1 : 5; // timed frames per copy
+// timed frames per copy (--frames N: more, for a busy machine)
+const framesAt = argv.indexOf('--frames');
+const FRAMES = quick ? 1 : framesAt >= 0 ? Number(argv[framesAt + 1]) : 5;
+if (!(Number.isInteger(FRAMES) && FRAMES > 0)) {
+  console.error(`npm run bench -- --frames: expected a whole number of frames, got "${argv[framesAt + 1] ?? ''}"`);
+  process.exit(1);
+}
 const WARMUP = quick ? 1 : 2; // per copy
 const REFERENCE_SAMPLES_PER_AXIS = quick ? 2 : 8;
 
@@ -205,6 +213,7 @@ async function main() {
       console.error(`\n${outcome.failures.length} variant(s) failed:\n  ${outcome.failures.join('\n  ')}`);
       process.exit(1);
     }
+    if (only) for (const [width] of SIZES) console.log(`\n${comparisonTable(outcome.measured, width)}`);
     if (quick || only) {
       console.log(
         quick
@@ -220,7 +229,7 @@ async function main() {
     console.error(`npm run bench -- --report: there is no ${path.relative(REPO_ROOT, file)} to report; run npm run bench first.`);
     process.exit(1);
   }
-  const written = [OUTPUT.json, OUTPUT.markdown];
+  const written = [...(reportOnly ? [] : [OUTPUT.json]), OUTPUT.markdown].map((f) => `tests/bench/${f}`);
   if (OUTPUT.charts)
     for (const [name, { results: entries }] of Object.entries(results)) {
       const [w, h] = SIZES[0];
@@ -232,7 +241,7 @@ async function main() {
           title: `Time against error at ${w}×${h} (${RENDERER_TITLES[name]}, ${results[name].run?.cores ?? os.cpus().length} cores)`,
         }),
       );
-      written.push(chart);
+      written.push(`tests/bench/${chart}`);
     }
   const markdown = benchMarkdown(results);
   fs.writeFileSync(path.join(BENCH_DIR, OUTPUT.markdown), markdown + '\n');
@@ -240,9 +249,7 @@ async function main() {
     replaceMarkedSection(path.join(REPO_ROOT, 'docs', 'benchmark.md'), 'bench', markdown);
     written.push('the tables in docs/benchmark.md');
   }
-  console.log(
-    `\n${markdown}\n\nwrote ${written.map((f) => (f.endsWith('md') || f.endsWith('json') || f.endsWith('svg') ? `tests/bench/${f}` : f)).join(', ')}`,
-  );
+  console.log(`\n${markdown}\n\nwrote ${written.join(', ')}`);
 }
 
 await main();
