@@ -126,6 +126,30 @@ describe('an endless shader fails within the watchdog at every size, and one cas
     expect(fs.existsSync(path.join(folder, 'endless.png'))).toBe(false);
   });
 
+  test('a render whose second frame never ends (the one read back): the watchdog, not a page timeout', async () => {
+    // a view is its frame 0 and then the frame read back, which must be watched as the first is
+    write('second.glsl', ENDLESS.replace('float s = 0.0;', 'float s = 0.0; if (iFrame < 1) { c = vec4(1.0); return; }'));
+    const out = await shaderproof(
+      'render',
+      'second.glsl',
+      '-o',
+      'second.png',
+      '--size',
+      '64x36',
+      '--watchdog',
+      '2',
+      '--renderer',
+      'swiftshader',
+    );
+    expect(out.code).toBe(1);
+    expect(out.stderr.trim().split('\n')).toEqual([
+      expect.stringMatching(
+        /^shaderproof render: second\.glsl: did not finish drawing a frame: one band of it took longer than the watchdog's 2 s;/,
+      ),
+    ]);
+    expect(out.seconds).toBeLessThan(BOUND_S);
+  });
+
   test("a recording whose third frame never ends: the command line's line, not the page's", async () => {
     write('later.glsl', ENDLESS.replace('float s = 0.0;', 'float s = 0.0; if (iFrame < 2) { c = vec4(1.0); return; }'));
     const out = await shaderproof(

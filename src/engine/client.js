@@ -59,22 +59,34 @@ export function engineClient(page) {
     },
 
     /**
-     * Starts bringing the page to the view `query` (null: the view it loaded at): null, or the
-     * page's start-up error.
+     * Starts bringing the page to the view `query` (null: the view it loaded at) and reading one
+     * frame of it back: null, or the page's start-up error. The read draws a frame too (a
+     * shader may hang on its second frame), so it is part of what pollView watches.
      * @param {string | null} query
      * @returns {Promise<string | null>}
      */
     startView(query) {
       return page.evaluate((opening) => {
         if (!window.raytracer) return 'page error: the page has no engine hook (window.raytracer)';
-        const slot = { settled: /** @type {any} */ (null) };
+        const hook = window.raytracer;
+        const slot = { settled: /** @type {any} */ (null), view: /** @type {any} */ (null) };
         /** @type {any} */ (window).__view = slot;
-        const opened = opening === null ? window.raytracer.ready : window.raytracer.open(opening);
-        opened.then(
-          () => (slot.settled = { state: 'drawn' }),
-          (error) =>
-            (slot.settled = { state: 'failed', error: error?.report ?? error?.message ?? String(error), compile: Boolean(error?.report) }),
-        );
+        const opened = opening === null ? hook.ready : hook.open(opening);
+        opened
+          .then(async () => {
+            const pixels = await hook.readPixels();
+            const info = JSON.parse(JSON.stringify(hook.info()));
+            slot.view = { pixels, frame: info.frame, info, notes: hook.notes(), pageError: info.error ?? undefined };
+            slot.settled = { state: 'drawn' };
+          })
+          .catch(
+            (error) =>
+              (slot.settled = {
+                state: 'failed',
+                error: error?.report ?? error?.message ?? String(error),
+                compile: Boolean(error?.report),
+              }),
+          );
         return null;
       }, query);
     },
@@ -92,17 +104,17 @@ export function engineClient(page) {
     },
 
     /**
-     * The drawn view: its pixels (one frame drawn and read back), the frames drawn so far, what
-     * the page says of itself (info), its notes, and its start-up error if any.
+     * The view startView drew (once pollView says it is drawn): its pixels, the frames drawn so
+     * far, what the page says of itself (info), its notes, and its start-up error if any.
      * @returns {Promise<{pixels: PageImage, frame: number, info: any,
      *   notes: import('./view.js').PageNote[], pageError: string | undefined}>}
      */
     readView() {
-      return page.evaluate(async () => {
-        const pixels = await window.raytracer.readPixels();
-        const info = JSON.parse(JSON.stringify(window.raytracer.info()));
-        const notes = window.raytracer.notes();
-        return { pixels, frame: info.frame, info, notes, pageError: info.error ?? undefined };
+      return page.evaluate(() => {
+        const slot = /** @type {any} */ (window).__view;
+        const view = slot.view;
+        slot.view = null; // its pixels are given once
+        return view;
       });
     },
 

@@ -158,7 +158,7 @@ export class RaytracerApp extends Emitter {
     });
     this.ready.catch(() => {}); // a failure is reported on the page; callers may still await it
 
-    this.canvasSize.watch(() => this.frames.request());
+    this.canvasSize.watch(() => this.frames.resized());
     watchContext(this);
   }
 

@@ -63,6 +63,8 @@ export class FrameLoop {
     this.lastFinished = null;
     /** The last whole frame on the canvas: its shader's load (ShaderVersion.load) and its size. @type {{load: number | undefined, width: number, height: number} | null} */
     this._whole = null;
+    /** The size of the frame under way, or else of the last one asked for. @type {{width: number, height: number} | null} */
+    this._asked = null;
 
     host.gpu.on('band', (_, band) => {
       if (band.kind !== 'frame') return;
@@ -91,6 +93,17 @@ export class FrameLoop {
     this._dirty = true;
     this.stillFrames = 0;
     this._schedule();
+  }
+
+  /**
+   * The canvas's target size may have changed (CanvasSize.watch): a frame is due unless the one
+   * under way, or the last one, has that size. A resize observer reports a new fixed size only
+   * after the frame at that size has started; a frame asked for then would be one more frame
+   * than the view was given, and a render read back after it would show the next iFrame.
+   */
+  resized() {
+    const { width, height } = this._host.canvasSize.target();
+    if (this._asked?.width !== width || this._asked?.height !== height) this.request();
   }
 
   /** The next frame starts a new run: its interval is not measured from the last one (after a pause). */
@@ -144,6 +157,7 @@ export class FrameLoop {
     while (this._drawing) await this._drawing.catch(() => {});
     if (host.gpu.contextLost || !host.hasProgram()) return null;
     const { width, height } = host.canvasSize.target();
+    this._asked = { width, height };
     this._dirty = false;
     const continued = this.running && this._lastDrawnAt !== null;
     const run = host.inputs.run;
