@@ -126,8 +126,9 @@ describe('an endless shader fails within the watchdog at every size, and one cas
     expect(fs.existsSync(path.join(folder, 'endless.png'))).toBe(false);
   });
 
-  test('a render whose second frame never ends (the one read back): the watchdog, not a page timeout', async () => {
-    // a view is its frame 0 and then the frame read back, which must be watched as the first is
+  test('a still is frame 0 and nothing after it: a shader that never ends from iFrame 1 on renders', async () => {
+    // a view's still is its frame 0 read back as drawn (client.js startView); a frame more (a
+    // late resize used to ask for one, and the read drew one) would hang here until the watchdog
     write('second.glsl', ENDLESS.replace('float s = 0.0;', 'float s = 0.0; if (iFrame < 1) { c = vec4(1.0); return; }'));
     const out = await shaderproof(
       'render',
@@ -141,13 +142,9 @@ describe('an endless shader fails within the watchdog at every size, and one cas
       '--renderer',
       'swiftshader',
     );
-    expect(out.code).toBe(1);
-    expect(out.stderr.trim().split('\n')).toEqual([
-      expect.stringMatching(
-        /^shaderproof render: second\.glsl: did not finish drawing a frame: one band of it took longer than the watchdog's 2 s;/,
-      ),
-    ]);
-    expect(out.seconds).toBeLessThan(BOUND_S);
+    expect(out.stderr).toBe('');
+    expect(out.code).toBe(0);
+    expect([...readPng(path.join(folder, 'second.png')).data.subarray(0, 4)]).toEqual([255, 255, 255, 255]);
   });
 
   test("a recording whose third frame never ends: the command line's line, not the page's", async () => {

@@ -59,9 +59,10 @@ export function engineClient(page) {
     },
 
     /**
-     * Starts bringing the page to the view `query` (null: the view it loaded at) and reading one
-     * frame of it back: null, or the page's start-up error. The read draws a frame too (a
-     * shader may hang on its second frame), so it is part of what pollView watches.
+     * Starts bringing the page to the view `query` (null: the view it loaded at) and reading its
+     * frame back: null, or the page's start-up error. The still is the view's frame 0, as it was
+     * drawn (readFrame draws nothing), so that an iFrame-reading shader renders as Shadertoy
+     * draws its first frame.
      * @param {string | null} query
      * @returns {Promise<string | null>}
      */
@@ -74,9 +75,9 @@ export function engineClient(page) {
         const opened = opening === null ? hook.ready : hook.open(opening);
         opened
           .then(async () => {
-            const pixels = await hook.readPixels();
+            const { iFrame, ...pixels } = await hook.readFrame();
             const info = JSON.parse(JSON.stringify(hook.info()));
-            slot.view = { pixels, frame: info.frame, info, notes: hook.notes(), pageError: info.error ?? undefined };
+            slot.view = { pixels, frame: info.frame, iFrame, info, notes: hook.notes(), pageError: info.error ?? undefined };
             slot.settled = { state: 'drawn' };
           })
           .catch(
@@ -104,9 +105,10 @@ export function engineClient(page) {
     },
 
     /**
-     * The view startView drew (once pollView says it is drawn): its pixels, the frames drawn so
-     * far, what the page says of itself (info), its notes, and its start-up error if any.
-     * @returns {Promise<{pixels: PageImage, frame: number, info: any,
+     * The view startView drew (once pollView says it is drawn): its pixels and their iFrame, the
+     * frames drawn so far, what the page says of itself (info), its notes, and its start-up error
+     * if any.
+     * @returns {Promise<{pixels: PageImage, iFrame: number, frame: number, info: any,
      *   notes: import('./view.js').PageNote[], pageError: string | undefined}>}
      */
     readView() {

@@ -6,10 +6,10 @@
 // load gives (tests/page-open.test.js).
 
 /**
- * What drawView found: the frame's pixels (base64 RGBA8, rows top to bottom), what the page said
- * of itself and its notes (PageNote), or `error` (why there is no frame) with `hung` when the
+ * What drawView found: the frame's pixels (base64 RGBA8, rows top to bottom) and their iFrame (0:
+ * a still is the view's first frame), what the page said of itself and its notes (PageNote), or `error` (why there is no frame) with `hung` when the
  * watchdog gave up on the shader (it may never finish) and `compile` when it did not compile.
- * @typedef {{pixels: {width: number, height: number, data: string}, frame: number, info: any,
+ * @typedef {{pixels: {width: number, height: number, data: string}, iFrame: number, frame: number, info: any,
  *   notes: {kind: 'missing' | 'values', title: string, lines: string[]}[], pageError: string | undefined, error?: undefined}
  *   | {error: string, hung?: boolean, compile?: boolean}} DrawnView
  */

@@ -14,6 +14,9 @@
 //   readPixels()          Promise<{width, height, data}>: draws one frame and reads it back (the
 //                         render worker keeps each frame in a render target). `data` is base64
 //                         of RGBA8 pixels, rows top to bottom, alpha 255 (as the canvas shows).
+//   readFrame()           Promise<{width, height, iFrame, data}>: the last frame drawn, read back
+//                         as it was drawn; draws nothing (a view's still is its frame 0, as
+//                         open() drew it). `data` as readPixels's.
 //   renderFrames(n)       Promise<{median, times}>: the render worker draws n whole frames back
 //                         to back, each a single draw followed by a 1-pixel readPixels so the
 //                         GPU has finished; `times` are the n per-frame times in ms, `median`
@@ -195,6 +198,12 @@ export function installAutomation(app, ready, { open, recorder, ui: pageUi }) {
       const drawn = await app.frames.draw(performance.now(), true);
       if (!drawn?.pixels) throw new Error(app.gpu.contextLost ? 'the GPU context is lost' : 'no shader is running');
       return { width: drawn.width, height: drawn.height, data: toBase64(drawn.pixels) };
+    },
+
+    async readFrame() {
+      await settled();
+      const drawn = await app.frames.readLast();
+      return { width: drawn.width, height: drawn.height, iFrame: drawn.frame, data: toBase64(drawn.data) };
     },
 
     async renderFrames(n = 1) {
@@ -430,6 +439,7 @@ export function installFailedAutomation(error) {
     ready: failed,
     open: fail,
     readPixels: fail,
+    readFrame: fail,
     renderFrames: fail,
     setControls: fail,
     setSource: fail,

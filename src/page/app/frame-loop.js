@@ -234,6 +234,19 @@ export class FrameLoop {
   }
 
   /**
+   * The last frame drawn, read back as it was drawn (nothing is drawn: a still's frame 0 stays
+   * frame 0), once no frame is under way; rows top to bottom.
+   * @returns {Promise<{width: number, height: number, data: Uint8Array, frame: number}>}
+   */
+  async readLast() {
+    await this.idle();
+    const last = this.last;
+    if (!last || this._host.gpu.contextLost)
+      throw new Error(this._host.gpu.contextLost ? 'the GPU context is lost' : 'no frame has been drawn');
+    return { width: last.width, height: last.height, data: await this._host.gpu.ask('readFrame', {}), frame: last.frame };
+  }
+
+  /**
    * The last drawn frame drawn again at width × height (default: its own size), with the same
    * iTime, iFrame, iDate, and iMouse scaled to the new size. Rows top to bottom; `time` is its iTime.
    * @param {{width: number, height: number} | null} [size]

@@ -68,6 +68,9 @@ import { ShaderCompileError, WebGL2UnavailableError } from './errors.js';
  *   frame for the page, drawn band by band; a newer frame replaces one that has not started;
  *   `progressive`: it is shown as it builds up (four times a second: a bitmap with a 'band'
  *   event), else only whole (app/frame-loop.js decides)
+ * @property {[{}, Uint8Array]} readFrame the last frame drawn for the page, read back as it was
+ *   drawn (its render target; nothing is drawn): RGBA8, rows top to bottom, alpha 1; rejects
+ *   before the first frame and while a frame is under way (the page asks once its frame is done)
  * @property {[{inputs: FrameInputs, width: number, height: number, allPasses: boolean, program?: 'aa-pixels'}, Uint8Array]} capture
  *   the same frame at another size, off screen (allPasses: every pass, buffers included, at their
  *   size: a recorded frame); RGBA8, rows top to bottom, alpha 1; program 'aa-pixels': the path

@@ -325,6 +325,7 @@ function start() {
     for (const lost of [job, ...waiting]) lost?.reject(new Error('the GPU context was lost'));
     job = null;
     waiting.length = 0;
+    lastFrame = null; // its target is gone with the context: readFrame and a probe wait for a new frame
     tell('context', { lost: true });
   });
   canvas.addEventListener('webglcontextrestored', () => {
@@ -370,6 +371,12 @@ const tell = serve(
       if (stale >= 0) waiting.splice(stale, 1)[0].reject(new Error('replaced by a newer frame'));
       const { width, height } = inputs;
       return enqueue({ kind: 'frame', inputs, width, height, readBack, progressive, target: renderer().frameTarget });
+    },
+
+    readFrame() {
+      if (!lastFrame) throw new Error('no frame has been drawn yet');
+      if (job?.kind === 'frame') throw new Error('a frame is under way: its target is being drawn');
+      return readOpaque(renderer().frameTarget, lastFrame.width, lastFrame.height);
     },
 
     capture({ inputs, width, height, allPasses, program }) {
