@@ -1,7 +1,10 @@
 // What draws (src/engine/renderers.js, browser.js): which renderer a verb gets, how Mesa is
 // found, and that each renderer asked for is the one that draws, never another in its place.
+import fs from 'node:fs';
+import path from 'node:path';
 import { describe, expect, test } from 'vitest';
 import { startBrowser } from '../src/engine/browser.js';
+import { killBrowser } from '../src/engine/watch.js';
 import { MESA_PACKAGES, chooseRenderer, drawnBy, findMesa, mesaMissingLine, suiteRenderer } from '../src/engine/renderers.js';
 
 /** A machine's file system for findMesa: the files it has, and its folders' listings. */
@@ -96,5 +99,18 @@ describe('the renderer asked for is the one that draws', () => {
     await expect(startBrowser({ renderer: 'llvmpipe', mesa: broken })).rejects.toThrow(
       /llvmpipe was asked for, but (there is no WebGL2|WebGL2 is ".*").*libegl-mesa0.*--renderer swiftshader/,
     );
+  });
+});
+
+describe('a browser leaves nothing in the temporary folder', () => {
+  test('killed (as the watchdog kills a hung one), its profile and its singleton-socket folder go with close()', async () => {
+    const started = await startBrowser({ renderer: 'swiftshader', probe: false });
+    const flag = started.browser.process()?.spawnargs.find((arg) => arg.startsWith('--user-data-dir=')) ?? '';
+    const profile = flag.slice('--user-data-dir='.length);
+    const owner = path.dirname(fs.readlinkSync(path.join(profile, 'SingletonSocket')));
+    expect(owner).toMatch(/org\.chromium\./);
+    killBrowser(started.browser); // Chromium gets no chance to remove its own folder
+    await started.close();
+    expect([fs.existsSync(profile), fs.existsSync(owner)]).toEqual([false, false]);
   });
 });
