@@ -85,6 +85,9 @@ export class CubeBuffer {
     const three = this.three;
     three.setClearColor(0x000000, 0);
     for (const target of this.targets) {
+      // a clear goes through the target's scissor, which the last band drawn into it left on its
+      // rows (renderer.js drawRegion): Restart cleared only those, and the counter went on
+      target.scissorTest = false;
       for (let face = 0; face < 6; face++) {
         three.setRenderTarget(target, face);
         three.clear(true, false, false);

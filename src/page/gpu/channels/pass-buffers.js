@@ -154,6 +154,7 @@ export class PassBuffers {
   /** @param {THREE.WebGLRenderTarget} target */
   _clear(target) {
     const three = this.three;
+    target.scissorTest = false; // a clear goes through the target's scissor: the last band's rows (cube-buffer.js clear)
     three.setRenderTarget(target);
     three.setClearColor(0x000000, 0);
     three.clear(true, false, false);
