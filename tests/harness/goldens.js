@@ -30,8 +30,8 @@ export const REFERENCES = path.join(GOLDEN_DIR, REFERENCE_DIR);
 const manifest = readManifest(GOLDEN_DIR);
 /**
  * The goldens' cases, as `shaderproof test tests/golden` reads them, in the manifest's order (the
- * runner sorts them by name): views that share a program follow each other, and a program
- * compiles once for them (sorted, the run took a fifth longer here).
+ * runner sorts them by name): views that share a program (the same compile-time controls) follow
+ * each other, so that the page compiles it once for them, not again after each other view.
  */
 export const GOLDEN_CASES = findCases(GOLDEN_DIR, manifest).sort(
   (a, b) => Object.keys(manifest.cases).indexOf(a.name) - Object.keys(manifest.cases).indexOf(b.name),
