@@ -168,7 +168,9 @@ describe('shaderproof, installed from its tarball', () => {
   test("render of the raytracer is the page's golden of the same view", async () => {
     const out = await shaderproof(['render', SHADER_FILE, '-o', 'default.png', '--size', '320x180', '--time', '0']);
     expect(out.code, out.stderr).toBe(0);
-    expect(sameImage(readPng(path.join(folder, 'default.png')), readPng(path.join(GOLDEN_DIR, 'default.png')))).toBe(true);
+    expect(sameImage(readPng(path.join(folder, 'default.png')), readPng(path.join(GOLDEN_DIR, '__references__', 'default.png')))).toBe(
+      true,
+    );
   });
 
   test('render --tile 256 is the untiled render, pixel for pixel, derivatives included', async () => {

@@ -12,6 +12,7 @@ import { main } from '../src/cli/main.js';
 import { io } from '../src/cli/io.js';
 import { runTest } from '../src/cli/test/corpus.js';
 import { silenceLimitMs } from '../src/cli/test/guard.js';
+import { readPng, writePng } from '../src/engine/png.js';
 
 let folder = '';
 beforeAll(() => {
@@ -36,7 +37,7 @@ function cases(dir, names) {
  * "late" throws what a wait of the session's that ran out throws (src/engine/watch.js), "slow"
  * answers after 200 ms (so that workers finish out of order).
  */
-function fakeSession() {
+function fakeSession(rendererName = undefined) {
   const mounted = [];
   let killed = false;
   const session = {
@@ -51,6 +52,7 @@ function fakeSession() {
       chromium: 'Chrome/0',
       webglVersion: '',
       gpu: false,
+      rendererName,
     }),
     async draw(query) {
       if (killed) throw new Error('drawn on a killed session');
@@ -75,7 +77,7 @@ function fakeSession() {
 }
 
 /** runTest with io captured and fake sessions: { code, out, err, started } (lines; sessions started). */
-async function run(dir, flags = {}, { silenceMs = 300, terminal = false } = {}) {
+async function run(dir, flags = {}, { silenceMs = 300, terminal = false, renderer = undefined } = {}) {
   const out = [];
   const err = [];
   const written = [];
@@ -87,7 +89,7 @@ async function run(dir, flags = {}, { silenceMs = 300, terminal = false } = {}) 
   let started = 0;
   try {
     const values = { out: path.join(folder, `${path.basename(dir)}-out`), ...flags };
-    const start = async () => (started++, /** @type {any} */ (fakeSession()));
+    const start = async () => (started++, /** @type {any} */ (fakeSession(renderer)));
     const code = await runTest({ values, positionals: [dir] }, { start, silenceMs });
     return { code, out, err, started, written, report: values.out };
   } finally {
@@ -137,6 +139,33 @@ describe('one case never takes a run down (issue 45, item 1)', () => {
     // the page's own limits (src/shared/timeouts.js): 20 s to start a worker, 30 s a first frame, 5 s a band
     expect(silenceLimitMs({ hangMs: 5_000, compileHangMs: 30_000 })).toBe(55_000);
     expect(silenceLimitMs({ hangMs: 2_000, compileHangMs: 2_000 })).toBe(24_000);
+  });
+});
+
+describe("the manifest's views and a renderer's own tolerance (issue 46, item 4)", () => {
+  test("views of one shader outside DIR each have a reference; a renderer's own tolerance holds when that renderer draws", async () => {
+    const dir = cases('views', []);
+    fs.writeFileSync(path.join(folder, 'scene.glsl'), SHADER);
+    const manifest = {
+      defaults: { shader: '../scene.glsl' },
+      cases: { near: {}, far: { tolerance: { llvmpipe: { maxDiffPixels: 16 } } } },
+    };
+    fs.writeFileSync(path.join(dir, 'shaderproof.json'), JSON.stringify(manifest));
+    const update = await run(dir, { update: true, jobs: '1' });
+    expect(update.code, update.err.join('\n')).toBe(0);
+    expect(fs.readdirSync(path.join(dir, '__references__')).sort()).toEqual(['drawn-by.json', 'far.png', 'near.png']);
+    // far's reference another colour: each of its 16 pixels differs from what is drawn
+    const reference = path.join(dir, '__references__', 'far.png');
+    const image = readPng(reference);
+    writePng(reference, { ...image, data: image.data.map((v, i) => (i % 4 === 3 ? v : 255 - v)) });
+    const swiftshader = await run(dir, { jobs: '1' }, { renderer: 'swiftshader' });
+    expect(swiftshader.out.filter((line) => /^(pass|FAIL) /.test(line)).map((line) => line.replace(/\s+\d+ ms/, ''))).toEqual([
+      'FAIL  far  16 pixels differ from the reference (at most 0 may)',
+      'pass  near',
+    ]);
+    const llvmpipe = await run(dir, { jobs: '1' }, { renderer: 'llvmpipe' });
+    expect(llvmpipe.code, llvmpipe.out.join('\n')).toBe(0);
+    expect(llvmpipe.out.at(-1)).toMatch(/^2 passed, 0 failed/);
   });
 });
 

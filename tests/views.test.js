@@ -1,10 +1,13 @@
-// The view table itself (no browser): names, sizes, and every shader control a view sets must
-// exist in the control block of shaders/raytrace.glsl with a value inside its range, so a
-// renamed or re-ranged control fails here, loudly, instead of silently rendering the default.
+// The goldens' views (tests/golden/shaderproof.json, no browser): names, sizes, and every shader
+// control a view sets must exist in the control block of shaders/raytrace.glsl with a value
+// inside its range, so a renamed or re-ranged control fails here, loudly, instead of silently
+// rendering the default; and the manifest's tolerance is the suite's (tests/views.js).
 import fs from 'node:fs';
 import { describe, expect, test } from 'vitest';
 import { parseControls } from '../src/shadertoy/controls.js';
-import { GOLDEN_DIR, SHADER_FILE } from './harness/config.js';
+import { SHADER_FILE } from './harness/config.js';
+import { allowedDiffPixels } from './harness/images.js';
+import { GOLDEN_CASES, REFERENCES } from './harness/goldens.js';
 import { MAX_DIFF_FRACTION, PIXEL_THRESHOLD, VIEWS, viewControlProblems, viewQuery, viewSize } from './views.js';
 import { EXTRA_SAMPLES_VIEW, extraSamplesValues } from '../src/raytracer/extra-samples.js';
 
@@ -57,8 +60,25 @@ describe('view table', () => {
 
   test('every golden image belongs to a view', () => {
     const views = new Set(VIEWS.map((v) => `${v.name}.png`));
-    const stray = fs.existsSync(GOLDEN_DIR) ? fs.readdirSync(GOLDEN_DIR).filter((f) => f.endsWith('.png') && !views.has(f)) : [];
-    expect(stray, `golden images without a view in tests/views.js: delete them from ${GOLDEN_DIR}`).toEqual([]);
+    const stray = fs.existsSync(REFERENCES) ? fs.readdirSync(REFERENCES).filter((f) => f.endsWith('.png') && !views.has(f)) : [];
+    expect(stray, `golden images without a view in tests/golden/shaderproof.json: delete them from ${REFERENCES}`).toEqual([]);
+  });
+
+  test("the runner reads the manifest's views as the harness does, with the suite's tolerance", () => {
+    expect(GOLDEN_CASES.map((c) => c.name).sort()).toEqual(VIEWS.map((v) => v.name).sort());
+    for (const testCase of GOLDEN_CASES) {
+      const view = VIEWS.find((v) => v.name === testCase.name);
+      const { width, height } = testCase.view.size;
+      expect([width, height], testCase.name).toEqual(viewSize(view));
+      expect(testCase.view.time, testCase.name).toBe(view.params.time);
+      expect(testCase.file, testCase.name).toBe(SHADER_FILE);
+      expect(testCase.tolerance, testCase.name).toEqual({ threshold: PIXEL_THRESHOLD, maxDiffPixels: allowedDiffPixels(width, height) });
+    }
+    // the one renderer's own: aa-pixels on llvmpipe, 1% of its pixels (the reason is in the manifest)
+    const own = GOLDEN_CASES.filter((c) => Object.keys(c.rendererTolerance).length);
+    expect(own.map((c) => [c.name, c.rendererTolerance])).toEqual([
+      ['aa-pixels', { llvmpipe: { threshold: PIXEL_THRESHOLD, maxDiffPixels: 576 } }],
+    ]);
   });
 
   test('the tolerance is small', () => {

@@ -163,6 +163,11 @@ Every .glsl and .json file under DIR is a case, drawn at ${TEST_SIZE.width}x${TE
 A case that goes without an input it asks for fails, unless allowed:
 "allowMissing": ["iChannel2", "Sound", "Image/iChannel1"].
 
+A case whose name is no file under DIR is a view of a shader elsewhere, one of many:
+"orbit": { "shader": "../scene.glsl", "mouse": [240, 120, 160, -90] }. A renderer may have
+a tolerance of its own: "tolerance": { "maxDiffPixels": 50, "llvmpipe": { "maxDiffPixels": 500 } }.
+"//" is a comment, in a case or at the top.
+
 A case is drawn at 320x180 unless the manifest gives a "size". References are
 DIR/__references__/<case>.png, written only by --update. A case with "sound": {"time": T,
 "duration": S, "tolerance": {"rms": r, "spectrum": s}} also compares its Sound tab with

@@ -172,7 +172,7 @@ function readdirOrNone(folder) {
  * Mesa's llvmpipe, or the machine's GPU (for the benchmark and a person's renders, never for
  * goldens); `gpu: true` is the same as `renderer: 'gpu'`. It runs in a profile of its own that
  * close() removes. `environment` says what draws: the Chromium version, the renderer's name and
- * its WebGL2 string, as every output of the command line and the goldens' ENVIRONMENT.json name
+ * its WebGL2 string, as every output of the command line and the references' drawn-by.json name
  * them. With `probe: false` (SwiftShader or llvmpipe) WebGL2 is not asked on a page of its own
  * (0.45 s here): the caller asks its own first page and hands the answer to verify(), which
  * checks it and fills in `environment`.

@@ -22,7 +22,7 @@ import path from 'node:path';
 /** @typedef {'swiftshader' | 'llvmpipe' | 'gpu'} RendererName */
 
 /** @type {readonly RendererName[]} */
-const RENDERER_NAMES = Object.freeze(['swiftshader', 'llvmpipe', 'gpu']);
+export const RENDERER_NAMES = Object.freeze(['swiftshader', 'llvmpipe', 'gpu']);
 
 /** The environment variable that picks the renderer of the project's own suite and benchmarks. */
 export const RENDERER_ENV = 'SHADERPROOF_RENDERER';

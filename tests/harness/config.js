@@ -3,13 +3,13 @@ import path from 'node:path';
 import { fileURLToPath } from 'node:url';
 
 export const REPO_ROOT = fileURLToPath(new URL('../..', import.meta.url));
+/** The render goldens: a `shaderproof test` folder (shaderproof.json, __references__/). */
 export const GOLDEN_DIR = path.join(REPO_ROOT, 'tests', 'golden');
 /** Failure images (actual, expected, diff): ignored by git. */
 export const OUTPUT_DIR = path.join(REPO_ROOT, 'tests', 'output');
-export const ENVIRONMENT_FILE = path.join(GOLDEN_DIR, 'ENVIRONMENT.json');
 export const SHADER_FILE = path.join(REPO_ROOT, 'shaders', 'raytrace.glsl');
 export const UPDATE_COMMAND = 'npm run test:update';
-/** Goldens are written only when this is set (by `npm run test:update`). */
+/** Goldens are written only when this is set (by `npm run test:update`): the runner's --update. */
 export const UPDATING = process.env.UPDATE_GOLDENS === '1';
 
 /**

@@ -7,9 +7,8 @@ import fs from 'node:fs';
 import path from 'node:path';
 import { readPng, writePng } from '../../src/engine/png.js';
 import { compareImages as compareWith } from '../../src/engine/compare.js';
-import { ENVIRONMENT_FILE, GOLDEN_DIR, OUTPUT_DIR, UPDATE_COMMAND, UPDATING, rel } from './config.js';
-import { harnessContext } from './page.js';
-import { INCLUDE_AA, MAX_DIFF_FRACTION, PIXEL_THRESHOLD, RENDERER_MAX_DIFF_FRACTION } from '../views.js';
+import { OUTPUT_DIR, rel } from './config.js';
+import { INCLUDE_AA, MAX_DIFF_FRACTION, PIXEL_THRESHOLD } from '../views.js';
 
 export { readPng, writePng };
 
@@ -146,61 +145,4 @@ export function expectImagesMatch(
     );
   }
   return { diffPixels, fraction, allowed };
-}
-
-/** A sentence about the environment, if it is not the one the goldens were made in. */
-function environmentNote(current) {
-  if (!current || !fs.existsSync(ENVIRONMENT_FILE)) return '';
-  if (current.rendererName && current.rendererName !== 'swiftshader')
-    return (
-      `\nNote: this run draws with ${current.rendererName} ("${current.renderer}"), and the goldens are SwiftShader's: ` +
-      "if the diff shows only a rasterizer's rounding, widen its entry in tests/views.js RENDERER_MAX_DIFF_FRACTION with the measurement; never regenerate the goldens on it."
-    );
-  let recorded;
-  try {
-    recorded = JSON.parse(fs.readFileSync(ENVIRONMENT_FILE, 'utf8'));
-  } catch {
-    return `\nNote: ${rel(ENVIRONMENT_FILE)} cannot be read.`;
-  }
-  const changes = ['chromium', 'renderer']
-    .filter((key) => recorded[key] !== current[key])
-    .map((key) => `${key}: goldens made with "${recorded[key]}", this run uses "${current[key]}"`);
-  if (!changes.length) return '';
-  return (
-    `\nNote: this environment differs from the one the goldens were made in (${changes.join('; ')}). ` +
-    `If the diff shows only that, regenerate the goldens with \`${UPDATE_COMMAND}\` in the new environment.`
-  );
-}
-
-/**
- * Compares a render with tests/golden/<name>.png (expectImagesMatch). With UPDATE_GOLDENS=1 it
- * (re)writes the golden when it is missing or its pixels differ at all; otherwise a missing
- * golden fails and names the command that makes it.
- * @returns {Promise<{status:'match'|'written'|'unchanged', diffPixels?:number}>}
- */
-export async function expectMatchesGolden(name, image) {
-  const golden = path.join(GOLDEN_DIR, `${name}.png`);
-  const exists = fs.existsSync(golden);
-  if (UPDATING) {
-    if (exists && sameImage(readPng(golden), image)) return { status: 'unchanged' };
-    writePng(golden, image);
-    console.log(`${exists ? 'updated' : 'created'} ${rel(golden)}`);
-    return { status: 'written' };
-  }
-  if (!exists) {
-    const { actual } = clearOutput(name);
-    writePng(actual, image);
-    throw new Error(
-      `No golden image ${rel(golden)} for view "${name}". Run \`${UPDATE_COMMAND}\` to create it, look at it, ` +
-        `and commit it. This run's render is in ${rel(actual)}.`,
-    );
-  }
-  const { environment } = await harnessContext().catch(() => ({}));
-  const { diffPixels } = expectImagesMatch(name, image, readPng(golden), {
-    maxDiffFraction: RENDERER_MAX_DIFF_FRACTION[environment?.rendererName]?.[name] ?? MAX_DIFF_FRACTION,
-    actualLabel: 'the render',
-    expectedLabel: rel(golden),
-    hint: `If the change is intended, run \`${UPDATE_COMMAND}\` and review the new goldens.${environmentNote(environment)}`,
-  });
-  return { status: 'match', diffPixels };
 }

@@ -7,8 +7,7 @@
 // page.js). The function it returns stops both. Scripts (the benchmark, the accuracy report,
 // the README picture) do the same through withHarness.
 
-import fs from 'node:fs';
-import { ENVIRONMENT_FILE, GOLDEN_DIR, UPDATING } from './config.js';
+import { UPDATING } from './config.js';
 import { startBrowser } from '../../src/engine/browser.js';
 import { RENDERER_ENV, suiteRenderer } from '../../src/engine/renderers.js';
 import { disconnect, useHarness } from './page.js';
@@ -77,10 +76,6 @@ export async function setup(project) {
     throw new Error(
       `The goldens are SwiftShader's: npm run test:update with ${RENDERER_ENV}=${context.environment.rendererName} would overwrite them with another renderer's pictures.`,
     );
-  }
-  if (UPDATING) {
-    fs.mkdirSync(GOLDEN_DIR, { recursive: true });
-    fs.writeFileSync(ENVIRONMENT_FILE, JSON.stringify(context.environment, null, 2) + '\n');
   }
   project.provide('harness', context);
   return close;

@@ -18,6 +18,7 @@ import { UsageError } from '../view-options.js';
 import { decodeWav } from '../../shared/wav.js';
 import { halve, thumbnail } from './scale.js';
 import { compileDetail } from './compile-detail.js';
+import { toleranceFor } from './manifest.js';
 import { rmsDifference, spectrumDifference, spectrumOutline } from './sound-compare.js';
 
 /**
@@ -90,11 +91,14 @@ export function caseResult(testCase, outcome) {
  * cannot go on).
  * @param {import('../session.js').Session} session
  * @param {import('./manifest.js').TestCase} testCase
- * @param {{update: boolean, out: string, thumbnails: boolean}} run thumbnails: the HTML report's
+ * @param {{update: boolean, out: string, thumbnails: boolean,
+ *   renderer?: import('../../engine/renderers.js').RendererName}} run thumbnails: the HTML
+ *   report's; renderer: what draws (the case's tolerance is that renderer's own, where it has one)
  */
-export async function runCase(session, testCase, { update, out, thumbnails }) {
+export async function runCase(session, testCase, { update, out, thumbnails, renderer }) {
   const started = Date.now();
-  const result = caseResult(testCase, {});
+  const tolerance = toleranceFor(testCase, renderer);
+  const result = caseResult(testCase, { tolerance });
   const { failures, notes, files } = result;
   const file = (/** @type {keyof typeof SUFFIXES} */ kind) => path.join(out, testCase.name + SUFFIXES[kind]);
   const keep = (/** @type {keyof typeof SUFFIXES} */ kind, image) => {
@@ -143,10 +147,10 @@ export async function runCase(session, testCase, { update, out, thumbnails }) {
       keep('actual', image);
       keep('reference', reference);
     } else {
-      const { diffPixels, diff } = compare(image, reference, testCase.tolerance.threshold);
+      const { diffPixels, diff } = compare(image, reference, tolerance.threshold);
       result.diffPixels = diffPixels;
-      if (diffPixels > testCase.tolerance.maxDiffPixels) {
-        failures.push(`${diffPixels} pixels differ from the reference (at most ${testCase.tolerance.maxDiffPixels} may)`);
+      if (diffPixels > tolerance.maxDiffPixels) {
+        failures.push(`${diffPixels} pixels differ from the reference (at most ${tolerance.maxDiffPixels} may)`);
         keep('actual', image);
         keep('reference', reference);
         keep('diff', diff);

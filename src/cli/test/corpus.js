@@ -54,7 +54,7 @@ function sayDrawnBy(recorded, hasReferences, now, { update, referenceDir }) {
   const was = recorded?.renderer ?? (hasReferences ? 'swiftshader' : null);
   if (was && was !== now.renderer)
     io.err(
-      `note: the references were drawn by ${was}, and this run draws with ${now.renderer} as asked: each case is compared at its manifest's tolerance`,
+      `note: the references were drawn by ${was}, and this run draws with ${now.renderer} as asked: each case is compared at its manifest's tolerance (its "${now.renderer}" one where it gives one)`,
     );
   else if (recorded && drawnByDifference(recorded, now))
     io.err(

@@ -57,6 +57,8 @@ export async function runCases(cases, { jobs, start, silenceMs, run, verbose = f
     throw new CliError(`the browser did not start: ${String(error?.message ?? error).split('\n')[0]}`);
   }
   onEnvironment(environment);
+  /** Each case is compared at the tolerance of the renderer that draws it (manifest.js). */
+  const caseRun = { ...run, renderer: environment.rendererName };
 
   /** @type {import('./case.js').CaseResult[]} */
   const results = [];
@@ -72,7 +74,7 @@ export async function runCases(cases, { jobs, start, silenceMs, run, verbose = f
     const started = Date.now();
     try {
       const session = (sessions[worker] ??= await start());
-      const result = await guarded(session, (s) => runCase(s, testCase, run), { silenceMs });
+      const result = await guarded(session, (s) => runCase(s, testCase, caseRun), { silenceMs });
       if (result.replace) retire(worker);
       return result;
     } catch (error) {
