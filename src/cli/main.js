@@ -44,7 +44,7 @@ const MEDIA_HELP = `  --media DIR           the site's media a Shadertoy JSON's 
                         ($SHADERPROOF_MEDIA_ORIGIN: a mirror instead of the site)`;
 
 const VIEW_HELP = `  --size WxH            canvas size in pixels (default 640x360)
-  --time T              iTime in seconds, paused (default 0)
+  --time T              iTime in seconds, paused (default 0); the still is frame 0 (iFrame 0)
   --frame N             draw frames 0..N (iTime = i/60, iFrame = i) and keep frame N
   --mouse x,y[,z,w]     iMouse in pixels, Shadertoy's signs
   --set NAME=VALUE      a control of the shader (repeatable), as the page's panel has it
