@@ -204,7 +204,9 @@ export async function openView(app, params, { hash, again = false, strict = agai
     app.emit('values', [...params.warnings, ...warnings].map(plainWarning));
     return standIn;
   });
-  app.setLoading(opened.then(() => {}));
+  const loading = opened.then(() => {});
+  loading.catch(() => {}); // why, if it fails, is openView's to say: it rejects with it
+  app.setLoading(loading);
   const standIn = await opened;
   const compiled = app.compiles.compile({ orElse: standIn?.() });
   if (!again) {

@@ -1,12 +1,15 @@
 // window.raytracer on the engine page (installEngine): what a headless run needs of the engine
 // and no more. The command line (src/engine/client.js), the test harness and the benchmark drive
 // it; the interactive page adds its own widgets' methods for its tests (page-hook.js). Each
-// method is documented here once; the hook's type is the class itself (EngineHook, and
-// hook-window.js's HookedWindow, which src/engine/client.js and tests/globals.ts read). A page
-// that could not start has a hook of the same methods, each rejecting (failed-hook.js).
+// method is documented here once; the hook's type is the class itself (EngineHook: the command
+// line's client reads the window through hook-window.js's HookedWindow; tests/globals.ts declares
+// the window's field as page-hook.js's PageHook). A page that could not start has a hook of the
+// same methods, each rejecting (failed-hook.js).
 //
 //   ready                 Promise: resolves after the first frame has been drawn; rejects with
 //                         the error when WebGL2 is missing or the first compile fails.
+//   settled()             Promise: resolves once the first source is in and no compile is under
+//                         way (what the methods below wait for first).
 //   open(query)           Promise: the page as a fresh load of `query` ("?shader=…&size=…&time=…
 //                         &NAME=value", and a "#source=…" fragment) would give it, without a
 //                         reload (open-view.js): its shader, controls, size, clock, mouse,
