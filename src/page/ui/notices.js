@@ -73,17 +73,14 @@ function showNote(stage, id, title, lines, kind = 'note') {
 
 /**
  * The note on a loaded shader: what it cannot have (media its JSON names), each thing once
- * (sayOnce), or why a file could not be read as a shader (`kind` 'error'). The engine page shows
- * the lines as they are (`merge` false): the command line reads them one by one (a test case's
- * allowMissing names a pass and a channel) and says each thing once itself.
+ * (sayOnce), or why a file could not be read as a shader (`kind` 'error'). (The command line
+ * reads the lines one by one, as data: the hook's notes().)
  * @param {HTMLElement} stage
  * @param {string} title
  * @param {string[]} lines
  * @param {'note' | 'error'} [kind]
- * @param {{merge?: boolean}} [options]
  */
-export const showLoadNotes = (stage, title, lines, kind = 'note', { merge = true } = {}) =>
-  showNote(stage, NOTE_ID, title, merge ? sayOnce(lines) : lines, kind);
+export const showLoadNotes = (stage, title, lines, kind = 'note') => showNote(stage, NOTE_ID, title, sayOnce(lines), kind);
 
 /**
  * The note that a Sound tab waits for the person (browsers start no sound before a click or a
