@@ -4,11 +4,30 @@
 // file, not a .d.ts, so that skipLibCheck (jsconfig.json) does not skip it: a broken import()
 // here is an error. JSDoc reaches its types as import('./globals.js').
 
-/** window.raytracer.info(): see src/page/automation.js. */
+/** window.raytracer.info(): see src/page/hook/engine-state.js. */
 export type RaytracerInfo = ReturnType<RaytracerHook['info']>;
 
-/** window.raytracer: the page's automation hook, its type taken from the hook itself (src/page/automation.js). */
-type RaytracerHook = import('../src/page/automation.js').RaytracerHook;
+/**
+ * window.raytracer: the page's hook, its type the hook's class, in src/ (the engine's,
+ * src/page/hook/engine-hook.js, with the interactive page's methods: page-hook.js). The tests
+ * drive both pages; the command line reads the engine's alone (src/engine/client.js, HookedWindow).
+ */
+type RaytracerHook = import('../src/page/hook/page-hook.js').PageHook;
+
+/** Whether T is `any` (what an untyped parameter of a JavaScript function is). */
+type IsAny<T> = 0 extends 1 & T ? true : false;
+/** The names of H's methods with a parameter of type `any`. */
+type UntypedMethods<H> = {
+  [K in keyof H]: H[K] extends (...args: infer P) => unknown ? (true extends { [I in keyof P]: IsAny<P[I]> }[number] ? K : never) : never;
+}[keyof H];
+/** Compiles only when `Untyped` is never: no method named. */
+type Typed<Untyped extends never> = Untyped;
+/**
+ * Every parameter of the hook's methods is typed (issue 46): a method with an `any` parameter
+ * names itself in the error here (npm run typecheck). The hook is the command line's contract
+ * with the page.
+ */
+type HookParametersTyped = Typed<UntypedMethods<RaytracerHook>>;
 
 /** What the pixel inspector read at a pixel. */
 export type Readout = import('../src/page/inspect/inspector.js').Readout;
@@ -33,7 +52,7 @@ export interface HarnessContext {
 declare global {
   // Each of these exists only on its own page (or after the test sets it): read them there.
   interface Window {
-    /** The page's automation hook (src/page/automation.js). */
+    /** The page's hook (src/page/hook/: engine-hook.js, and page-hook.js on the interactive page). */
     raytracer: RaytracerHook;
     /** The longest gap between 10 ms timer ticks (tests/page-heavy.test.js). */
     __longestGap: number;

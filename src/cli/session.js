@@ -45,12 +45,13 @@ export const ENGINE_PAGE = '/engine.html';
 const WAIT_MS = 120_000;
 
 /**
- * The shader a new page starts on, before the first view: a page whose first load is a shader
- * that never finishes stops answering (its first draw holds the page's own thread on
- * SwiftShader), whereas one that has drawn once hears the watchdog and says so. So every view is
- * brought in by open(), on a page that has drawn this.
+ * The view a new page starts at, before the first view: the engine page's own start shader (no
+ * ?shader=: a black one, src/page/engine-main.js), 2×2. A page whose first load is a shader that
+ * never finishes stops answering (its first draw holds the page's own thread on SwiftShader),
+ * whereas one that has drawn once hears the watchdog and says so. So every view is brought in
+ * by open(), on a page that has drawn this.
  */
-const STARTER = 'void mainImage(out vec4 c, in vec2 f) { c = vec4(0.0, 0.0, 0.0, 1.0); }\n';
+const START_VIEW = `${ENGINE_PAGE}?size=2x2&time=0`;
 
 /**
  * @param {{renderer?: import('../engine/renderers.js').RendererName, hangMs?: number, compileHangMs?: number,
@@ -80,7 +81,6 @@ export async function startSession({
   mark('built page found');
   const server = await startPageServer({ root });
   mark('server');
-  const starter = server.mountText(STARTER, 'start.glsl');
   /** @type {Awaited<ReturnType<typeof startBrowser>> | null} */
   let chromium = null;
   /** The page the views are drawn on, through its client. @type {import('../engine/client.js').EngineClient | null} */
@@ -113,7 +113,7 @@ export async function startSession({
     const client = engineClient(opened);
     const started = await drawView(client, {
       baseUrl: server.baseUrl,
-      query: `${ENGINE_PAGE}?shader=${starter}&size=2x2&time=0`,
+      query: START_VIEW,
       fresh: true,
       limits,
     });

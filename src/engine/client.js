@@ -1,5 +1,5 @@
 // The command line's and the harness's one client of the engine page's API (window.raytracer,
-// src/page/automation.js): one method for each thing they ask the page, and the only module
+// src/page/hook/engine-hook.js): one method for each thing they ask the page, and the only module
 // under src/ that runs code on a page (page.evaluate). Everything else (view.js, long-work.js,
 // the session, render, sound, test) asks through it, so that what the page is asked, and what
 // comes back, is written once and typed here.
@@ -31,6 +31,9 @@
 
 /** @typedef {'record' | 'frameAt' | 'converge'} LongMethod */
 
+/** The engine page's hook: its type is the hook's class (src/page/hook/engine-hook.js). @typedef {import('../page/hook/engine-hook.js').EngineHook} EngineHook */
+/** The window with the hook, as code run on the page reads it. @typedef {import('../page/hook/hook-window.js').HookedWindow} HookedWindow */
+
 /** An image from the page: base64 data, rows top to bottom. @typedef {{width: number, height: number, data: string}} PageImage */
 
 /**
@@ -53,8 +56,8 @@ export function engineClient(page) {
     async load(url) {
       const response = await page.goto(url, { waitUntil: 'load' });
       if (!response || (!response.ok() && response.status() !== 304)) return `the page answered HTTP ${response?.status()}`;
-      // a page that could not start has a hook too (automation.js installFailedAutomation)
-      await page.waitForFunction(() => Boolean(window.raytracer), { polling: 100 });
+      // a page that could not start has a hook too (hook/failed-hook.js)
+      await page.waitForFunction(() => Boolean(/** @type {HookedWindow} */ (window).raytracer), { polling: 100 });
       return null;
     },
 
@@ -68,8 +71,8 @@ export function engineClient(page) {
      */
     startView(query) {
       return page.evaluate((opening) => {
-        if (!window.raytracer) return 'page error: the page has no engine hook (window.raytracer)';
-        const hook = window.raytracer;
+        if (!(/** @type {HookedWindow} */ (window).raytracer)) return 'page error: the page has no engine hook (window.raytracer)';
+        const hook = /** @type {HookedWindow} */ (window).raytracer;
         const slot = { settled: /** @type {any} */ (null), view: /** @type {any} */ (null) };
         /** @type {any} */ (window).__view = slot;
         const opened = opening === null ? hook.ready : hook.open(opening);
@@ -97,9 +100,9 @@ export function engineClient(page) {
       return page.evaluate(() => {
         const settled = /** @type {any} */ (window).__view?.settled;
         if (settled) return settled;
-        const hang = window.raytracer.hang();
+        const hang = /** @type {HookedWindow} */ (window).raytracer.hang();
         if (hang?.phase === 'drawing') return { state: 'hung', message: hang.message };
-        const { progress, band } = window.raytracer.info();
+        const { progress, band } = /** @type {HookedWindow} */ (window).raytracer.info();
         return { state: 'running', rows: progress?.y ?? 0, height: progress?.height ?? 0, bands: progress?.bands ?? 0, band };
       });
     },
@@ -120,40 +123,40 @@ export function engineClient(page) {
       });
     },
 
-    /** What the page says of itself (automation.js info()). */
-    info: () => page.evaluate(() => JSON.parse(JSON.stringify(window.raytracer.info()))),
+    /** What the page says of itself (hook/engine-state.js info()). */
+    info: () => page.evaluate(() => JSON.parse(JSON.stringify(/** @type {HookedWindow} */ (window).raytracer.info()))),
     /** The last frame drawn again (RGBA8). @returns {Promise<PageImage>} */
-    capture: () => page.evaluate(() => window.raytracer.capture()),
+    capture: () => page.evaluate(() => /** @type {HookedWindow} */ (window).raytracer.capture()),
     /** The last frame's Image pass in RGBA32F. @returns {Promise<PageImage>} */
-    captureFloat: () => page.evaluate(() => window.raytracer.captureFloat()),
+    captureFloat: () => page.evaluate(() => /** @type {HookedWindow} */ (window).raytracer.captureFloat()),
     /**
      * A tile of the last frame drawn at the full size.
      * @param {{x: number, y: number, width: number, height: number, fullWidth: number, fullHeight: number}} tile
      * @returns {Promise<PageImage>}
      */
-    captureTile: (tile) => page.evaluate((t) => window.raytracer.captureTile(t), tile),
+    captureTile: (tile) => page.evaluate((t) => /** @type {HookedWindow} */ (window).raytracer.captureTile(t), tile),
     /** `n` whole frames drawn back to back: their median time in ms. @param {number} n */
-    renderFrames: (n) => page.evaluate((count) => window.raytracer.renderFrames(count), n),
+    renderFrames: (n) => page.evaluate((count) => /** @type {HookedWindow} */ (window).raytracer.renderFrames(count), n),
     /**
      * The Sound tab's samples over [time, time + duration): base64 interleaved 16-bit PCM.
      * @param {{time: number, duration: number}} range
      * @returns {Promise<{data: string, sampleRate: number}>}
      */
-    renderSound: (range) => page.evaluate((r) => window.raytracer.renderSound(r), range),
+    renderSound: (range) => page.evaluate((r) => /** @type {HookedWindow} */ (window).raytracer.renderSound(r), range),
     /** Answers at once if the page's thread is free: a heartbeat. */
     ping: () => page.evaluate(() => 0),
 
     /**
      * Starts long work on the page: `record` or `frameAt` with `request`, or a converge of `total`
      * still frames, whose live controls are first set to `controls` (what the shader's
-     * convergence needs: the raytracer's, src/page/app/converge.js, are given by the caller).
+     * convergence needs: the raytracer's, src/raytracer/convergence.js, are given by the caller).
      * @param {LongMethod} method
      * @param {{request: any, total: number, controls?: Record<string, number>}} work
      */
     startLong(method, { request, total, controls = {} }) {
       return page.evaluate(
         (m, r, t, c) => {
-          const hook = /** @type {any} */ (window.raytracer);
+          const hook = /** @type {any} */ (/** @type {HookedWindow} */ (window).raytracer);
           const slot = { settled: /** @type {any} */ (null) };
           /** @type {any} */ (window).__longWork = slot;
           // a converge is "Converge when still" of t samples, done when t still frames are drawn: its
@@ -191,7 +194,7 @@ export function engineClient(page) {
     pollLong(method, total) {
       return page.evaluate(
         (m, t) => {
-          const hook = /** @type {any} */ (window.raytracer);
+          const hook = /** @type {any} */ (/** @type {HookedWindow} */ (window).raytracer);
           const settled = /** @type {any} */ (window).__longWork.settled;
           const hang = hook.hang();
           if (hang?.phase === 'drawing') return { state: 'hung', message: hang.message };
@@ -231,7 +234,7 @@ export function describePage(evaluate) {
     /** @type {object | null} */
     let info;
     // the hook may not be there yet, or not whole: this page is being asked why it is stuck
-    const hook = /** @type {Partial<import('../page/automation.js').RaytracerHook> | undefined} */ (window.raytracer);
+    const hook = /** @type {Partial<EngineHook> | undefined} */ (/** @type {Partial<HookedWindow>} */ (window).raytracer);
     try {
       const { fileName, origin, time, playing, width, height } = hook?.info?.() ?? {};
       info = hook?.info ? { fileName, origin, time, playing, width, height } : null;
@@ -243,7 +246,7 @@ export function describePage(evaluate) {
       frame: canvas?.dataset.frame ?? null,
       error: document.documentElement.dataset.error ?? null,
       overlay: overlay && !overlay.hidden ? overlay.textContent.trim().replace(/\s+/g, ' ') : null,
-      raytracer: Boolean(window.raytracer),
+      raytracer: Boolean(/** @type {HookedWindow} */ (window).raytracer),
       info,
     };
   });

@@ -1,36 +1,73 @@
-// Entry point: reads the URL, starts the app (app/) on the page's canvas with
-// shaders/raytrace.glsl (or the shader a link or ?shader= names), builds the page's widgets (ui/),
-// shows what the app reports (ui/notices.js), and installs window.raytracer (automation.js).
+// Entry point of the interactive page (index.html): reads the URL, starts the app (app/) on the
+// page's canvas with the built-in raytracer (shaders/raytrace.glsl, or the shader a link or
+// ?shader= names), builds the page's widgets (ui/), shows what the app reports (ui/notices.js:
+// the overlay, the notes, the toasts) and installs window.raytracer (hook/page-hook.js: the
+// engine's hook and the widgets' methods). The raytracer's own parts plug in here: its
+// convergence (src/raytracer/convergence.js) and its debug view's note (extra-samples.js).
 
 import builtinSource from '../../shaders/raytrace.glsl?raw';
-import { installAutomation } from './automation.js';
+import { PageHook, installPage } from './hook/page-hook.js';
+import { installFailedHook } from './hook/failed-hook.js';
 import { installUi } from './ui/ui.js';
+import { Overlay } from './ui/overlay.js';
+import { showAppOnPage, showStartupFailure, showValueNotes } from './ui/notices.js';
 import { parseUrlParams } from '../shared/url-params.js';
 import { fetchShader, shaderName } from './io/shader-loader.js';
 import { startPage } from './start-page.js';
 import { openShader } from './io/open-shader.js';
 import { Recorder } from './io/recorder.js';
-import { BUILTIN_NAME, linkedShader, openView, useBuiltinSource } from './open-view.js';
+import { linkedShader, openView, useBuiltinShader } from './open-view.js';
 import { singlePass } from '../shadertoy/multipass.js';
+import { raytracerConvergence } from '../raytracer/convergence.js';
+import { extraSamplesViewNote } from '../raytracer/extra-samples.js';
 
-useBuiltinSource(builtinSource);
+/** The built-in raytracer's file name: the page's built-in shader. */
+const BUILTIN_NAME = 'shaders/raytrace.glsl';
+/** @param {string} text the built-in raytracer's text (at start, and after a hot update) */
+const useRaytracer = (text) => useBuiltinShader({ name: BUILTIN_NAME, text, what: 'the built-in raytracer' });
+useRaytracer(builtinSource);
 
 async function start() {
-  const page = await startPage();
-  if (!page) return null;
-  const { app, overlay, params, noticeAfterCompile } = page;
+  const overlay = new Overlay(/** @type {HTMLElement} */ (document.getElementById('overlay')));
+  const started = await startPage((error) => {
+    showStartupFailure(overlay, error);
+    installFailedHook(error, PageHook);
+  });
+  if (!started) return null;
+  const { app, params } = started;
+  app.converge.use(raytracerConvergence);
+  const noticeAfterCompile = showAppOnPage(app, overlay);
   const recorder = new Recorder(app); // the page's: the Record dialog and window.raytracer share it
-  const ui = installUi(app, { builtinSource, recorder });
+  const ui = installUi(app, { builtinSource, recorder, viewNote: extraSamplesViewNote });
   overlay.onLine = (line, pass) => ui.editor.goToLine(line, pass);
-  /** window.raytracer.open(query): the page as a fresh load of `query` (a URL's ?… and #…) gives it. */
-  const open = (/** @type {string} */ query) => {
+  // what opening a view reports (open-view.js), shown as a person sees it
+  const stage = /** @type {HTMLElement} */ (document.getElementById('stage'));
+  app.on('notice', (_, notice) => noticeAfterCompile(notice));
+  app.on('values', (_, lines) => showValueNotes(stage, lines));
+  app.on('say', (_, text) => ui.toast(text));
+  /** @type {import('./open-view.js').KeepWork} */
+  const keep = (pageKey, first) => ui.kept.open(pageKey, first);
+  /**
+   * window.raytracer.open(query): the page as a fresh load of `query` (a URL's ?… and #…) gives
+   * it, its widgets too: the inspector off, the notes of the view before gone, the panel at the
+   * view's scale and cap.
+   * @param {string} query
+   */
+  const open = async (query) => {
     const url = new URL(query, location.href);
-    return openView(app, ui, parseUrlParams(url.search, url.href), { hash: url.hash, noticeAfterCompile, again: true });
+    ui.inspection.reset();
+    document.getElementById('notes')?.replaceChildren();
+    try {
+      await openView(app, parseUrlParams(url.search, url.href), { hash: url.hash, again: true, keep });
+    } finally {
+      const size = app.canvasSize;
+      ui.panel.setView({ scale: size.scale, cap: size.cap, sizeFixed: Boolean(size.fixed) });
+    }
   };
-  // before the first shader opens: the hook's marks (page-marks.js) follow it from its start
-  installAutomation(app, app.ready, { open, recorder, ui });
-  const started = openView(app, ui, params, { hash: location.hash, noticeAfterCompile });
-  started.catch(() => {}); // shown on the page; `ready` rejects
+  // the first view starts compiling only after this task: the hook's marks follow it from its start
+  const ready = openView(app, params, { hash: location.hash, keep });
+  ready.catch(() => {}); // shown on the page; `ready` rejects
+  installPage(app, { ready, open, recorder }, ui);
 
   // A second link opened in this tab that differs only in its fragment loads no page: its
   // #source= is opened here, as a link opened afresh is.
@@ -72,7 +109,7 @@ async function reloadChangedShader(url) {
 // (vite.config.js).
 if (import.meta.hot) {
   import.meta.hot.accept('../../shaders/raytrace.glsl?raw', (module) => {
-    if (module) useBuiltinSource(module.default);
+    if (module) useRaytracer(module.default);
     if (!app || !module || app.origin !== 'builtin') return;
     app.setProject(singlePass(module.default)).catch(() => {});
   });

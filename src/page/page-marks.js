@@ -1,5 +1,5 @@
 // The page's state as attributes, for the tests, the harness and the command line (src/engine/)
-// to wait on, part of the automation hook's contract (automation.js installs them): on <html>,
+// to wait on, part of the hook's contract (hook/engine-hook.js installs them): on <html>,
 // data-error="shader-compile" while no shader could run ("webgl2" or "startup" when the page
 // could not start), data-context="lost" while the GPU context is gone, data-hung="true" while a
 // frame may never finish and "compiling" while a program's first draw is taking long (the

@@ -1,25 +1,22 @@
 // The start of either page (main.js: the interactive page; engine-main.js: the engine page the
-// command line draws on), once: the app on the page's canvas at its URL's view, or, when it could
-// not start (no WebGL2, a worker that did not come up), that said on the page and a hook whose
-// every method rejects with it; then the watchdog and what the app reports shown on the overlay.
+// command line draws on), once: the app on the page's canvas at its URL's view, with the
+// watchdog's memory of a shader that hung (io/hang-guard.js); or, when it could not start (no
+// WebGL2, a worker that did not come up), null, after `failed` has said so (each page in its own
+// way, and each installs its failed hook: hook/failed-hook.js).
 
 import { RaytracerApp } from './app/app.js';
-import { installFailedAutomation } from './automation.js';
-import { Overlay } from './ui/overlay.js';
-import { showAppOnPage, showStartupFailure } from './ui/notices.js';
 import { parseUrlParams } from '../shared/url-params.js';
 import { fetchMedia, loadChannel, shaderName } from './io/shader-loader.js';
 import { HangGuard, watchHangs } from './io/hang-guard.js';
-import { BUILTIN_NAME } from './open-view.js';
+import { builtinName } from './open-view.js';
 
 /**
  * Starts the app on #view at the view of the page's URL. Null when it could not start.
- * @returns {Promise<{app: RaytracerApp, overlay: Overlay, params: ReturnType<typeof parseUrlParams>,
- *   noticeAfterCompile: ReturnType<typeof showAppOnPage>} | null>}
+ * @param {(error: Error) => void} failed says that the page could not start, and why
+ * @returns {Promise<{app: RaytracerApp, params: ReturnType<typeof parseUrlParams>} | null>}
  */
-export async function startPage() {
+export async function startPage(failed) {
   const canvas = /** @type {HTMLCanvasElement} */ (document.getElementById('view'));
-  const overlay = new Overlay(/** @type {HTMLElement} */ (document.getElementById('overlay')));
   const params = parseUrlParams(location.search, location.href);
   let app;
   try {
@@ -27,18 +24,16 @@ export async function startPage() {
       canvas,
       loadChannel,
       fetchMedia,
-      fileName: params.shader ? shaderName(params.shader) : BUILTIN_NAME,
+      fileName: params.shader ? shaderName(params.shader) : builtinName(),
       size: params.size ?? null,
       scale: params.scale ?? 1,
       cap: params.cap ?? 0,
       playing: params.time === undefined, // ?time=T shows that instant, paused
     });
   } catch (error) {
-    showStartupFailure(overlay, error);
-    installFailedAutomation(error);
+    failed(error);
     return null;
   }
   watchHangs(app, new HangGuard());
-  const noticeAfterCompile = showAppOnPage(app, overlay);
-  return { app, overlay, params, noticeAfterCompile };
+  return { app, params };
 }

@@ -1,6 +1,6 @@
 // Pixel buffers between GL and the rest of the world: GL reads RGBA8 rows bottom to top, images
-// and PNG files run top to bottom; the automation hook hands them over as base64. Used by the
-// page (automation.js, app.js) and the test harness alike.
+// and PNG files run top to bottom; the page's hook hands them over as base64. Used by the
+// page (hook/engine-hook.js, app.js) and the test harness alike.
 
 /** The rows of a width × height RGBA8 buffer in the opposite order (a new buffer). */
 export function flipRows(pixels, width, height) {

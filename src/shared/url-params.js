@@ -26,7 +26,7 @@
 // about. Anything unreadable is reported in `warnings` and ignored, anything out of range is clamped and
 // reported; the page never fails on a URL. Control values are returned as written: the app checks
 // them against the shader's controls (coerceControlValue), as it does for the panel and the
-// automation hook. formatUrlParams writes the same contract back (the "Copy link" button).
+// hook. formatUrlParams writes the same contract back (the "Copy link" button).
 
 import { MAX_PIXELS, MAX_SCALE, MAX_SIZE, MIN_SCALE, clampSize } from './canvas-limits.js';
 

@@ -4,7 +4,7 @@
 // channels' images (channels.js), the canvas's size (canvas-size.js), which form the live
 // controls compile in (live-controls.js), and the render worker's client (render-client.js, the
 // GPU side: gpu/). A lost context and the watchdog's way back are gpu-context.js's. This module
-// composes them and is the public API the page's widgets and the automation hook use.
+// composes them and is the public API the page's widgets and the hook (hook/) use.
 //
 // The app touches no part of the page but its canvas: what it has to tell (a change of state, a
 // compile's outcome, a lost context, each frame drawn) it emits as events (events.js), and the

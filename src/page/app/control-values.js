@@ -1,5 +1,5 @@
 // The values of a shader's controls on the page: carried over when the shader changes, changes
-// read (from the panel, the URL, the automation hook) against the control list, and the values a
+// read (from the panel, the URL, the hook) against the control list, and the values a
 // shared link must hold.
 
 import { choiceValue, coerceControlValue, controlDefaults } from '../../shadertoy/controls.js';

@@ -1,12 +1,13 @@
-// "Converge when still" (app.converge): the built-in raytracer (or an edit that keeps its camera
-// and radiance functions: progressive.js calls them) runs as its progressive multipass form
-// (progressive.js: Buffer A adds one jittered sample per pixel per frame while nothing changes;
-// Image shows the mean and the sample count), with the clock paused so that the view is still;
-// off, the shader as it was, with its control values. It owns whether the app converges, the
-// shader it converges from, and how many still frames it asks for; the frame loop asks it
-// whether another frame is wanted.
-
-import { MAX_SAMPLES, missingRaytracerFunctions, progressiveTabs } from '../../raytracer/progressive.js';
+// "Converge when still" (app.converge): a shader that has a progressive form runs as it (the
+// built-in raytracer, or an edit that keeps its camera and radiance functions: Buffer A adds one
+// jittered sample per pixel per frame while nothing changes; Image shows the mean and the sample
+// count), with the clock paused so that the view is still; off, the shader as it was, with its
+// control values. It owns whether the app converges, the shader it converges from, and how many
+// still frames it asks for; the frame loop asks it whether another frame is wanted.
+//
+// Which shaders have a progressive form, and what it is, is not the engine's to know: the
+// raytracer's side plugs it in (use(): src/raytracer/convergence.js), the interactive page at
+// its start, the engine page when a converge is first asked for (a chunk loaded then).
 
 /** @typedef {import('./app.js').RaytracerApp} RaytracerApp */
 /** @typedef {import('./app.js').ShaderVersion} ShaderVersion */
@@ -26,6 +27,21 @@ import { MAX_SAMPLES, missingRaytracerFunctions, progressiveTabs } from '../../r
  * @property {() => void} requestFrame a frame drawn (FrameLoop.request)
  */
 
+/**
+ * A shader family's progressive form, plugged in by its side (src/raytracer/convergence.js).
+ * @typedef {object} ProgressiveForm
+ * @property {string} name what converges, in errors ("the raytracer")
+ * @property {string} file the shader it is the form of ("shaders/raytrace.glsl")
+ * @property {number} maxSamples the most still frames a converge draws (and its default)
+ * @property {(source: string) => string[]} missing what a single-pass shader's text lacks to
+ *   converge (empty: it can)
+ * @property {(source: string) => {model: import('../../shadertoy/multipass.js').MultipassShader}} form
+ *   the shader's progressive multipass form
+ * @property {Record<string, unknown>} controls control values set when it starts (the sample
+ *   count drawn over the picture)
+ */
+/** @typedef {ProgressiveForm | (() => Promise<ProgressiveForm>)} FormSource */
+
 export class Converge {
   /** @param {ConvergeHost} host */
   constructor(host) {
@@ -33,15 +49,32 @@ export class Converge {
     /** Whether the shader runs as its progressive form. */
     this.on = false;
     /** Frames drawn while the view is still: then its buffer sums no more. */
-    this.frames = MAX_SAMPLES;
+    this.frames = 0;
+    /** The progressive form plugged in (use()), or what loads it; null: none, nothing converges. @type {FormSource | null} */
+    this._form = null;
     /** The single-pass shader that converges (turning it off goes back to it). @type {ShaderVersion | null} */
     this._before = null;
   }
 
-  /** Whether "Converge when still" can run the app's shader (the raytracer: progressive.js). */
+  /**
+   * Plugs in the progressive form, or a function that loads it when a converge is first asked for.
+   * @param {FormSource} form
+   */
+  use(form) {
+    this._form = form;
+  }
+
+  /** The progressive form, loaded if it was plugged in as a loader; null without one. */
+  async _loadForm() {
+    if (typeof this._form === 'function') this._form = await this._form();
+    return this._form;
+  }
+
+  /** Whether "Converge when still" can run the app's shader (a progressive form, loaded, that takes it). */
   get available() {
     const host = this._host;
-    return !host.isMultipass() && missingRaytracerFunctions(host.source()).length === 0;
+    const form = this._form;
+    return form !== null && typeof form !== 'function' && !host.isMultipass() && form.missing(host.source()).length === 0;
   }
 
   /**
@@ -60,15 +93,19 @@ export class Converge {
 
   /**
    * Turns converging on or off; resolves once the shader it runs then has compiled. Frames keep
-   * coming while the view is still, up to `frames` (MAX_SAMPLES by default), and start again
-   * from one sample after any change.
+   * coming while the view is still, up to `frames` (the form's maxSamples by default, and at
+   * most), and start again from one sample after any change.
    * @param {boolean} on
    * @param {{frames?: number}} [options]
    * @returns {Promise<void>}
    */
-  async set(on, { frames = MAX_SAMPLES } = {}) {
+  async set(on, { frames } = {}) {
     const host = this._host;
-    this.frames = Math.max(1, Math.min(MAX_SAMPLES, Math.round(frames)));
+    if (!on && !this.on) return host.requestFrame();
+    const form = on ? await this._loadForm() : null;
+    if (on && !form) throw new Error('no shader converges on this page: no progressive form is plugged in');
+    const most = form?.maxSamples ?? this.frames;
+    this.frames = Math.max(1, Math.min(most, Math.round(frames ?? most)));
     if (on === this.on) return host.requestFrame();
     if (!on) {
       const back = /** @type {ShaderVersion} */ (this._before);
@@ -76,16 +113,17 @@ export class Converge {
       host.runVersion(back, 'Converge when still', { continues: true });
       return host.compile();
     }
-    if (host.isMultipass()) throw new Error('only the raytracer converges: this shader has buffers of its own');
-    const missing = missingRaytracerFunctions(host.source());
-    if (missing.length) throw new Error(`only the raytracer converges (shaders/raytrace.glsl): this shader has no ${missing.join(', ')}`);
+    const { name, file, missing: lacks, form: progressive, controls } = /** @type {ProgressiveForm} */ (form);
+    if (host.isMultipass()) throw new Error(`only ${name} converges: this shader has buffers of its own`);
+    const missing = lacks(host.source());
+    if (missing.length) throw new Error(`only ${name} converges (${file}): this shader has no ${missing.join(', ')}`);
     const before = host.version();
-    const tabs = progressiveTabs(host.source());
+    const tabs = progressive(host.source());
     host.pause();
     host.loadProject(tabs.model, { name: before.name, origin: before.origin, url: before.url, continues: true });
     this.on = true;
     this._before = before;
-    host.applyControls({ SHOW_SAMPLE_COUNT: 1 }, 'Converge when still');
+    host.applyControls(controls, 'Converge when still');
     return host.compile();
   }
 }

@@ -1,6 +1,6 @@
 // The app's events (app.js), and the small typed emitter that sends them: the app's way of
 // telling the page what happened without touching the page (the page's widgets, ui/, and the
-// automation hook listen). The render client (render-client.js) sends its own events with it.
+// hook, hook/, listen). The render client (render-client.js) sends its own events with it.
 
 /**
  * A frame the app drew and showed.
@@ -16,6 +16,12 @@
  */
 
 /**
+ * Something the page should tell a person about the view it opened, once its shader has compiled
+ * (open-view.js): its title, its text, and what the person can do about it.
+ * @typedef {{title: string, detail: string, actions?: Array<{label: string, run: () => void}>}} Notice
+ */
+
+/**
  * The app's events, and what each passes its listeners after the app itself.
  * @typedef {object} AppEvents
  * @property {[]} state the play state, time, speed, size settings, controls or channels changed
@@ -26,6 +32,10 @@
  * @property {[]} notes what the shader goes without changed (its media came, or could not)
  * @property {[lines: string[]]} values the values of the view last opened that were not used as
  *   given (a link's or the hook's: a control clamped into range), each line what was used instead
+ * @property {[notice: Notice]} notice a notice on the view being opened (open-view.js: the shader
+ *   asked for could not be had, or hung last time, and another runs in its place), to be shown
+ *   once the next compile succeeds
+ * @property {[text: string]} say a one-line message for a person (a channel that could not load)
  * @property {[lost: boolean]} context the GPU context was lost (true) or restored (false)
  * @property {[seconds: number | null, phase?: import('./render-client.js').HangPhase]} hang a frame has gone that long without finishing a band
  *   ('compiling': a program's first draw, which compiles it on SwiftShader)

@@ -2,7 +2,9 @@
 // frames, so the buffers hold a whole frame): one pixel of the last frame drawn again, read in
 // float before the 8-bit rounding, with the value of every buffer there; and, for the raytracer,
 // the path probe (src/raytracer/path-probe.js), a compile of the same file that writes the path
-// of the pixel's ray into a float target.
+// of the pixel's ray into a float target. What the path probe writes, and how wide, is the page's
+// to know (inspect/probe-program.js sends the width with the compile; inspect/inspector.js reads
+// the records): the worker draws and reads, and imports nothing of the raytracer.
 //
 // The Image pass is drawn again with the material on screen, over the 2×2 quad of the pixel only
 // (scissored: the quad is the one the frame drew, so screen-space derivatives, which the adaptive
@@ -12,8 +14,6 @@
 // alpha the Image pass forces to 1.
 
 import * as THREE from 'three';
-import { edgeKind } from '../../raytracer/extra-samples.js';
-import { PROBE_TEXELS } from '../../raytracer/path-probe.js';
 
 /** @typedef {import('./pass-compiler.js').Step} Step */
 /** @typedef {import('./renderer.js').ShaderRenderer} ShaderRenderer */
@@ -41,8 +41,8 @@ function floatTarget(width, height) {
  * @property {number[]} canvas the frame's RGBA8 bytes there, as the canvas shows them
  * @property {Record<string, number[]>} buffers each buffer's RGBA32F value there, by name ('A' … 'D')
  * @property {number[] | null} path what the path probe wrote (path-probe.js: readPath), null without one
- * @property {boolean | null} extraSamples whether the shader gave the pixel its grid of extra
- *   samples (the path probe's "pixels with extra samples" view), null without a probe
+ * @property {number[] | null} shown the pixel's RGBA8 in the shader's own view of the pixels with
+ *   extra samples (the path probe's mode 1: extra-samples.js edgeKind reads it), null without a probe
  * @property {string | null} probeKey which path probe answered (the key it was compiled with)
  */
 
@@ -56,9 +56,11 @@ export class PixelProbe {
     this.step = null;
     /** What the page compiled the path probe from (it compiles again when that changes). @type {string | null} */
     this.key = null;
+    /** The width of the path probe's records, in texels (its compile says). */
+    this.texels = 1;
     /** @type {THREE.WebGLRenderTarget | null} */
     this._image = null;
-    this._records = floatTarget(PROBE_TEXELS, 1);
+    this._records = floatTarget(this.texels, 1);
     this._quad = floatTarget(2, 2);
   }
 
@@ -74,8 +76,9 @@ export class PixelProbe {
    * @param {string} hostBlock
    * @param {string} fileName
    * @param {string} key
+   * @param {number} texels the width of what its mode 0 writes (path-probe.js PROBE_TEXELS)
    */
-  async compile(project, hostBlock, fileName, key) {
+  async compile(project, hostBlock, fileName, key, texels) {
     const renderer = this.renderer;
     const steps = await renderer.compiler.compileSteps(project, hostBlock, fileName, () => ({
       ...renderer.passUniforms(),
@@ -83,6 +86,11 @@ export class PixelProbe {
     }));
     this.step = steps[steps.length - 1];
     this.key = key;
+    if (texels !== this.texels) {
+      this._records.dispose();
+      this._records = floatTarget(texels, 1);
+      this.texels = texels;
+    }
   }
 
   /** The context was restored: the probe's program and targets died with it. */
@@ -90,7 +98,7 @@ export class PixelProbe {
     this.step = null;
     this.key = null;
     this._image = null;
-    this._records = floatTarget(PROBE_TEXELS, 1);
+    this._records = floatTarget(this.texels, 1);
     this._quad = floatTarget(2, 2);
   }
 
@@ -127,7 +135,7 @@ export class PixelProbe {
     this.uniforms.probeMode.value = 0;
     this.uniforms.probePixel.value = [x, y];
     renderer.beginStep(this.step, width, height);
-    renderer.drawRegion(this._records, 0, 0, PROBE_TEXELS, 1);
+    renderer.drawRegion(this._records, 0, 0, this.texels, 1);
     renderer.beginStep(this.mainImageAt(qx, qy), width, height);
     renderer.drawRegion(this._quad, 0, 0, 2, 2);
   }
@@ -152,10 +160,9 @@ export class PixelProbe {
     const buffers = {};
     for (const name of renderer.buffers.names()) buffers[name] = floats(renderer.buffers.lastWritten(name), x, y);
     const image = floats(this._image, x, y);
-    if (!this.step || !withPath) return { image, canvas, buffers, path: null, extraSamples: null, probeKey: null };
+    if (!this.step || !withPath) return { image, canvas, buffers, path: null, shown: null, probeKey: null };
     const shown = floats(this._quad, x % 2, y % 2).map((v) => Math.round(Math.min(Math.max(v, 0), 1) * 255));
-    const extraSamples = edgeKind(shown, 0) !== null; // one of the view's colours, not its grey
-    return { image, canvas, buffers, path: floats(this._records, 0, 0, PROBE_TEXELS), extraSamples, probeKey: this.key };
+    return { image, canvas, buffers, path: floats(this._records, 0, 0, this.texels), shown, probeKey: this.key };
   }
 
   /** An RGBA32F target at least needWidth × needHeight (the frame's size at most), made or grown. */

@@ -82,7 +82,7 @@ import { ShaderCompileError, WebGL2UnavailableError } from './errors.js';
  * @property {[{inputs: FrameInputs, width: number, height: number}, Float32Array]} captureFloat the
  *   same frame's Image pass in RGBA32F, its colours as the shader wrote them (unclamped), rows top
  *   to bottom
- * @property {[{project: MultipassShader, hostBlock: string, fileName: string, key: string}, null]} compileProbe
+ * @property {[{project: MultipassShader, hostBlock: string, fileName: string, key: string, texels: number}, null]} compileProbe
  *   the path probe (src/raytracer/path-probe.js), never shown; `key` comes back with each probe
  * @property {[{x: number, y: number}, ProbedPixel]} probe pixel (x, y) of the last frame drawn (y
  *   from the bottom), read after the frames before it; rejects before the first frame

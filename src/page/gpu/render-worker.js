@@ -397,10 +397,10 @@ const tell = serve(
       return enqueue({ kind: 'capture', inputs, width, height, readBack: true, target, float: true });
     },
 
-    async compileProbe({ project, hostBlock, fileName, key }) {
+    async compileProbe({ project, hostBlock, fileName, key, texels }) {
       probeWarming = true;
       try {
-        await renderer().probe.compile(project, hostBlock, fileName, key);
+        await renderer().probe.compile(project, hostBlock, fileName, key, texels);
         // its first draw, queued behind what is asked already: a pixel asked for before that is
         // read without waiting for it (startProbe); the reply comes once the probe is ready
         if (lastFrame) await enqueueProbe({ x: 0, y: 0 }, true);

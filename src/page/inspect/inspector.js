@@ -11,6 +11,7 @@
 
 import { Emitter } from '../app/events.js';
 import { objectNames, readPath } from '../../raytracer/path-probe.js';
+import { edgeKind } from '../../raytracer/extra-samples.js';
 
 /** @typedef {import('../app/app.js').RaytracerApp} RaytracerApp */
 /** @typedef {import('./probe-program.js').ProbeProgram} ProbeProgram */
@@ -198,6 +199,8 @@ export class Inspector extends Emitter {
     const named = (/** @type {PathRay} */ ray) => ({ ...ray, object: objectName(ray.id, values) });
     const { inputs, path } = probed;
     const pathOk = wantsPath && path && probed.probeKey === program.key;
+    // the shader's own view of the pixels with extra samples: one of its colours, not its grey
+    const tookExtraSamples = probed.shown ? edgeKind(probed.shown, 0) !== null : null;
     const decoded = pathOk ? readPath(path) : null;
     /** @type {Readout} */
     const readout = {
@@ -207,7 +210,13 @@ export class Inspector extends Emitter {
       color: probed.image,
       canvas: probed.canvas,
       buffers: Object.entries(probed.buffers).map(([name, value]) => ({ name: `Buffer ${name}`, value })),
-      path: decoded ? { rays: decoded.rays.map(named), radiance: decoded.radiance, extraSamples: probed.extraSamples } : null,
+      path: decoded
+        ? {
+            rays: decoded.rays.map(named),
+            radiance: decoded.radiance,
+            extraSamples: tookExtraSamples,
+          }
+        : null,
       pathNote: pathOk ? null : this._pathNote(),
       reference: null,
       referenceNote: wantsPath ? 'Computing the float64 reference…' : null,
@@ -226,7 +235,7 @@ export class Inspector extends Emitter {
       this.emit('readout');
       return;
     }
-    const extraSamples = this._extraSamples(probed.extraSamples);
+    const extraSamples = this._extraSamples(tookExtraSamples);
     if (extraSamples === null) {
       readout.referenceNote =
         'The float64 reference needs to know which pixels took extra samples: this shader\'s VIEW control has no "Extra samples" view.';

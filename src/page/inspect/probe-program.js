@@ -11,7 +11,7 @@
 import { extraSamplesValues } from '../../raytracer/extra-samples.js';
 import { hostControlBlock } from '../../shadertoy/header.js';
 import { missingRaytracerFunctions } from '../../raytracer/progressive.js';
-import { pathProbeHostBlock, pathProbeProject } from '../../raytracer/path-probe.js';
+import { PROBE_TEXELS, pathProbeHostBlock, pathProbeProject } from '../../raytracer/path-probe.js';
 
 /** @typedef {import('../app/app.js').RaytracerApp} RaytracerApp */
 
@@ -88,6 +88,7 @@ export class ProbeProgram {
         hostBlock: pathProbeHostBlock(this._hostBlock()),
         fileName: app.fileName,
         key,
+        texels: PROBE_TEXELS,
       })
       .then(
         () => {

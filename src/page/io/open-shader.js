@@ -1,5 +1,5 @@
 // Every way a shader's text arrives (a ?shader= URL, a link's #source=, a dropped file, a paste,
-// the automation hook, the dev server's reload) ends here: the text is read as Shadertoy's JSON
+// the hook, the dev server's reload) ends here: the text is read as Shadertoy's JSON
 // export or as a plain Image-tab shader (project-files.js), named, and run.
 
 import { isJsonName, readShaderText } from './project-files.js';

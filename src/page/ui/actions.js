@@ -1,6 +1,6 @@
 // The actions behind the page's buttons and keys, as plain functions of the app and the page:
 // what Play, Restart, Copy for Shadertoy, Download, Export JSON, Screenshot, Fullscreen and Copy
-// link do. The toolbar, the shortcuts and the automation hook all call these.
+// link do. The toolbar, the shortcuts and the page's hook all call these.
 
 import { copyText, pngBlob, saveBlob } from './dom.js';
 import { MAX_LINK_LENGTH, shareLink } from '../io/share-link.js';

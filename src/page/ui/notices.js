@@ -2,17 +2,17 @@
 // a loaded shader cannot have, a file that could not be read, kept work restored), and the
 // messages in the overlay (ui/overlay.js) about what the app reports: compile errors, a lost
 // context, a frame that may never finish, a page that could not start. What the tests read of
-// the same states (data-error, data-hung, ...) is the automation hook's: page-marks.js.
+// the same states (data-error, data-hung, ...) is the hook's: page-marks.js.
 
 import { sayOnce } from '../../shared/said-once.js';
 import { formatCompileMessages } from '../../shadertoy/pass-errors.js';
 import { goBack } from '../app/gpu-context.js';
 import { element } from './dom.js';
-import { extraSamplesViewNote } from '../../raytracer/extra-samples.js';
+import { VALUE_NOTES_TITLE, watchdogDetail, watchdogTitle } from '../words.js';
 
 /** @typedef {import('../app/app.js').RaytracerApp} RaytracerApp */
 /** @typedef {import('./overlay.js').Overlay} Overlay */
-/** @typedef {{title: string, detail: string, actions?: Array<{label: string, run: () => void}>}} Notice */
+/** @typedef {import('../app/events.js').Notice} Notice */
 
 /**
  * The toast after a channel got what was chosen for it.
@@ -73,17 +73,14 @@ function showNote(stage, id, title, lines, kind = 'note') {
 
 /**
  * The note on a loaded shader: what it cannot have (media its JSON names), each thing once
- * (sayOnce), or why a file could not be read as a shader (`kind` 'error'). The engine page shows
- * the lines as they are (`merge` false): the command line reads them one by one (a test case's
- * allowMissing names a pass and a channel) and says each thing once itself.
+ * (sayOnce), or why a file could not be read as a shader (`kind` 'error'). (The command line
+ * reads the lines one by one, as data: the hook's notes().)
  * @param {HTMLElement} stage
  * @param {string} title
  * @param {string[]} lines
  * @param {'note' | 'error'} [kind]
- * @param {{merge?: boolean}} [options]
  */
-export const showLoadNotes = (stage, title, lines, kind = 'note', { merge = true } = {}) =>
-  showNote(stage, NOTE_ID, title, merge ? sayOnce(lines) : lines, kind);
+export const showLoadNotes = (stage, title, lines, kind = 'note') => showNote(stage, NOTE_ID, title, sayOnce(lines), kind);
 
 /**
  * The note that a Sound tab waits for the person (browsers start no sound before a click or a
@@ -106,12 +103,6 @@ export const soundNote = (stage, waiting) =>
  * @param {string[]} lines
  */
 export const showValueNotes = (stage, lines) => showNote(stage, 'value-notes', VALUE_NOTES_TITLE, lines);
-
-/** The title of the note on what a loaded shader goes without. @param {string} name the shader's */
-export const missingNotesTitle = (name) => `${name} runs without some of what it asks for`;
-
-/** The title of the note on values not used as given. */
-export const VALUE_NOTES_TITLE = 'Some values were not used as given';
 
 /**
  * A note about kept work, with its buttons, replacing any other: the first of the notes.
@@ -189,16 +180,19 @@ export function showKeptOffer(parent, name, { open, discard }) {
 }
 
 /**
- * The line at the bottom of the canvas that says why a debug view shows nothing (the "Extra
- * samples" view with nothing to mark: extraSamplesViewNote), while it applies.
+ * The line at the bottom of the canvas that says why a debug view shows nothing, while it
+ * applies: `viewNote` says it for the shader's controls and values (the raytracer's "Extra
+ * samples" view with nothing to mark: src/raytracer/extra-samples.js extraSamplesViewNote, which
+ * main.js gives), or null.
  * @param {RaytracerApp} app
  * @param {HTMLElement} stage
+ * @param {(controls: RaytracerApp['controls'], values: RaytracerApp['values']) => string | null} viewNote
  */
-export function installViewNote(app, stage) {
+export function installViewNote(app, stage, viewNote) {
   const note = element('p', { class: 'view-note', role: 'status', hidden: true });
   stage.append(note);
   const update = () => {
-    const text = extraSamplesViewNote(app.controls, app.values);
+    const text = viewNote(app.controls, app.values);
     note.hidden = text === null;
     if (text !== null && note.textContent !== text) note.textContent = text;
   };
@@ -309,34 +303,6 @@ function showWatchdog(app, overlay) {
       : [];
     overlay.showActions(watchdogTitle(app.fileName, phase), detail, actions);
   });
-}
-
-/**
- * The watchdog message's title.
- * @param {string} name the shader on the GPU
- * @param {string} phase 'compiling' or 'drawing'
- */
-export const watchdogTitle = (name, phase) => (phase === 'compiling' ? `Compiling ${name}…` : `${name} may never finish`);
-
-/**
- * The watchdog message's text, with the seconds as they are now.
- * @param {string} name the shader on the GPU
- * @param {number} seconds how long its band has gone unfinished, whole seconds
- * @param {string} phase 'compiling' or 'drawing'
- * @param {string | null} back the shader "Go back" runs
- */
-export function watchdogDetail(name, seconds, phase, back) {
-  return [
-    phase === 'compiling'
-      ? `SwiftShader (the CPU renderer) turns a shader into machine code when it first draws it, and ${name} has been compiling for ${seconds} s. A large shader takes a while; the first frame follows.`
-      : `${name} has been drawing one frame for ${seconds} s without finishing a band of it: it may never finish (an endless loop, or far too much work per pixel).`,
-    phase === 'compiling'
-      ? ''
-      : 'On a real GPU the browser resets the GPU after several seconds of this, and the page comes back with the last shader that finished a frame. SwiftShader (the CPU renderer) has no such reset: the draw goes on until the browser is closed.',
-    back ? `Going back runs ${back} again; the text of ${name} stays in the editor's undo history (Ctrl+Z).` : '',
-  ]
-    .filter(Boolean)
-    .join('\n');
 }
 
 /**

@@ -9,7 +9,8 @@ import { Toolbar } from './toolbar.js';
 import { installRecordDialog } from './record-dialog.js';
 import { installShortcuts, watchKeyboard } from './keys.js';
 import { pageActions } from './actions.js';
-import { channelLoaded, installViewNote, missingNotesTitle, showLoadNotes } from './notices.js';
+import { channelLoaded, installViewNote, showLoadNotes } from './notices.js';
+import { missingNotesTitle } from '../words.js';
 import { installSound } from '../sound/sound-controls.js';
 import { KeptWork } from '../kept-work.js';
 import { droppedKind } from '../io/shader-loader.js';
@@ -47,11 +48,13 @@ function activity(app) {
 
 /**
  * @param {RaytracerApp} app
- * @param {{builtinSource: string, recorder: import('../io/recorder.js').Recorder}} page the built-in
- *   raytracer's text (the float64 reference is its twin), and the page's recorder
- * @returns the page's widgets and actions, for the automation hook and the tests
+ * @param {{builtinSource: string, recorder: import('../io/recorder.js').Recorder,
+ *   viewNote: Parameters<typeof installViewNote>[2]}} page the built-in raytracer's text (the
+ *   float64 reference is its twin), the page's recorder, and why a debug view of the shader shows
+ *   nothing (the raytracer's: main.js plugs it in)
+ * @returns the page's widgets and actions, for the page's hook (hook/page-hook.js) and the tests
  */
-export function installUi(app, { builtinSource, recorder }) {
+export function installUi(app, { builtinSource, recorder, viewNote }) {
   const stage = /** @type {HTMLElement} */ (document.getElementById('stage'));
   const statusLine = /** @type {HTMLElement} */ (document.getElementById('toast'));
   /** @type {ReturnType<typeof setTimeout> | undefined} */
@@ -85,7 +88,7 @@ export function installUi(app, { builtinSource, recorder }) {
   inspection.inspector.on('mode', () => toolbar.setInspecting(inspection.inspector.active));
   const recording = installRecordDialog(app, recorder, toolbar.root, toast);
   toolbar.fit(); // with "Record" in it
-  installViewNote(app, stage);
+  installViewNote(app, stage, viewNote);
   const panel = new Panel({
     onConverge: (on) =>
       app.converge.set(on).catch((error) => {
