@@ -74,10 +74,10 @@ async function settle(promise) {
   return { ...outcome, ms: Date.now() - started };
 }
 
-/** A page as the real one looks when it is stuck: frame 7 drawn, an error, a message, `ready` never settling. */
-const STUCK_PAGE = `<!doctype html><html data-error="shader: boom"><body>
-<canvas data-frame="7"></canvas><div role="alert">Compile error on line 3</div>
-<script>window.raytracer = { ready: new Promise(() => {}), info: () => ({ fileName: 'stuck.glsl', time: 1.5, playing: false }) };</script>`;
+/** A page as the real one looks when it is stuck: frame 7 drawn, an error, a message (its marks, page-marks.js), `ready` never settling. */
+const STUCK_PAGE = `<!doctype html><html><body><canvas></canvas>
+<script>window.pageMarks = { frame: 7, error: 'shader: boom', context: null, hung: null, status: 'Compile error on line 3' };
+window.raytracer = { ready: new Promise(() => {}), info: () => ({ fileName: 'stuck.glsl', time: 1.5, playing: false }) };</script>`;
 
 /** A fresh page answers. */
 async function expectFreshPage() {
@@ -104,7 +104,7 @@ describe('every wait on a page ends, and says why', () => {
         expect(stillWaiting, 'still waiting').toBeUndefined();
         expect(ms).toBeLessThan(SHORT_WAIT_MS + PROMPT_MS);
         expect(error?.message).toMatch(/no answer within 2 s|2000 ?ms exceeded/);
-        for (const said of ['data-frame 7', 'shader: boom', 'Compile error on line 3', '"fileName":"stuck.glsl"']) {
+        for (const said of ['frames drawn 7', 'shader: boom', 'Compile error on line 3', '"fileName":"stuck.glsl"']) {
           expect(error?.message).toContain(said);
         }
       }

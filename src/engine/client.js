@@ -219,33 +219,36 @@ export function engineClient(page) {
 
 /**
  * What a page that does not answer in time was doing (watch.js says it beside the timeout): its
- * address, the canvas's frame count, its start-up error, the message it shows and what its hook
- * says, asked with `evaluate` (the page's own, unbounded: the caller races it). It reads the DOM
- * because the page may have no hook yet, or one that is not whole.
+ * address, its marks (frames drawn, its start-up or compile error, the line it shows: page-marks.js
+ * window.pageMarks, data the page keeps from its first script on, since its hook may not be there
+ * yet, or not whole) and what its hook says, asked with `evaluate` (the page's own, unbounded: the
+ * caller races it).
  * @param {import('puppeteer-core').Page['evaluate']} evaluate
- * @returns {Promise<{url: string, frame: string | null, error: string | null, overlay: string | null, raytracer: boolean, info: object | null}>}
+ * @returns {Promise<{url: string, frame: number | null, error: string | null, status: string | null, raytracer: boolean, info: object | null}>}
  */
 export function describePage(evaluate) {
   return evaluate(() => {
-    const canvas = /** @type {HTMLCanvasElement | null} */ (
-      document.querySelector('canvas[data-frame]') ?? document.querySelector('canvas')
+    const marks = /** @type {Partial<import('../page/page-marks.js').PageMarks>} */ (
+      /** @type {{pageMarks?: import('../page/page-marks.js').PageMarks}} */ (/** @type {unknown} */ (window)).pageMarks ?? {}
     );
-    const overlay = /** @type {HTMLElement | null} */ (document.querySelector('[role="alert"]'));
     /** @type {object | null} */
     let info;
+    /** @type {string | null} */
+    let hang = null;
     // the hook may not be there yet, or not whole: this page is being asked why it is stuck
     const hook = /** @type {Partial<EngineHook> | undefined} */ (/** @type {Partial<HookedWindow>} */ (window).raytracer);
     try {
       const { fileName, origin, time, playing, width, height } = hook?.info?.() ?? {};
       info = hook?.info ? { fileName, origin, time, playing, width, height } : null;
+      hang = hook?.hang?.()?.message ?? null;
     } catch (error) {
       info = { error: String(error?.message ?? error) };
     }
     return {
       url: location.href,
-      frame: canvas?.dataset.frame ?? null,
-      error: document.documentElement.dataset.error ?? null,
-      overlay: overlay && !overlay.hidden ? overlay.textContent.trim().replace(/\s+/g, ' ') : null,
+      frame: marks.frame ?? null,
+      error: marks.error ?? null,
+      status: marks.status ?? hang,
       raytracer: Boolean(/** @type {HookedWindow} */ (window).raytracer),
       info,
     };

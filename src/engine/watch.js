@@ -105,8 +105,8 @@ export function watchPage(page, browser, { waitTimeoutMs = WAIT_TIMEOUT_MS } = {
       return `The page does not answer either (its script has been busy for over ${seconds(DESCRIBE_TIMEOUT_MS)}: an endless loop?).`;
     if ('failed' in state) return `The page could not be asked what it was doing (${state.failed}).`;
     return (
-      `The page (${state.url.length > 120 ? `${state.url.slice(0, 117)}...` : state.url}): canvas data-frame ${state.frame ?? '(none)'}; data-error ${state.error ?? '(none)'}; ` +
-      `message shown ${state.overlay ? JSON.stringify(state.overlay.slice(0, 500)) : '(none)'}; ` +
+      `The page (${state.url.length > 120 ? `${state.url.slice(0, 117)}...` : state.url}): frames drawn ${state.frame ?? '(none)'}; error ${state.error ?? '(none)'}; ` +
+      `message shown ${state.status ? JSON.stringify(state.status.slice(0, 500)) : '(none)'}; ` +
       `window.raytracer ${state.raytracer ? `info() ${JSON.stringify(state.info)}` : '(none)'}.`
     );
   }

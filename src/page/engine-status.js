@@ -2,8 +2,10 @@
 // canvas while something stands in the way of its picture (the page could not start, the shader
 // did not compile, the watchdog's message), in the words the hook gives the command line. The
 // interactive page's overlay and notes (ui/) are not loaded here: the command line reads the
-// same facts as data (hook/engine-state.js), and describePage (src/engine/client.js) reads this
-// line for a page that stopped answering.
+// same facts as data (hook/engine-state.js), and the line is kept as data too (page-marks.js
+// window.pageMarks), which describePage (src/engine/client.js) reads of a page that stopped answering.
+
+import { pageMarks } from './page-marks.js';
 
 /** The page's status line (engine.html's #overlay, role="alert"). */
 const line = () => /** @type {HTMLElement} */ (document.getElementById('overlay'));
@@ -13,6 +15,7 @@ export function showStatus(text) {
   const status = line();
   status.hidden = text === null;
   status.textContent = text ?? '';
+  pageMarks().status = text;
 }
 
 /**

@@ -5,8 +5,25 @@
 // frame may never finish and "compiling" while a program's first draw is taking long (the
 // watchdog: render-client.js); on the canvas, data-frame, the number of frames drawn. What a
 // person reads about the same things is ui/notices.js's.
+//
+// The same facts, and the line the engine page shows, are kept as data too (window.pageMarks):
+// the command line asks a page that stopped answering what it was doing (src/engine/client.js
+// describePage), before its hook may be there, and reads no attribute or element of the page.
 
 /** @typedef {import('./app/app.js').RaytracerApp} RaytracerApp */
+
+/**
+ * The page's marks as data: frames drawn, the start-up or compile error, the context and the
+ * watchdog's state, and the status line's text (engine-status.js).
+ * @typedef {{frame: number | null, error: string | null, context: string | null, hung: string | null, status: string | null}} PageMarks
+ */
+
+/** window.pageMarks, made on first use. @returns {PageMarks} */
+export function pageMarks() {
+  const page = /** @type {Window & {pageMarks?: PageMarks}} */ (window);
+  page.pageMarks ??= { frame: null, error: null, context: null, hung: null, status: null };
+  return page.pageMarks;
+}
 
 /**
  * Keeps the attributes in step with what the app reports.
@@ -14,19 +31,26 @@
  */
 export function markApp(app) {
   const root = document.documentElement.dataset;
+  const marks = pageMarks();
   app.on('compile', (_, error) => {
     if (!error) delete root.error;
     else if (!app.compiles.hasProgram) root.error = 'shader-compile';
+    marks.error = root.error ?? null;
   });
   app.on('context', (_, lost) => {
     if (lost) root.context = 'lost';
     else delete root.context;
+    marks.context = root.context ?? null;
   });
   app.on('hang', (_, seconds, phase = 'drawing') => {
     if (seconds === null) delete root.hung;
     else root.hung = phase === 'drawing' ? 'true' : 'compiling';
+    marks.hung = root.hung ?? null;
   });
-  app.on('drawn', () => (app.canvas.dataset.frame = String(app.frames.count)));
+  app.on('drawn', () => {
+    app.canvas.dataset.frame = String(app.frames.count);
+    marks.frame = app.frames.count;
+  });
 }
 
 /**
@@ -35,4 +59,5 @@ export function markApp(app) {
  */
 export function markStartupFailure(error) {
   document.documentElement.dataset.error = error.name === 'WebGL2UnavailableError' ? 'webgl2' : 'startup';
+  pageMarks().error = document.documentElement.dataset.error;
 }
