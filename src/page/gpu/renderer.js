@@ -385,7 +385,7 @@ export class ShaderRenderer {
 
   /**
    * Reads a render target (default: the frame target): RGBA8, rows bottom to top. It waits for
-   * the GPU: call it once the draws are done (render-worker.js polls a fence first).
+   * the GPU: call it once the draws are done (band-scheduler.js polls a fence first).
    */
   readTarget(target = this.frameTarget, x = 0, y = 0, width = target.width, height = target.height) {
     const pixels = new Uint8Array(width * height * 4);
