@@ -1,18 +1,18 @@
 // The render worker: the page's GPU work, off the page's main thread. It owns an OffscreenCanvas
 // of its own (not one transferred from the page: a transferred canvas ties the page's main
 // thread to the GPU, and one endless draw then freezes the whole page), draws frames there in
-// bands (band-scheduler.js), polls a fence after each band instead of waiting for the GPU, and
+// bands (bands/band-scheduler.js), polls a fence after each band instead of waiting for the GPU, and
 // hands each finished frame to the page as an ImageBitmap, which the page's canvas shows.
 // Nothing the page's script does waits for the GPU, but painting those bitmaps does, so a draw
-// that may never end waits until the page has painted them (paint-gate.js). The page
+// that may never end waits until the page has painted them (bands/paint-gate.js). The page
 // (app/render-client.js) sees the bands come in and knows when they stop coming. What it is
 // asked and what it answers is protocol.js's; this module makes the renderer, follows its
 // context, and turns each request into the scheduler's job or the renderer's call.
 
 import { ShaderRenderer } from './renderer.js';
-import { writeUniforms } from './uniforms.js';
+import { setControlUniform, setControlUniforms, writeUniforms } from './uniforms.js';
 import { serve } from './protocol.js';
-import { BandScheduler } from './band-scheduler.js';
+import { BandScheduler } from './bands/band-scheduler.js';
 
 /** The renderer, once start() has made it. @type {ShaderRenderer | null} */
 let made = null;
@@ -141,17 +141,17 @@ const tell = serve(
     },
 
     controlUniforms({ controls, values }) {
-      renderer().setControlUniforms(controls, values);
+      setControlUniforms(renderer().uniforms, controls, values);
       bands.changed();
     },
 
     controlUniform({ name, value }) {
-      renderer().setControlUniform(name, value);
+      setControlUniform(renderer().uniforms, name, value);
       bands.changed();
     },
 
     channel({ index, image }) {
-      renderer().setChannel(index, image);
+      renderer().inputs.setChannel(index, image);
       bands.changed();
     },
 

@@ -7,18 +7,17 @@
 // (paint-gate.js). What the page is told of the bands ('bandStarted', 'band', 'awaitingPaint') is
 // protocol.js's; render-worker.js turns the page's requests into this scheduler's jobs.
 
-import { writeUniforms } from './uniforms.js';
+import { writeUniforms } from '../uniforms.js';
 import { BandPlanner } from './band-planner.js';
 import { PaintGate } from './paint-gate.js';
-import { CubeBuffer } from './channels/cube-buffer.js';
-import { readFloat, readOpaque } from './read-back.js';
-import { TILE_OFFSET_UNIFORM } from '../../shadertoy/header.js';
+import { CubeBuffer } from '../channels/cube-buffer.js';
+import { TILE_OFFSET_UNIFORM } from '../../../shadertoy/header.js';
 
-/** @typedef {import('./renderer.js').ShaderRenderer} ShaderRenderer */
-/** @typedef {import('./protocol.js').FrameInputs} FrameInputs */
-/** @typedef {import('./protocol.js').DrawnFrame} DrawnFrame */
-/** @typedef {import('./protocol.js').ProbedPixel} ProbedPixel */
-/** @typedef {ReturnType<typeof import('./protocol.js').serve>} Tell */
+/** @typedef {import('../renderer.js').ShaderRenderer} ShaderRenderer */
+/** @typedef {import('../protocol.js').FrameInputs} FrameInputs */
+/** @typedef {import('../protocol.js').DrawnFrame} DrawnFrame */
+/** @typedef {import('../protocol.js').ProbedPixel} ProbedPixel */
+/** @typedef {ReturnType<typeof import('../protocol.js').serve>} Tell */
 
 /** How often an unfinished band's fence is looked at (browsers clamp shorter timeouts to ~4 ms). */
 const POLL_MS = 2;
@@ -139,7 +138,7 @@ export class BandScheduler {
   readFrame() {
     if (!this.lastFrame) throw new Error('no frame has been drawn yet');
     if (this._job?.kind === 'frame') throw new Error('a frame is under way: its target is being drawn');
-    return readOpaque(this._renderer, this._renderer.frameTarget, this.lastFrame.width, this.lastFrame.height);
+    return this._renderer.readOpaque(this._renderer.frameTarget, this.lastFrame.width, this.lastFrame.height);
   }
 
   /** Something the picture depends on changed: the frame under way starts again, and its cost is
@@ -207,13 +206,13 @@ export class BandScheduler {
     const first = job.step === 0 && job.y === 0;
     const last = job.step === steps.length - 1;
     if ((job.inputs.media || job.inputs.passMedia) && !job.mediaSet) {
-      if (job.inputs.media) renderer.setMedia(job.inputs.media);
+      if (job.inputs.media) renderer.inputs.setMedia(job.inputs.media);
       if (job.inputs.passMedia) renderer.passMedia.setFrames(job.inputs.passMedia);
       job.mediaSet = true;
     }
     if (first && job.kind === 'frame') {
       renderer.gpuTimer.begin();
-      if (job.inputs.keyboard) renderer.setKeyboard(job.inputs.keyboard);
+      if (job.inputs.keyboard) renderer.inputs.setKeyboard(job.inputs.keyboard);
     }
     const { tile } = job;
     writeUniforms(
@@ -222,7 +221,7 @@ export class BandScheduler {
       tile ? { width: tile.fullWidth, height: tile.fullHeight } : { width: job.width, height: job.height },
     );
     const drawn = tile
-      ? /** @type {import('./pass-compiler.js').Step} */ (renderer.tiledStep)
+      ? /** @type {import('../pass-compiler.js').Step} */ (renderer.tiledStep)
       : job.program === 'aa-pixels'
         ? renderer.probe.mainImageAt(0, 0)
         : step;
@@ -351,14 +350,14 @@ export class BandScheduler {
     if (job.kind === 'frame') {
       this._lastPresent = now;
       this.lastFrame = job.inputs;
-      const pixels = job.readBack ? readOpaque(renderer, job.target, job.width, job.height) : null;
+      const pixels = job.readBack ? renderer.readOpaque(job.target, job.width, job.height) : null;
       /** @type {DrawnFrame} */
       const drawn = { bitmap: renderer.present(), pixels, gpuTimes: renderer.gpuTimer.poll(), program: renderer.installed };
       job.resolve(drawn);
     } else {
       const pixels = job.float
-        ? readFloat(renderer, job.target, job.width, job.height)
-        : readOpaque(renderer, job.target, job.width, job.height);
+        ? renderer.readFloat(job.target, job.width, job.height)
+        : renderer.readOpaque(job.target, job.width, job.height);
       job.target.dispose();
       job.resolve(pixels);
     }
