@@ -39,7 +39,8 @@ export default [
           patterns: [
             REFERENCE_RULE,
             {
-              group: ['../app/*', '../ui/*', '../io/*', '../main.js', '../automation.js'],
+              // from gpu/ and from its rooms (bands/, channels/)
+              group: ['../app/*', '../ui/*', '../io/*', '../main.js', '../automation.js', '../../app/*', '../../ui/*', '../../io/*'],
               message:
                 "gpu/ is the render worker's side: the page's state, widgets and files stay on the page (talk through gpu/protocol.js).",
             },
