@@ -85,6 +85,7 @@ export class CubeBuffer {
     const three = this.three;
     three.setClearColor(0x000000, 0);
     for (const target of this.targets) {
+      target.scissorTest = false; // a band's scissor stays on its target, and three.js clears within it
       for (let face = 0; face < 6; face++) {
         three.setRenderTarget(target, face);
         three.clear(true, false, false);

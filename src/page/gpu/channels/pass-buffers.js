@@ -154,6 +154,7 @@ export class PassBuffers {
   /** @param {THREE.WebGLRenderTarget} target */
   _clear(target) {
     const three = this.three;
+    target.scissorTest = false; // a band's scissor stays on its target, and three.js clears within it
     three.setRenderTarget(target);
     three.setClearColor(0x000000, 0);
     three.clear(true, false, false);
