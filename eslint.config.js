@@ -12,7 +12,7 @@ const REFERENCE_RULE = {
  * page (src/page/ui/) and nothing of the built-in raytracer (src/raytracer/, shaders/*.glsl).
  */
 const ENGINE_RULE = {
-  group: ['**/ui/*', '**/raytracer/*', '**/*.glsl', '**/*.glsl?raw'],
+  group: ['**/ui/**', '**/raytracer/**', '**/*.glsl', '**/*.glsl?raw'],
   message:
     "The engine page loads no widget (ui/) and nothing of the built-in raytracer (src/raytracer/, shaders/): the interactive page plugs them in (main.js; docs/architecture.md, 'The engine page').",
 };
@@ -71,7 +71,8 @@ export default [
   {
     files: ['src/page/gpu/**/*.js'],
     rules: restricted(REFERENCE_RULE, ENGINE_RULE, {
-      group: ['../app/*', '../ui/*', '../io/*', '../main.js', '../hook/*'],
+      // from gpu/ and from its rooms (bands/, channels/)
+      group: ['../app/*', '../ui/*', '../io/*', '../main.js', '../hook/*', '../../app/*', '../../ui/*', '../../io/*', '../../hook/*'],
       message: "gpu/ is the render worker's side: the page's state, widgets and files stay on the page (talk through gpu/protocol.js).",
     }),
   },

@@ -4,21 +4,16 @@
 // N past the recorder's cap is frame N; no bad input touches an output file already there; a
 // control out of range is said.
 
-import { execFile } from 'node:child_process';
 import fs from 'node:fs';
 import os from 'node:os';
 import path from 'node:path';
-import { promisify } from 'node:util';
 import { unzipSync } from 'fflate';
 import { PNG } from 'pngjs';
 import { afterAll, beforeAll, describe, expect, test } from 'vitest';
 import { DEFAULT_DATE } from '../src/cli/view-options.js';
 import { builtPage } from '../src/engine/page-server.js';
-import { REPO_ROOT } from './harness/config.js';
+import { runShaderproof } from './shaderproof-child.js';
 import { readPng } from './harness/images.js';
-
-const run = promisify(execFile);
-const BIN = path.join(REPO_ROOT, 'bin', 'shaderproof.js');
 
 let folder = '';
 beforeAll(async () => {
@@ -28,15 +23,7 @@ beforeAll(async () => {
 afterAll(() => fs.rmSync(folder, { recursive: true, force: true }));
 
 /** Runs the command in the folder: { code, stdout, stderr }. */
-async function shaderproof(...args) {
-  try {
-    const { stdout, stderr } = await run(process.execPath, [BIN, ...args], { cwd: folder, timeout: 100_000 });
-    return { code: 0, stdout, stderr };
-  } catch (error) {
-    if (typeof error.code !== 'number') throw error;
-    return { code: error.code, stdout: error.stdout, stderr: error.stderr };
-  }
-}
+const shaderproof = (...args) => runShaderproof(args, { cwd: folder, timeout: 100_000 });
 
 const write = (name, text) => {
   fs.mkdirSync(path.dirname(path.join(folder, name)), { recursive: true });

@@ -17,6 +17,7 @@ import { renderReference } from '../src/reference/render.js';
 import { composeImageShader } from '../src/shadertoy/header.js';
 import { builtPage } from '../src/engine/page-server.js';
 import { GOLDEN_DIR, REPO_ROOT, SHADER_FILE } from './harness/config.js';
+import { runShaderproof } from './shaderproof-child.js';
 import { readPng, sameImage } from './harness/images.js';
 import { disconnect, openPage } from './harness/page.js';
 import { renderRawShader } from './harness/raw-webgl.js';
@@ -67,19 +68,7 @@ let folder = '';
 let bin = '';
 
 /** Runs the installed command in the folder: { code, stdout, stderr }. */
-async function shaderproof(args, { env = {} } = {}) {
-  try {
-    const { stdout, stderr } = await run(process.execPath, [bin, ...args], {
-      cwd: folder,
-      env: { ...process.env, ...env },
-      timeout: 90_000,
-    });
-    return { code: 0, stdout, stderr };
-  } catch (error) {
-    if (typeof error.code !== 'number') throw error;
-    return { code: error.code, stdout: error.stdout, stderr: error.stderr };
-  }
-}
+const shaderproof = (args, { env = {} } = {}) => runShaderproof(args, { cwd: folder, bin, env, timeout: 90_000 });
 
 const write = (name, text) => {
   fs.mkdirSync(path.dirname(path.join(folder, name)), { recursive: true });

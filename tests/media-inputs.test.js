@@ -6,23 +6,18 @@
 // formula gives, and its waveform row is the file's samples. The texture and iChannelTime are
 // read back through tiny shaders.
 
-import { execFile } from 'node:child_process';
 import fs from 'node:fs';
 import os from 'node:os';
 import path from 'node:path';
-import { promisify } from 'node:util';
 import { unzipSync } from 'fflate';
 import { PNG } from 'pngjs';
 import { describe, expect, test } from 'vitest';
-import { REPO_ROOT } from './harness/config.js';
+import { runShaderproof } from './shaderproof-child.js';
 import { readPng } from './harness/images.js';
 import { CHROME_ARGS, launchBrowser } from '../src/engine/browser.js';
 import { spectrumTexture } from '../src/page/inputs/spectrum.js';
 import { pixel, readPixels, withPage, withServedDir } from './page-helpers.js';
 import { MUSIC_READER, RATE, checkMusic, toneSamples, wav } from './music-fixture.js';
-
-const BIN = path.join(REPO_ROOT, 'bin', 'shaderproof.js');
-const run = promisify(execFile);
 
 // ---- the video: 6 frames at 10 fps, frame i all grey i·40 -----------------------------------
 const VIDEO = { frames: 6, fps: 10, step: 40 };
@@ -38,15 +33,7 @@ const videoAt = (t) => {
   return { index: Math.floor(local * VIDEO.fps + 1e-9), local };
 };
 
-async function shaderproof(cwd, ...args) {
-  try {
-    const { stdout, stderr } = await run(process.execPath, [BIN, ...args], { cwd, timeout: 120_000 });
-    return { code: 0, stdout, stderr };
-  } catch (error) {
-    if (typeof error.code !== 'number') throw error;
-    return { code: error.code, stdout: error.stdout, stderr: error.stderr };
-  }
-}
+const shaderproof = (cwd, ...args) => runShaderproof(args, { cwd, timeout: 120_000 });
 
 describe('moving channels: video and music, against what the test computes', () => {
   test('a video and a tone in iChannel0: the page and the command line give the computed frames, rows and iChannelTime', async () => {

@@ -5,23 +5,18 @@
 // decoder is loaded only by a shader that uses such a video: a page without one asks for none of
 // it. The decoding itself, without a browser: theora.test.js.
 
-import { execFile } from 'node:child_process';
 import crypto from 'node:crypto';
 import fs from 'node:fs';
 import os from 'node:os';
 import path from 'node:path';
-import { promisify } from 'node:util';
 import { unzipSync } from 'fflate';
 import { PNG } from 'pngjs';
 import { describe, expect, test } from 'vitest';
-import { REPO_ROOT } from './harness/config.js';
+import { runShaderproof } from './shaderproof-child.js';
 import { readPixels, solid, withPage, withServedDir } from './page-helpers.js';
 import { checkRow } from './media-fixture.js';
 import { loadNotes } from './page-multipass-helpers.js';
 import { THEORA_FILE, THEORA_READER, expectedProbes, theoraJson } from './theora-fixture.js';
-
-const BIN = path.join(REPO_ROOT, 'bin', 'shaderproof.js');
-const run = promisify(execFile);
 
 /** The site names a video by a hash of it: so does the test. */
 const HASHED = `${crypto.createHash('sha256').update(fs.readFileSync(THEORA_FILE)).digest('hex')}.ogv`;
@@ -30,15 +25,7 @@ const TIMES = [0, 0.05, 0.15, 0.25, 0.45, 0.15, 0.35, 0.55, 0.65, 1.35];
 /** What the page asks for when it loads the decoder: its module and its two WebAssembly files. */
 const DECODER = /theora-video|ogv-demuxer-ogg-wasm|ogv-decoder-video-theora-wasm/;
 
-async function shaderproof(cwd, ...args) {
-  try {
-    const { stdout, stderr } = await run(process.execPath, [BIN, ...args], { cwd, timeout: 120_000 });
-    return { code: 0, stdout, stderr };
-  } catch (error) {
-    if (typeof error.code !== 'number') throw error;
-    return { code: error.code, stdout: error.stdout, stderr: error.stderr };
-  }
-}
+const shaderproof = (cwd, ...args) => runShaderproof(args, { cwd, timeout: 120_000 });
 const both = (/** @type {number} */ t) => [...expectedProbes(t), ...expectedProbes(t)];
 
 describe('the site’s Theora videos, against the frames the fixture was made of', () => {

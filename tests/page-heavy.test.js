@@ -283,7 +283,7 @@ describe('the page never comes back with the shader that hung', () => {
 describe('a shader that never finishes', () => {
   // The page's script froze for good here in 4 of 6 runs alone: heavy.glsl's last bitmap was
   // still being painted when endless.glsl's first draw took the GPU process. The worker waits for
-  // the page to say it has painted (src/page/gpu/paint-gate.js), as long as it takes: its wait
+  // the page to say it has painted (src/page/gpu/bands/paint-gate.js), as long as it takes: its wait
   // once ended after 1 s, and a page whose animation frames came later (under load) froze 1 run
   // in 48 (tests/page-loop.test.js holds the wait).
   test('the page keeps answering and puts up the watchdog message (in a browser of its own: SwiftShader never gets over it)', async () => {

@@ -1,4 +1,4 @@
-// Recording (src/page/io/recorder.js, src/page/ui/record-dialog.js), end to end in the real browser: a
+// Recording (src/page/io/recorder.js, src/page/ui/toolbar/record-dialog.js), end to end in the real browser: a
 // test shader that paints iFrame, iTime and iTimeDelta as colour is recorded frame by frame at a
 // fixed frame rate and size, through window.raytracer.record() and through the toolbar's
 // "Record" button; the WebM is read back in Node with mediabunny (frame count, size, times; its

@@ -1,4 +1,4 @@
-// A heavy frame is drawn in bands (src/page/gpu/band-planner.js). A still frame, or the first
+// A heavy frame is drawn in bands (src/page/gpu/bands/band-planner.js). A still frame, or the first
 // frame of a shader, is shown as it builds up (there is nothing newer to show); frames that
 // follow one another while playing are shown only whole (issue 45, item 10): one shown as it
 // builds up lies half over the frame before it, a torn picture.

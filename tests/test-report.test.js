@@ -12,7 +12,7 @@ import { pathToFileURL } from 'node:url';
 import { afterAll, beforeAll, describe, expect, test } from 'vitest';
 import { main } from '../src/cli/main.js';
 import { io } from '../src/cli/io.js';
-import { htmlReport } from '../src/cli/test/html-report.js';
+import { htmlReport } from '../src/cli/test/report/html-report.js';
 import { writePng } from '../src/engine/png.js';
 import { builtPage } from '../src/engine/page-server.js';
 import { disconnect, openPage } from './harness/page.js';

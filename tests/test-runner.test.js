@@ -1,4 +1,4 @@
-// `shaderproof test`'s runner without a browser (src/cli/test/runner.js, guard.js, reporters.js):
+// `shaderproof test`'s runner without a browser (src/cli/test/runner.js, guard.js, report/reporters.js):
 // sessions made here draw a colour from the shader's name at once, or never answer, or throw,
 // so that what the runner does about a case that takes its browser down (issue 45, item 1), the
 // order of its reports with several workers (item 8), --reporter and the progress line (issue

@@ -1,6 +1,6 @@
 // The command line's watchdog: how long a shader may go without finishing a band of a frame
 // before it is taken never to finish, per renderer, and what a person reads when it gives up.
-// A band is sized to take about 0.1 s (src/page/gpu/band-planner.js), so a frame that is still
+// A band is sized to take about 0.1 s (src/page/gpu/bands/band-planner.js), so a frame that is still
 // making progress finishes a band every fraction of a second and is never stopped, however long
 // the whole frame takes; only a band that does not end is. A program's first draw is where it is
 // compiled, and gets longer.

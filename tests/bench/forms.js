@@ -20,8 +20,8 @@ import path from 'node:path';
 import { REPO_ROOT, SHADER_FILE } from '../harness/config.js';
 import { rendererLabel } from '../../src/engine/browser.js';
 import { replaceMarkedSection } from '../scripts/readme-section.js';
-import { measureVariantsOn, pairedRatio } from './measure.js';
-import { CPU_RENDERERS, RENDERER_TITLES, renderersAsked, withRenderers } from './renderer-set.js';
+import { measureScript, pairedRatio } from './measure.js';
+import { CPU_RENDERERS, RENDERER_TITLES } from './renderer-set.js';
 import { branchyConditions, edit } from './variant-text.js';
 import { pasteFormOf } from './variant-text.js';
 
@@ -111,38 +111,7 @@ const VARIANTS = [
   },
 ];
 
-let renderers;
-try {
-  renderers = renderersAsked(argv);
-} catch (error) {
-  console.error(`npm run bench:forms -- ${error.message}`);
-  process.exit(1);
-}
-const framesAt = argv.indexOf('--frames');
-const FRAMES = quick ? 1 : framesAt >= 0 ? Number(argv[framesAt + 1]) : 5;
-if (!(Number.isInteger(FRAMES) && FRAMES > 0)) {
-  console.error(`npm run bench:forms -- --frames: expected a whole number of frames, got "${argv[framesAt + 1] ?? ''}"`);
-  process.exit(1);
-}
-const COPIES = quick ? 1 : 3;
-const [width, height] = quick ? [160, 90] : [640, 360];
-const results = await withRenderers(renderers, async (started) => {
-  const measured = await measureVariantsOn(started, VARIANTS, {
-    source,
-    width,
-    height,
-    copies: COPIES,
-    frames: FRAMES,
-    warmup: quick ? 1 : 2,
-    referenceSamplesPerAxis: quick ? 2 : 8,
-  });
-  return started.map((r, i) => ({ name: r.name, environment: r.environment, measured: measured[i] }));
-});
-const failed = results.flatMap((r) => r.measured.filter((m) => m.error).map((m) => `forms: ${m.variant.name} on ${r.name}: ${m.error}`));
-if (failed.length) {
-  console.error(failed.join('\n'));
-  process.exit(1);
-}
+const { renderers, results, width, height, copies: COPIES, frames: FRAMES } = await measureScript('forms', VARIANTS, source, argv);
 const agreed = (values) => (new Set(values).size === 1 ? values[0] : values.join(' / '));
 const rows = VARIANTS.map((variant, i) => {
   const cells = results.flatMap(({ measured }) => {

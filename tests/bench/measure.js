@@ -7,6 +7,7 @@ import { imageError } from '../../src/reference/error.js';
 import { median } from '../../src/shared/stats.js';
 import { renderReferenceParallel } from '../harness/reference-threads.js';
 import { timeShadersOn } from './timer.js';
+import { renderersAsked, withRenderers } from './renderer-set.js';
 
 /**
  * @typedef {object} Variant
@@ -114,4 +115,55 @@ export async function measureVariantsOn(renderers, variants, options) {
       };
     }),
   );
+}
+
+/**
+ * A comparison script's run (bench:forms, bench:ablation): the renderers (renderer-set.js) and
+ * the frames (--frames N, 5 by default) its command line asks for, and every variant measured on
+ * each (measureVariantsOn) at 640×360, 3 compilations of each (--quick: once, at 160×90, one
+ * frame). A flag it cannot read, or a variant that failed, is said on stderr and the process
+ * ends with 1.
+ * @template {Variant} V
+ * @param {string} script the npm script's name after `bench:`, in what it says
+ * @param {V[]} variants
+ * @param {string} source the shader the variants are forms of
+ * @param {string[]} argv the script's arguments
+ */
+export async function measureScript(script, variants, source, argv) {
+  const quick = argv.includes('--quick');
+  let renderers;
+  try {
+    renderers = renderersAsked(argv);
+  } catch (error) {
+    console.error(`npm run bench:${script} -- ${error.message}`);
+    process.exit(1);
+  }
+  const framesAt = argv.indexOf('--frames');
+  const frames = quick ? 1 : framesAt >= 0 ? Number(argv[framesAt + 1]) : 5;
+  if (!(Number.isInteger(frames) && frames > 0)) {
+    console.error(`npm run bench:${script} -- --frames: expected a whole number of frames, got "${argv[framesAt + 1] ?? ''}"`);
+    process.exit(1);
+  }
+  const copies = quick ? 1 : 3;
+  const [width, height] = quick ? [160, 90] : [640, 360];
+  const results = await withRenderers(renderers, async (started) => {
+    const measured = await measureVariantsOn(started, variants, {
+      source,
+      width,
+      height,
+      copies,
+      frames,
+      warmup: quick ? 1 : 2,
+      referenceSamplesPerAxis: quick ? 2 : 8,
+    });
+    return started.map((r, i) => ({ name: r.name, environment: r.environment, measured: measured[i] }));
+  });
+  const failed = results.flatMap((r) =>
+    r.measured.filter((m) => m.error).map((m) => `${script}: ${m.variant.name} on ${r.name}: ${m.error}`),
+  );
+  if (failed.length) {
+    console.error(failed.join('\n'));
+    process.exit(1);
+  }
+  return { renderers, results, width, height, copies, frames };
 }

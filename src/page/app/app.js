@@ -9,15 +9,17 @@
 // The app touches no part of the page but its canvas: what it has to tell (a change of state, a
 // compile's outcome, a lost context, each frame drawn) it emits as events (events.js), and the
 // page shows them (ui/).
+//
+// Past 400 lines because it is the app's whole public API, one short method a call, each handing
+// the work to the part that owns it; what is more than that lives in those parts.
 
-import { projectControls } from '../../shadertoy/controls.js';
 import { hostControlBlock } from '../../shadertoy/header.js';
 import { KeyboardState } from '../../shadertoy/keyboard.js';
 import { frameSchedule, singlePass } from '../../shadertoy/multipass.js';
 import { RenderClient } from './render-client.js';
 import { ShadertoyInputs } from './shadertoy-inputs.js';
 import { CanvasSize } from './canvas-size.js';
-import { carriedOverValues, readControlChanges } from './control-values.js';
+import { controlsOf, readControlChanges } from './control-values.js';
 import { Emitter } from './events.js';
 import { LiveControlForm } from './live-controls.js';
 import { Converge } from './converge.js';
@@ -214,15 +216,8 @@ export class RaytracerApp extends Emitter {
    */
   loadProject(project, from = {}) {
     if (!from.continues) this._loads++;
-    /** @type {Control[]} */
-    let controls = [];
-    this.notice = null;
-    try {
-      controls = projectControls(project);
-    } catch (error) {
-      this.notice = `${error.message}\nThe shader runs with its own defaults and no panel controls.`;
-    }
-    const values = carriedOverValues(controls, this.controls, this.values);
+    const { controls, values, notice } = controlsOf(project, this.controls, this.values);
+    this.notice = notice;
     this.project = project;
     this.projectInfo = from.info ?? null;
     this.notes = frameSchedule(project).flatMap((step) => step.bindings.flatMap((binding) => (binding.note ? [binding.note] : [])));

@@ -2,9 +2,30 @@
 // read (from the panel, the URL, the hook) against the control list, and the values a
 // shared link must hold.
 
-import { choiceValue, coerceControlValue, controlDefaults } from '../../shadertoy/controls.js';
+import { choiceValue, coerceControlValue, controlDefaults, projectControls } from '../../shadertoy/controls.js';
 
 /** @typedef {import('../../shadertoy/controls.js').Control} Control */
+
+/**
+ * A new shader's controls (its control blocks, one per tab at most) and their values, carried
+ * over from the old list where they survive; `notice` says why the blocks could not be read (the
+ * shader then runs with its own defaults and no controls).
+ * @param {import('../../shadertoy/multipass.js').MultipassShader} project
+ * @param {Control[]} oldControls
+ * @param {Record<string, unknown>} oldValues
+ * @returns {{controls: Control[], values: Record<string, unknown>, notice: string | null}}
+ */
+export function controlsOf(project, oldControls, oldValues) {
+  /** @type {Control[]} */
+  let controls = [];
+  let notice = null;
+  try {
+    controls = projectControls(project);
+  } catch (error) {
+    notice = `${error.message}\nThe shader runs with its own defaults and no panel controls.`;
+  }
+  return { controls, values: carriedOverValues(controls, oldControls, oldValues), notice };
+}
 
 /**
  * The values for a new control list: the defaults, except where a control of the same name and
@@ -14,7 +35,7 @@ import { choiceValue, coerceControlValue, controlDefaults } from '../../shaderto
  * @param {Record<string, unknown>} oldValues
  * @returns {Record<string, unknown>}
  */
-export function carriedOverValues(controls, oldControls, oldValues) {
+function carriedOverValues(controls, oldControls, oldValues) {
   const values = controlDefaults(controls);
   for (const c of controls) {
     const old = oldControls.find((o) => o.name === c.name && o.type === c.type);

@@ -131,7 +131,7 @@ export class RenderClient extends Emitter {
 
   /**
    * The worker holds a new program's first draws until the page has painted the bitmaps it was
-   * sent (gpu/paint-gate.js: painting a bitmap waits for the GPU process, which an endless draw
+   * sent (gpu/bands/paint-gate.js: painting a bitmap waits for the GPU process, which an endless draw
    * holds for good), and waits as long as it takes: the page always answers. What the page has
    * received by now has been given to the canvas (shown, or closed); at the second animation
    * frame from now it has been painted. A hidden page paints nothing and gets no animation

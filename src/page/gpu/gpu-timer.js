@@ -1,5 +1,5 @@
 // The GPU time of each frame the render worker draws, for the page's frame-time readout
-// (ui/frame-readout.js), where the browser has EXT_disjoint_timer_query_webgl2: a TIME_ELAPSED
+// (ui/toolbar/frame-readout.js), where the browser has EXT_disjoint_timer_query_webgl2: a TIME_ELAPSED
 // query around each frame's draws, read back frames later (results are never ready in the frame
 // that asked), discarded when the GPU says its timer was disjoint (a power-state change or a
 // context switch makes the figure meaningless). The times travel to the page with each frame

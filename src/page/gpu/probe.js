@@ -1,4 +1,4 @@
-// The pixel inspector's GPU work, in the render worker (render-worker.js runs it as a job between
+// The pixel inspector's GPU work, in the render worker (bands/band-scheduler.js runs it as a job between
 // frames, so the buffers hold a whole frame): one pixel of the last frame drawn again, read in
 // float before the 8-bit rounding, with the value of every buffer there; and, for the raytracer,
 // the path probe (src/raytracer/path-probe.js), a compile of the same file that writes the path

@@ -123,9 +123,9 @@ import { ShaderCompileError, WebGL2UnavailableError } from './errors.js';
  * @property {{lost: boolean}} context the context was lost (true) or restored (false); a restored
  *   context has no shader: the page compiles again
  * @property {{}} awaitingPaint a new program's first draw waits until the page has painted the
- *   bitmaps it was sent (paint-gate.js): the page answers with `settled`
+ *   bitmaps it was sent (bands/paint-gate.js): the page answers with `settled`
  * @property {{compiling: boolean}} bandStarted a band went to the GPU (`compiling`: a new
- *   program's first draw, one quad, in which SwiftShader compiles it: render-worker.js's pump)
+ *   program's first draw, one quad, in which SwiftShader compiles it: bands/band-scheduler.js's pump)
  * @property {{kind: 'frame' | 'capture' | 'probe' | 'compile', y: number, height: number, bitmap: ImageBitmap | null}} band
  *   the GPU finished a band of a frame or a capture (or a probe's draws, or a compiling band),
  *   `y` rows of `height` done (the last band too); now and then with a bitmap of a progressive

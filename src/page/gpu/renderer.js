@@ -10,7 +10,8 @@
 //
 // Compiling every pass, with its errors mapped to the user's lines and the material cache, is
 // pass-compiler.js's; what each pass reads in its channels, and the sampler objects it reads
-// buffers with, channel-bindings.js's.
+// buffers with, channel-bindings.js's; the page's images, the keyboard and the media,
+// pass-inputs.js's; which band is drawn when, bands/band-scheduler.js's.
 
 import * as THREE from 'three';
 import { GpuTimer } from './gpu-timer.js';
@@ -20,11 +21,12 @@ import { CubeBuffer } from './channels/cube-buffer.js';
 import { WebGL2UnavailableError } from './errors.js';
 import { PassCompiler } from './pass-compiler.js';
 import { copyScene, fullscreenTriangle } from './frame-copy.js';
-import { PassMedia } from './channels/media-textures.js';
-import { ChannelSamplers, bindChannels, imageTexture, ownChannelUniforms, setMedia } from './channels/channel-bindings.js';
+import { PassInputs } from './channels/pass-inputs.js';
+import { ChannelSamplers, bindChannels, ownChannelUniforms } from './channels/channel-bindings.js';
 import { PixelProbe } from './probe.js';
 import { SoundPass } from '../sound/sound-pass.js';
 import { sendVerbatimSources } from './verbatim-source.js';
+import { flipRows } from '../../shared/pixels.js';
 import { TILE_OFFSET_UNIFORM } from '../../shadertoy/header.js';
 
 /** @typedef {import('./pass-compiler.js').Step} Step */
@@ -83,32 +85,18 @@ export class ShaderRenderer {
     this.copyScene = copy.scene;
     this._copySource = copy.source;
 
-    /** The 1×1 black texture an empty 2D channel reads. @type {THREE.Texture} */
-    this.black = this.uniforms.iChannel0.value;
-    /** The textures loaded into iChannel0..3. @type {Array<THREE.Texture | null>} */
-    this._channels = [null, null, null, null];
-    /** The site's media the passes' channels name (media-textures.js). */
-    this.passMedia = new PassMedia();
-
     /** The passes of a frame, in order, with their compiled materials (the last is Image). @type {Step[]} */
     this.steps = [];
     /** Buffer A–D of a multipass shader. */
     this.buffers = new PassBuffers(this.three, (source, target, width, height) => this._copy(source, target, width, height));
     /** The Cube A pass's cube maps. */
     this.cube = new CubeBuffer(this.three);
-    /** Shadertoy's keyboard texture: 256 × 3 bytes, nearest (keyboard.js). */
-    this._keyboardBytes = new Uint8Array(256 * 3);
-    this.keyboard = new THREE.DataTexture(this._keyboardBytes, 256, 3, THREE.RedFormat, THREE.UnsignedByteType);
-    this.keyboard.needsUpdate = true;
-    /** What passes read in their channels (channel-bindings.js: bindChannels). */
-    this._sources = {
-      buffers: this.buffers,
-      cube: this.cube,
-      keyboard: this.keyboard,
-      channels: this._channels,
-      black: this.black,
-      media: this.passMedia.textures,
-    };
+    /** The page's images, the keyboard and the media the passes read (pass-inputs.js). */
+    this.inputs = new PassInputs(this.uniforms, { buffers: this.buffers, cube: this.cube });
+    /** The 1×1 black texture an empty 2D channel reads. */
+    this.black = this.inputs.black;
+    /** The site's media the passes' channels name (media-textures.js). */
+    this.passMedia = this.inputs.passMedia;
     /** The sampler objects of the pass being drawn (channel-bindings.js). */
     this.samplers = new ChannelSamplers(gl, this.three);
 
@@ -127,25 +115,6 @@ export class ShaderRenderer {
   /** True once some shader has compiled (render() draws nothing before). */
   get hasProgram() {
     return this.steps.length > 0;
-  }
-
-  /**
-   * Declares the live (`const`) controls as uniforms, with `values`. Entries of an older control
-   * list stay: the shader still on screen may use them until its successor compiles.
-   */
-  setControlUniforms(controls, values) {
-    for (const c of controls) {
-      if (c.kind !== 'uniform') continue;
-      this.uniforms[c.name] ??= { value: null };
-      this.setControlUniform(c.name, values[c.name]);
-    }
-  }
-
-  setControlUniform(name, value) {
-    const uniform = this.uniforms[name];
-    if (!uniform) return;
-    // three.js takes plain arrays for vecN; bools go in as ints
-    uniform.value = Array.isArray(value) ? value.slice() : typeof value === 'boolean' ? Number(value) : value;
   }
 
   /**
@@ -205,7 +174,7 @@ export class ShaderRenderer {
   beginStep(step, width, height) {
     const uniforms = step.material.uniforms;
     for (const name of Object.keys(this.uniforms)) if (!(name in uniforms)) uniforms[name] = this.uniforms[name]; // controls added later
-    bindChannels(step, width, height, this._sources);
+    bindChannels(step, width, height, this.inputs.sources);
     this.mesh.material = step.material;
     step.material.uniformsNeedUpdate = true; // the same material drawn again may read other textures
     this.samplers.use(step);
@@ -217,12 +186,6 @@ export class ShaderRenderer {
   endStep(step) {
     if (step.target === 'cube') this.cube.swap();
     else if (step.target !== 'screen') this.buffers.swap(step.target);
-  }
-
-  /** The keyboard texture's bytes for the next frame (Shadertoy's 256 × 3: keyboard.js). @param {Uint8Array} data */
-  setKeyboard(data) {
-    this._keyboardBytes.set(data); // the texture's own bytes
-    this.keyboard.needsUpdate = true;
   }
 
   /** Forgets the compiled materials but the ones on screen (their programs died with a lost context), and the path probe. */
@@ -245,29 +208,6 @@ export class ShaderRenderer {
     if (gl.isContextLost()) return 0;
     const dims = gl.getParameter(gl.MAX_VIEWPORT_DIMS);
     return Math.min(gl.getParameter(gl.MAX_RENDERBUFFER_SIZE), gl.getParameter(gl.MAX_TEXTURE_SIZE), dims[0], dims[1]);
-  }
-
-  /**
-   * Puts an image into iChannel0..3 (null: back to the 1×1 black texture), sampled as Shadertoy
-   * samples an image by default (channel-bindings.js: imageTexture).
-   * @param {number} index 0..3
-   * @param {ImageBitmap|null} image
-   */
-  setChannel(index, image) {
-    this._channels[index]?.dispose();
-    const texture = image ? imageTexture(image) : null;
-    this._channels[index] = texture;
-    this.uniforms[`iChannel${index}`].value = texture ?? this.black;
-    const resolution = this.uniforms.iChannelResolution.value;
-    resolution.splice(index * 3, 3, image?.width ?? 0, image?.height ?? 0, image ? 1 : 0);
-  }
-
-  /**
-   * The moving channels' textures for the frame about to be drawn (channel-bindings.js setMedia).
-   * @param {Array<import('./protocol.js').MediaFrame | null>} media
-   */
-  setMedia(media) {
-    setMedia(this._channels, this.uniforms, media);
   }
 
   /**
@@ -385,12 +325,40 @@ export class ShaderRenderer {
 
   /**
    * Reads a render target (default: the frame target): RGBA8, rows bottom to top. It waits for
-   * the GPU: call it once the draws are done (render-worker.js polls a fence first).
+   * the GPU: call it once the draws are done (bands/band-scheduler.js polls a fence first).
    */
   readTarget(target = this.frameTarget, x = 0, y = 0, width = target.width, height = target.height) {
     const pixels = new Uint8Array(width * height * 4);
     this.three.readRenderTargetPixels(target, x, y, width, height, pixels);
     return pixels;
+  }
+
+  /**
+   * A target's pixels as the page shows them: RGBA8, rows top to bottom, alpha 1 (the page's
+   * canvas has none).
+   * @param {THREE.WebGLRenderTarget} target
+   * @param {number} width
+   * @param {number} height
+   */
+  readOpaque(target, width, height) {
+    const pixels = flipRows(this.readTarget(target), width, height);
+    for (let i = 3; i < pixels.length; i += 4) pixels[i] = 255;
+    return pixels;
+  }
+
+  /**
+   * A float target's pixels, RGBA32F, rows top to bottom.
+   * @param {THREE.WebGLRenderTarget} target
+   * @param {number} width
+   * @param {number} height
+   */
+  readFloat(target, width, height) {
+    const pixels = new Float32Array(width * height * 4);
+    this.three.readRenderTargetPixels(target, 0, 0, width, height, pixels);
+    const row = width * 4;
+    const out = new Float32Array(pixels.length);
+    for (let y = 0; y < height; y++) out.set(pixels.subarray((height - 1 - y) * row, (height - y) * row), y * row);
+    return out;
   }
 
   /** What GPU and driver we run on. */

@@ -61,3 +61,31 @@ export function writeUniforms(uniforms, frame, size = null) {
   uniforms.iMouse.value.set(mx * sx, my * sy, mz * sx, mw * sy);
   uniforms.iDate.value.fromArray(frame.date);
 }
+
+/**
+ * Declares the live (`const`) controls as uniforms, with `values`. Entries of an older control
+ * list stay: the shader still on screen may use them until its successor compiles.
+ * @param {Record<string, {value: any}>} uniforms
+ * @param {import('../../shadertoy/controls.js').Control[]} controls
+ * @param {Record<string, unknown>} values
+ */
+export function setControlUniforms(uniforms, controls, values) {
+  for (const c of controls) {
+    if (c.kind !== 'uniform') continue;
+    uniforms[c.name] ??= { value: null };
+    setControlUniform(uniforms, c.name, values[c.name]);
+  }
+}
+
+/**
+ * One live control's value into its uniform (none: not a live control).
+ * @param {Record<string, {value: any}>} uniforms
+ * @param {string} name
+ * @param {unknown} value
+ */
+export function setControlUniform(uniforms, name, value) {
+  const uniform = uniforms[name];
+  if (!uniform) return;
+  // three.js takes plain arrays for vecN; bools go in as ints
+  uniform.value = Array.isArray(value) ? value.slice() : typeof value === 'boolean' ? Number(value) : value;
+}

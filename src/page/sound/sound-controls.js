@@ -7,7 +7,7 @@
 
 import { element } from '../ui/dom.js';
 import { soundNote } from '../ui/notices.js';
-import { icon } from '../ui/toolbar.js';
+import { icon } from '../ui/toolbar/toolbar.js';
 import { SoundPlayer } from './player.js';
 
 /** The meter's size in pixels. */
@@ -16,7 +16,7 @@ const METER = { width: 40, height: 24 };
 /**
  * Makes the player and its widgets, in a group of the toolbar before its frame-time graph.
  * @param {import('../app/app.js').RaytracerApp} app
- * @param {{toolbar: import('../ui/toolbar.js').Toolbar, stage: HTMLElement}} where
+ * @param {{toolbar: import('../ui/toolbar/toolbar.js').Toolbar, stage: HTMLElement}} where
  */
 export function installSound(app, { toolbar, stage }) {
   const player = new SoundPlayer(app);

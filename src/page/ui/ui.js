@@ -5,8 +5,8 @@
 
 import { Editor } from './editor.js';
 import { Panel } from './panel.js';
-import { Toolbar } from './toolbar.js';
-import { installRecordDialog } from './record-dialog.js';
+import { Toolbar } from './toolbar/toolbar.js';
+import { installRecordDialog } from './toolbar/record-dialog.js';
 import { installShortcuts, watchKeyboard } from './keys.js';
 import { pageActions } from './actions.js';
 import { channelLoaded, installViewNote, showLoadNotes } from './notices.js';
@@ -20,7 +20,7 @@ import { openShader } from '../io/open-shader.js';
 import { installInspection } from '../inspect/inspection.js';
 
 /** @typedef {import('../app/app.js').RaytracerApp} RaytracerApp */
-/** @typedef {import('./frame-readout.js').Activity} Activity */
+/** @typedef {import('./toolbar/frame-readout.js').Activity} Activity */
 
 /** A compile is said in the readout once it has taken this long (a quick one never shows). */
 const COMPILE_SAID_AFTER_S = 1;

@@ -6,7 +6,7 @@
 // or the shader's name changes; never on what the frame-time line says (style.css gives it a
 // fixed room), so buttons do not move while a shader plays.
 
-import { element, placeAbove } from './dom.js';
+import { element, placeAbove } from '../dom.js';
 
 /** The output buttons that go into the "More" menu first, by accessible name. */
 const OVERFLOW_ORDER = [

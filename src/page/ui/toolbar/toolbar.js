@@ -3,7 +3,7 @@
 // <button> whose accessible name is what it does ("Play", "Pause", "Restart", "Copy for
 // Shadertoy", "Download .glsl", "Export JSON", "Screenshot", ...); the icons are decoration.
 
-import { element } from './dom.js';
+import { element } from '../dom.js';
 import { FrameReadout } from './frame-readout.js';
 import { ToolbarFit } from './toolbar-fit.js';
 import './toolbar.css';

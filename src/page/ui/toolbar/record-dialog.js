@@ -2,13 +2,13 @@
 // and frames, frames per second, size (the canvas's by default); "Start" records (recorder.js)
 // with a progress bar, "Cancel" stops the recording (nothing is saved) or closes the popover.
 
-import { MAX_FPS, MAX_FRAMES, RecordingCancelled } from '../io/recorder.js';
+import { MAX_FPS, MAX_FRAMES, RecordingCancelled } from '../../io/recorder.js';
 
-/** @typedef {import('../io/recorder.js').Recorder} Recorder */
-import { recordingFileName } from '../io/file-names.js';
-import { element, placeAbove, saveBlob } from './dom.js';
+/** @typedef {import('../../io/recorder.js').Recorder} Recorder */
+import { recordingFileName } from '../../io/file-names.js';
+import { element, placeAbove, saveBlob } from '../dom.js';
 
-/** @typedef {import('../app/app.js').RaytracerApp} RaytracerApp */
+/** @typedef {import('../../app/app.js').RaytracerApp} RaytracerApp */
 
 const RECORD_ICON = '<svg viewBox="0 0 16 16" width="14" height="14" fill="currentColor"><circle cx="8" cy="8" r="5"/></svg>';
 

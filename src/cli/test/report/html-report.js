@@ -9,7 +9,7 @@
 // so), so it works offline, from file://, as a CI artifact.
 
 import { REPORT_STYLE, reportScript } from './report-page.js';
-import { THUMBNAIL } from './scale.js';
+import { THUMBNAIL } from '../scale.js';
 
 /** @param {unknown} text */
 const escape = (text) =>
@@ -40,7 +40,7 @@ const SHOWN_WIDTH = 320;
  */
 
 /**
- * @param {import('./case.js').CaseResult[]} results in the cases' order
+ * @param {import('../case.js').CaseResult[]} results in the cases' order
  * @param {RunFacts} run
  */
 export function htmlReport(results, run) {
@@ -98,7 +98,7 @@ ${section('skipped', 'Skipped', skipped)}
 `;
 }
 
-/** @param {import('./case.js').CaseResult} r */
+/** @param {import('../case.js').CaseResult} r */
 function caseHtml(r) {
   const state = r.skipped ? 'skip' : r.ok ? 'pass' : 'fail';
   const thumb = r.files.thumb
@@ -125,7 +125,7 @@ function caseHtml(r) {
 /**
  * Why the case failed. What the page shows better below is said there only: a compile error's
  * source lines (its first line stays here), each input it went without.
- * @param {import('./case.js').CaseResult} r
+ * @param {import('../case.js').CaseResult} r
  */
 function failuresHtml(r) {
   const listed = r.failures
@@ -134,14 +134,14 @@ function failuresHtml(r) {
   return listed.length ? `<ul class="failures">${listed.map((f) => `<li>${escape(f)}</li>`).join('')}</ul>` : '';
 }
 
-/** The thumbnail's size in the page (its file is THUMBNAIL-sized: scale.js). @param {import('./case.js').CaseResult} r */
+/** The thumbnail's size in the page (its file is THUMBNAIL-sized: scale.js). @param {import('../case.js').CaseResult} r */
 function thumbSize(r) {
   const { width, height } = r.size ?? THUMBNAIL;
   const scale = Math.min(1, THUMBNAIL.width / width, THUMBNAIL.height / height);
   return { width: Math.max(1, Math.round(width * scale)), height: Math.max(1, Math.round(height * scale)) };
 }
 
-/** The size, the pixel count against the tolerance. @param {import('./case.js').CaseResult} r */
+/** The size, the pixel count against the tolerance. @param {import('../case.js').CaseResult} r */
 function facts(r) {
   if (r.skipped || !r.size || !r.tolerance) return '';
   const { width, height } = r.size;
@@ -153,7 +153,7 @@ function facts(r) {
   return `<ul class="facts"><li>${width}×${height}: ${differ}; the tolerance: at most ${maxDiffPixels} pixels may, at threshold ${threshold}</li></ul>`;
 }
 
-/** The case's images side by side, the comparison and the zoom. @param {import('./case.js').CaseResult} r */
+/** The case's images side by side, the comparison and the zoom. @param {import('../case.js').CaseResult} r */
 function images(r) {
   const { files } = r;
   if (!files.actual && !files.half && !(r.ok && files.thumb)) return '';
@@ -184,7 +184,7 @@ function images(r) {
   return `<div class="tools"><span>Zoom</span><span class="zooms">${zooms}</span>${modes}</div><div class="images" style="--zoom:${zoom}">${shown.join('')}${compare}</div>`;
 }
 
-/** @param {import('./compile-detail.js').CompileDetail} detail @param {string} name the case's */
+/** @param {import('../compile-detail.js').CompileDetail} detail @param {string} name the case's */
 function compileHtml({ where, errors, excerpt }, name) {
   const shown = excerpt.map(({ number, text, error }) => {
     const messages = error
@@ -200,7 +200,7 @@ function compileHtml({ where, errors, excerpt }, name) {
   return `<div class="compile"><p>${escape(title)}</p>${shown.length ? `<div class="source">${shown.join('')}</div>` : ''}</div>`;
 }
 
-/** @param {import('./case.js').CaseResult} r */
+/** @param {import('../case.js').CaseResult} r */
 function soundHtml(r) {
   const parts = [];
   if (r.sound) {
@@ -230,7 +230,7 @@ function spectrumSvg({ actual, reference }) {
 <text x="0" y="${h + 12}">20 Hz</text><text x="${w / 2}" y="${h + 12}" text-anchor="middle">660 Hz</text><text x="${w}" y="${h + 12}" text-anchor="end">22 kHz</text></svg>`;
 }
 
-/** @param {import('./case.js').CaseResult} r */
+/** @param {import('../case.js').CaseResult} r */
 function notesHtml(r) {
   const notes = r.notes.filter(
     (n) => !/^went without \(allowed\)|^skipped: /.test(n) && !(r.sound && n.startsWith('sound: RMS difference')),

@@ -3,8 +3,8 @@
 // junit.xml (junit.js); `html`, index.html with its images (html-report.js). On a terminal the
 // run also shows a progress line on stderr, kept below the case lines.
 
-import { io } from '../io.js';
-import { UsageError } from '../view-options.js';
+import { io } from '../../io.js';
+import { UsageError } from '../../view-options.js';
 
 const REPORTERS = /** @type {const} */ (['dot', 'junit', 'html']);
 
@@ -26,7 +26,7 @@ export function readReporters(given) {
   return new Set(/** @type {Reporter[]} */ (names));
 }
 
-/** A case's line: pass, FAIL or skip, its name, its time, what it said. @param {import('./case.js').CaseResult} result */
+/** A case's line: pass, FAIL or skip, its name, its time, what it said. @param {import('../case.js').CaseResult} result */
 export function dotLine(result) {
   if (result.skipped) return `skip  ${result.name.padEnd(28)} ${'-'.padStart(6)}     ${result.notes.join('; ').replace(/^skipped: /, '')}`;
   const said = [...result.failures, ...result.notes].join('; ');
@@ -64,7 +64,7 @@ export function progressLine(total) {
   timer?.unref();
   draw();
   return {
-    /** A case finished (in any order). @param {import('./case.js').CaseResult} result */
+    /** A case finished (in any order). @param {import('../case.js').CaseResult} result */
     settled(result) {
       done++;
       if (!result.ok) failed++;

@@ -17,7 +17,7 @@
 //   the next frame is late (twice the time between the last ones, and at least LATE_MS), the
 //   line says a frame is being drawn, and for how long, instead of the rate it no longer has.
 
-import { median } from '../../shared/stats.js';
+import { median } from '../../../shared/stats.js';
 
 const RATE_WINDOW_MS = 2000;
 const GRAPH_MAX_MS = 50; // the graph's top (20 fps); slower frames are clipped there
