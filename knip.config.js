@@ -23,7 +23,7 @@ export default {
     'tests/bench/baseline-launch.js',
   ],
   // System programs, not npm packages: ffmpeg makes the Theora fixture again by hand (node
-  // tests/theora-fixture.js; CI never runs it, the fixture is committed); dpkg-query is asked,
+  // tests/helpers/theora-fixture.js; CI never runs it, the fixture is committed); dpkg-query is asked,
   // best effort, for Mesa's version (src/cli/test/drawn-by.js).
   ignoreBinaries: ['ffmpeg', 'dpkg-query'],
   // The files that must all be reached. `!` marks what ships (the page, the command line), for

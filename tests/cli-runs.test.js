@@ -12,7 +12,7 @@ import { PNG } from 'pngjs';
 import { afterAll, beforeAll, describe, expect, test } from 'vitest';
 import { DEFAULT_DATE } from '../src/cli/view-options.js';
 import { builtPage } from '../src/engine/page-server.js';
-import { runShaderproof } from './shaderproof-child.js';
+import { runShaderproof } from './helpers/shaderproof-child.js';
 import { readPng } from './harness/images.js';
 
 let folder = '';

@@ -17,7 +17,7 @@ import { renderReference } from '../src/reference/render.js';
 import { composeImageShader } from '../src/shadertoy/header.js';
 import { builtPage } from '../src/engine/page-server.js';
 import { GOLDEN_DIR, REPO_ROOT, SHADER_FILE } from './harness/config.js';
-import { runShaderproof } from './shaderproof-child.js';
+import { runShaderproof } from './helpers/shaderproof-child.js';
 import { readPng, sameImage } from './harness/images.js';
 import { disconnect, openPage } from './harness/page.js';
 import { renderRawShader } from './harness/raw-webgl.js';

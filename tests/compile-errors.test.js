@@ -21,7 +21,7 @@ import { userLineOffset } from '../src/shadertoy/shader-errors.js';
 import { composeSoundShader } from '../src/shadertoy/sound.js';
 import { builtPage } from '../src/engine/page-server.js';
 import { REPO_ROOT } from './harness/config.js';
-import { sharePageAcrossTests, withPage } from './page-helpers.js';
+import { sharePageAcrossTests, withPage } from './helpers/page-helpers.js';
 
 sharePageAcrossTests();
 

@@ -18,9 +18,9 @@ import { builtPage } from '../src/engine/page-server.js';
 import { deserializeProject } from '../src/page/io/project-files.js';
 import { REPO_ROOT } from './harness/config.js';
 import { readPng } from './harness/images.js';
-import { editorTabs, exportJsonFile } from './page-multipass-helpers.js';
-import { pixel, readPixels, sharePageAcrossTests, withPage } from './page-helpers.js';
-import { cubeLookup } from './cube-lookup.js';
+import { editorTabs, exportJsonFile } from './helpers/page-multipass-helpers.js';
+import { pixel, readPixels, sharePageAcrossTests, withPage } from './helpers/page-helpers.js';
+import { cubeLookup } from './helpers/cube-lookup.js';
 
 sharePageAcrossTests();
 

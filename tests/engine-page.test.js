@@ -7,7 +7,7 @@
 
 import { afterAll, describe, expect, test } from 'vitest';
 import { disconnect } from './harness/page.js';
-import { info, readPixels, withPage } from './page-helpers.js';
+import { info, readPixels, withPage } from './helpers/page-helpers.js';
 
 afterAll(disconnect);
 

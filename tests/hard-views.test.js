@@ -1,4 +1,4 @@
-// Hard views (tests/hard-views.js): the page's float32 image against the float64 reference
+// Hard views (tests/helpers/hard-views.js): the page's float32 image against the float64 reference
 // with the same rays. Free of NaN, of shadow acne and of speckle means: almost no pixel is off
 // by more than 2/255 (acne or speckle would put whole areas there).
 import fs from 'node:fs';
@@ -9,8 +9,8 @@ import { SHADER_FILE } from './harness/config.js';
 import { assertNotBlank } from './harness/images.js';
 import { disconnect } from './harness/page.js';
 import { measureSameRay } from './harness/same-ray.js';
-import { viewControlProblems } from './views.js';
-import { HARD_VIEWS, MAX_OVER_2 } from './hard-views.js';
+import { viewControlProblems } from './helpers/views.js';
+import { HARD_VIEWS, MAX_OVER_2 } from './helpers/hard-views.js';
 
 afterAll(disconnect);
 

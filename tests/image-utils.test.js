@@ -17,7 +17,7 @@ import {
   writePng,
 } from './harness/images.js';
 import { mapShaderLog } from './harness/raw-webgl.js';
-import { MAX_DIFF_FRACTION, PIXEL_THRESHOLD } from './views.js';
+import { MAX_DIFF_FRACTION, PIXEL_THRESHOLD } from './helpers/views.js';
 const gradient = (x, y) => [(x * 2) % 200, (y * 2) % 200, 128];
 
 describe('blankReason', () => {

@@ -23,7 +23,7 @@ import { add, dot, length, normalize, scale, sub } from '../src/reference/vec3.j
 import { disconnect } from './harness/page.js';
 import { evaluateFloatShader } from './harness/raw-webgl.js';
 import { sequence } from './intersector-cases/rays.js';
-import { GLSL_CALLS, KINDS, f32, judge, reference, shaderSource } from './intersector-kinds.js';
+import { GLSL_CALLS, KINDS, f32, judge, reference, shaderSource } from './helpers/intersector-kinds.js';
 
 const PROPERTY_MAIN = `${GLSL_CALLS}
 uniform highp sampler2D rayTable;  // 5 texels a ray: (ro, kind), (rd, inward), params 0-3, params 4-7, (cos, azimuth)

@@ -14,7 +14,7 @@ import { describe, expect, test } from 'vitest';
 import { REPO_ROOT } from './harness/config.js';
 import { decodeWav } from '../src/shared/wav.js';
 import { mediaFiles, writeVolume } from '../src/shadertoy/media.js';
-import { pixel } from './page-helpers.js';
+import { pixel } from './helpers/page-helpers.js';
 import {
   CORNERS,
   CUBE_DIRECTIONS,
@@ -30,7 +30,7 @@ import {
   probeCode,
   shaderJson,
   writeMedia,
-} from './media-fixture.js';
+} from './helpers/media-fixture.js';
 
 const BIN = path.join(REPO_ROOT, 'bin', 'shaderproof.js');
 const run = promisify(execFile);

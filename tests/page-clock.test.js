@@ -10,8 +10,8 @@
 // when the frame-0 was lost: the frame under way landed after the rewind and counted as frame 0.
 
 import { afterAll, describe, expect, test } from 'vitest';
-import { allowClipboard, button, pasteIntoEditor, pixel, readPixels, withPage } from './page-helpers.js';
-import { dropFile, exportOf } from './page-multipass-helpers.js';
+import { allowClipboard, button, pasteIntoEditor, pixel, readPixels, withPage } from './helpers/page-helpers.js';
+import { dropFile, exportOf } from './helpers/page-multipass-helpers.js';
 import { disconnect } from './harness/page.js';
 
 afterAll(disconnect);

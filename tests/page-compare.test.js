@@ -12,9 +12,9 @@ import { formatImageError } from '../src/reference/error.js';
 import { SHADER_FILE } from './harness/config.js';
 import { disconnect } from './harness/page.js';
 import { measureSameRay } from './harness/same-ray.js';
-import { viewQuery } from './views.js';
-import { button, canvasBox, withPage, sharePageAcrossTests } from './page-helpers.js';
-import { exportOf } from './page-multipass-helpers.js';
+import { viewQuery } from './helpers/views.js';
+import { button, canvasBox, withPage, sharePageAcrossTests } from './helpers/page-helpers.js';
+import { exportOf } from './helpers/page-multipass-helpers.js';
 
 // not a test of loading the page: the tests share one, brought to each view by open()
 sharePageAcrossTests();

@@ -5,7 +5,7 @@
 import { afterAll, describe, expect, test } from 'vitest';
 import { assertNotBlank, differingPixels, sameImage } from './harness/images.js';
 import { disconnect } from './harness/page.js';
-import { button, editorText, info, overlayText, readPixels, typeInEditor, withPage } from './page-helpers.js';
+import { button, editorText, info, overlayText, readPixels, typeInEditor, withPage } from './helpers/page-helpers.js';
 
 afterAll(disconnect);
 

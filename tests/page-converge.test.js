@@ -9,7 +9,7 @@ import { formatImageError, imageError } from '../src/reference/error.js';
 import { renderReference } from '../src/reference/render.js';
 import { SHADER_FILE } from './harness/config.js';
 import { decodeRgba } from './harness/page.js';
-import { info, withPage, sharePageAcrossTests } from './page-helpers.js';
+import { info, withPage, sharePageAcrossTests } from './helpers/page-helpers.js';
 
 // not a test of loading the page: the tests share one, brought to each view by open()
 sharePageAcrossTests();

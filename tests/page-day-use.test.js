@@ -16,7 +16,7 @@ import {
   typeInEditor,
   withControl,
   withPage,
-} from './page-helpers.js';
+} from './helpers/page-helpers.js';
 
 afterAll(disconnect);
 

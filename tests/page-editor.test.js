@@ -20,7 +20,7 @@ import {
   waitForCursorLine,
   withControl,
   withPage,
-} from './page-helpers.js';
+} from './helpers/page-helpers.js';
 
 afterAll(disconnect);
 

@@ -8,7 +8,7 @@ import puppeteer from 'puppeteer-core';
 import { CHROME_ARGS } from '../src/engine/browser.js';
 import { findChrome } from '../src/engine/chrome-path.js';
 import { harnessContext } from './harness/page.js';
-import { button, info, nextFrame, openEditor, pixel, typeInEditor, withControl, withPage, withServedDir } from './page-helpers.js';
+import { button, info, nextFrame, openEditor, pixel, typeInEditor, withControl, withPage, withServedDir } from './helpers/page-helpers.js';
 import { SHORT_TIMEOUTS } from './harness/config.js';
 import fs from 'node:fs';
 import path from 'node:path';

@@ -12,7 +12,7 @@ import { SHORT_TIMEOUTS } from './harness/config.js';
 import { makeImage, writePng } from './harness/images.js';
 import { disconnect } from './harness/page.js';
 import { hangUrl, redirectUrl } from './harness/routes.js';
-import { info, overlayText, pixel, readPixels, solid, withPage, withServedDir } from './page-helpers.js';
+import { info, overlayText, pixel, readPixels, solid, withPage, withServedDir } from './helpers/page-helpers.js';
 
 afterAll(disconnect);
 

@@ -8,7 +8,7 @@
 
 import { afterAll, describe, expect, test } from 'vitest';
 import { disconnect } from './harness/page.js';
-import { withPage, sharePageAcrossTests } from './page-helpers.js';
+import { withPage, sharePageAcrossTests } from './helpers/page-helpers.js';
 
 // not a test of loading the page: the tests share one, brought to each view by open()
 sharePageAcrossTests();

@@ -10,8 +10,8 @@ import { afterAll, describe, expect, test } from 'vitest';
 import { referencePixel } from '../src/reference/render.js';
 import { SHADER_FILE } from './harness/config.js';
 import { disconnect } from './harness/page.js';
-import { button, canvasBox, info, readPixels, withPage } from './page-helpers.js';
-import { exportOf } from './page-multipass-helpers.js';
+import { button, canvasBox, info, readPixels, withPage } from './helpers/page-helpers.js';
+import { exportOf } from './helpers/page-multipass-helpers.js';
 
 afterAll(disconnect);
 

@@ -27,7 +27,7 @@ import {
   typeInEditor,
   withPage,
   withServedDir,
-} from './page-helpers.js';
+} from './helpers/page-helpers.js';
 import { captureDownloads } from './harness/downloads.js';
 
 afterAll(disconnect);

@@ -6,9 +6,9 @@
 import { describe, expect, test } from 'vitest';
 import { projectKey } from '../src/page/io/hang-guard.js';
 import { singlePass } from '../src/shadertoy/multipass.js';
-import { allowClipboard, button, editorText, info, pasteIntoEditor, solid, typeInEditor, withControl } from './page-helpers.js';
-import { withPage, withServedDir } from './page-helpers.js';
-import { writeFiles } from './page-multipass-helpers.js';
+import { allowClipboard, button, editorText, info, pasteIntoEditor, solid, typeInEditor, withControl } from './helpers/page-helpers.js';
+import { withPage, withServedDir } from './helpers/page-helpers.js';
+import { writeFiles } from './helpers/page-multipass-helpers.js';
 
 const SIZE = 'size=64x36&time=1';
 

@@ -8,7 +8,7 @@ import { REPO_ROOT, SHADER_FILE } from './harness/config.js';
 import { sameImage } from './harness/images.js';
 import { disconnect } from './harness/page.js';
 import { startWatchingServer } from './harness/page-server.js';
-import { info, overlayText, pixel, readPixels, solid, withPage, withServedDir } from './page-helpers.js';
+import { info, overlayText, pixel, readPixels, solid, withPage, withServedDir } from './helpers/page-helpers.js';
 
 afterAll(disconnect);
 

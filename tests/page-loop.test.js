@@ -8,7 +8,7 @@ import puppeteer from 'puppeteer-core';
 import { CHROME_ARGS } from '../src/engine/browser.js';
 import { findChrome } from '../src/engine/chrome-path.js';
 import { harnessContext } from './harness/page.js';
-import { pasteIntoEditor, withPage } from './page-helpers.js';
+import { pasteIntoEditor, withPage } from './helpers/page-helpers.js';
 import { SHORT_TIMEOUTS } from './harness/config.js';
 
 /** A shader that never finishes: the loop's exit depends on a sum that never gets there. */

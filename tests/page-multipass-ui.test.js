@@ -6,10 +6,18 @@
 import { afterAll, describe, expect, test } from 'vitest';
 import { disconnect } from './harness/page.js';
 import { fromShadertoyJson } from '../src/shadertoy/multipass-json.js';
-import { allowClipboard, button, EDITOR, editorText, errorMarkerLines, info, openEditor } from './page-helpers.js';
-import { overlayText, pasteIntoEditor, typeInEditor, waitForCursorLine, withControl, withPage, withServedDir } from './page-helpers.js';
-import { BUFFER_A, COMMON, IMAGE, WITH_MEDIA, exportOf } from './page-multipass-helpers.js'; // the shaders
-import { dropFile, editorTabs, exportJsonFile, loadNotes, showTab, writeFiles } from './page-multipass-helpers.js'; // the steps
+import { allowClipboard, button, EDITOR, editorText, errorMarkerLines, info, openEditor } from './helpers/page-helpers.js';
+import {
+  overlayText,
+  pasteIntoEditor,
+  typeInEditor,
+  waitForCursorLine,
+  withControl,
+  withPage,
+  withServedDir,
+} from './helpers/page-helpers.js';
+import { BUFFER_A, COMMON, IMAGE, WITH_MEDIA, exportOf } from './helpers/page-multipass-helpers.js'; // the shaders
+import { dropFile, editorTabs, exportJsonFile, loadNotes, showTab, writeFiles } from './helpers/page-multipass-helpers.js'; // the steps
 
 afterAll(disconnect);
 

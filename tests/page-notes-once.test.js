@@ -6,8 +6,8 @@
 import { afterAll, describe, expect, test } from 'vitest';
 import { sayOnce } from '../src/shared/said-once.js';
 import { disconnect } from './harness/page.js';
-import { withPage } from './page-helpers.js';
-import { loadNotes } from './page-multipass-helpers.js';
+import { withPage } from './helpers/page-helpers.js';
+import { loadNotes } from './helpers/page-multipass-helpers.js';
 
 afterAll(disconnect);
 

@@ -12,8 +12,8 @@ import path from 'node:path';
 import { afterAll, describe, expect, test } from 'vitest';
 import { disconnect } from './harness/page.js';
 import { sameImage } from './harness/images.js';
-import { dataAt, info, readPixels, withPage, withServedDir } from './page-helpers.js';
-import { exportOf } from './page-multipass-helpers.js';
+import { dataAt, info, readPixels, withPage, withServedDir } from './helpers/page-helpers.js';
+import { exportOf } from './helpers/page-multipass-helpers.js';
 
 afterAll(disconnect);
 

@@ -10,7 +10,7 @@ import { ALL_FORMATS, BufferSource, EncodedPacketSink, Input } from 'mediabunny'
 import { PNG } from 'pngjs';
 import { afterAll, describe, expect, test } from 'vitest';
 import { disconnect } from './harness/page.js';
-import { button, info, typeInEditor, withControl, withPage } from './page-helpers.js';
+import { button, info, typeInEditor, withControl, withPage } from './helpers/page-helpers.js';
 import { captureDownloads } from './harness/downloads.js';
 
 afterAll(disconnect);

@@ -6,8 +6,8 @@
 import { describe, expect, test } from 'vitest';
 import { openPage } from './harness/page.js';
 import { sameImage } from './harness/images.js';
-import { button, info, openEditor, overlayText, readPixels, recordReadouts, withPage } from './page-helpers.js';
-import { dropFile, loadNotes } from './page-multipass-helpers.js';
+import { button, info, openEditor, overlayText, readPixels, recordReadouts, withPage } from './helpers/page-helpers.js';
+import { dropFile, loadNotes } from './helpers/page-multipass-helpers.js';
 
 const SIZE = 'size=64x36&time=0';
 

@@ -19,7 +19,7 @@ import {
   pixel,
   readPixels,
   withPage,
-} from './page-helpers.js';
+} from './helpers/page-helpers.js';
 
 afterAll(disconnect);
 

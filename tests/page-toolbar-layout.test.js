@@ -9,8 +9,8 @@
 
 import { afterAll, describe, expect, test } from 'vitest';
 import { disconnect } from './harness/page.js';
-import { sharePageAcrossTests, withPage } from './page-helpers.js';
-import { dropFile } from './page-multipass-helpers.js';
+import { sharePageAcrossTests, withPage } from './helpers/page-helpers.js';
+import { dropFile } from './helpers/page-multipass-helpers.js';
 
 sharePageAcrossTests();
 afterAll(disconnect);

@@ -12,7 +12,7 @@ import fs from 'node:fs';
 import path from 'node:path';
 import { afterAll, describe, expect, test } from 'vitest';
 import { disconnect } from './harness/page.js';
-import { info, withPage, withServedDir } from './page-helpers.js';
+import { info, withPage, withServedDir } from './helpers/page-helpers.js';
 
 afterAll(disconnect);
 

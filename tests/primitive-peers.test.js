@@ -7,7 +7,7 @@
 
 import { afterAll, describe, expect, it } from 'vitest';
 import { disconnect } from './harness/page.js';
-import { caseScale, f32, reference, runCases, shaderSource } from './intersector-kinds.js';
+import { caseScale, f32, reference, runCases, shaderSource } from './helpers/intersector-kinds.js';
 import { PRIMITIVE_KINDS, judgeHardCases, withIqPeers } from './bench/primitive-peers.js';
 import { normalize } from '../src/reference/vec3.js';
 

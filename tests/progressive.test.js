@@ -18,7 +18,7 @@ import { imageError, formatImageError } from '../src/reference/error.js';
 import { renderReference } from '../src/reference/render.js';
 import { SHADER_FILE } from './harness/config.js';
 import { disconnect, decodeRgba } from './harness/page.js';
-import { composeModel, runPasses } from './multipass-runner.js';
+import { composeModel, runPasses } from './helpers/multipass-runner.js';
 
 afterAll(disconnect);
 

@@ -12,7 +12,7 @@ import { readPng } from '../src/engine/png.js';
 import { SHADER_FILE } from './harness/config.js';
 import { assertNotBlank, compareImages } from './harness/images.js';
 import { GOLDEN_CASES, closeGoldens, goldenSession, runGolden } from './harness/goldens.js';
-import { VIEWS, viewControlProblems } from './views.js';
+import { VIEWS, viewControlProblems } from './helpers/views.js';
 
 afterAll(closeGoldens);
 

@@ -8,7 +8,7 @@
 import { describe, expect, test } from 'vitest';
 import { composeImageShader, SHADERTOY_HEADER } from '../src/shadertoy/header.js';
 import { renderRawShader } from './harness/raw-webgl.js';
-import { sharePageAcrossTests, withPage } from './page-helpers.js';
+import { sharePageAcrossTests, withPage } from './helpers/page-helpers.js';
 
 sharePageAcrossTests();
 

@@ -11,7 +11,7 @@ import { SHADER_FILE, rel } from './harness/config.js';
 import { assertNotBlank, expectImagesMatch } from './harness/images.js';
 import { disconnect, renderView } from './harness/page.js';
 import { mapShaderLog, renderRawShader } from './harness/raw-webgl.js';
-import { VIEWS, viewSize } from './views.js';
+import { VIEWS, viewSize } from './helpers/views.js';
 
 afterAll(disconnect);
 

@@ -17,7 +17,7 @@ import { decodeWav, encodeWav } from '../src/shared/wav.js';
 import { rmsDifference, spectrumDifference } from '../src/cli/test/sound-compare.js';
 import { disconnect } from './harness/page.js';
 import { REPO_ROOT } from './harness/config.js';
-import { withPage } from './page-helpers.js';
+import { withPage } from './helpers/page-helpers.js';
 import { LEAD_SECONDS, PLAY_SAMPLES, blocksToPlay, driftAt, planPlayback, sampleAt } from '../src/page/sound/schedule.js';
 
 afterAll(disconnect);

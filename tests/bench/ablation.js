@@ -23,7 +23,7 @@ import { composeImageShader } from '../../src/shadertoy/header.js';
 import { REPO_ROOT, SHADER_FILE } from '../harness/config.js';
 import { rendererLabel } from '../../src/engine/browser.js';
 import { replaceMarkedSection } from '../scripts/readme-section.js';
-import { replaceFunction } from '../intersector-naive.js';
+import { replaceFunction } from '../helpers/intersector-naive.js';
 import { composePeer } from './peers/compose-peer.js';
 import { measureScript, pairedRatio } from './measure.js';
 import { CPU_RENDERERS, RENDERER_TITLES } from './renderer-set.js';

@@ -21,7 +21,7 @@ import fs from 'node:fs';
 import path from 'node:path';
 import { SHADERTOY_HEADER } from '../../src/shadertoy/header.js';
 import { median } from '../../src/shared/stats.js';
-import { K, shaderSource } from '../intersector-kinds.js';
+import { K, shaderSource } from '../helpers/intersector-kinds.js';
 import { REPO_ROOT } from '../harness/config.js';
 import { rendererLabel } from '../../src/engine/browser.js';
 import { withHarness } from '../harness/setup.js';

@@ -1,5 +1,5 @@
 // Images, in plain Node: PNG files, the blank-image check, comparison with the suite's tolerance
-// (tests/views.js), and the one way a test says that two images must match: expectImagesMatch,
+// (tests/helpers/views.js), and the one way a test says that two images must match: expectImagesMatch,
 // which on a failure writes actual, expected and diff PNGs to tests/output/ and names them.
 // An image is { width, height, data } with RGBA8 rows top to bottom.
 
@@ -8,7 +8,7 @@ import path from 'node:path';
 import { readPng, writePng } from '../../src/engine/png.js';
 import { compareImages as compareWith } from '../../src/engine/compare.js';
 import { OUTPUT_DIR, rel } from './config.js';
-import { INCLUDE_AA, MAX_DIFF_FRACTION, PIXEL_THRESHOLD } from '../views.js';
+import { INCLUDE_AA, MAX_DIFF_FRACTION, PIXEL_THRESHOLD } from '../helpers/views.js';
 
 export { readPng, writePng };
 

@@ -7,7 +7,7 @@ import fs from 'node:fs';
 import puppeteer from 'puppeteer-core';
 import { fromBase64 } from '../../src/shared/pixels.js';
 import { CLOSE_TIMEOUT_MS, SCRIPT_WAIT_TIMEOUT_MS, WAIT_TIMEOUT_MS, closeBrowser, withTimeout } from '../../src/engine/watch.js';
-import { PAGE_PARAMS, viewQuery, viewSize } from '../views.js';
+import { PAGE_PARAMS, viewQuery, viewSize } from '../helpers/views.js';
 import { drawView } from '../../src/engine/view.js';
 import { engineClient } from '../../src/engine/client.js';
 import { openPage as openEnginePage } from '../../src/engine/page-open.js';
@@ -128,7 +128,7 @@ async function closeViewPage() {
 }
 
 /**
- * Brings the page to a view (tests/views.js: a fresh load for the first view of a test file,
+ * Brings the page to a view (tests/helpers/views.js: a fresh load for the first view of a test file,
  * window.raytracer.open() after), waits until its first frame, and reads one
  * rendered frame. Throws if the page reports a WebGL/compile error, logs a console error or
  * throws, renders a frame of the wrong size, or does not report the view's controls and time as

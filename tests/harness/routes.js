@@ -12,7 +12,7 @@
 // server: page-server.js); vite.config.js and `npm run dev` have none.
 //
 // The same plugin serves files the tests write into public/ while the server runs (withServedDir
-// in tests/page-helpers.js) as soon as they are on disk. Vite serves public/ from a list of its
+// in tests/helpers/page-helpers.js) as soon as they are on disk. Vite serves public/ from a list of its
 // files made at start and kept up to date by its file watcher; a file written just before the
 // page asks for it can miss that list (the watcher's event comes later, the more so under load),
 // and the page then got the index page instead (measured: two failures in three full runs).

@@ -11,7 +11,7 @@
 
 import { imageError } from '../../src/reference/error.js';
 import { EXTRA_SAMPLES_VIEW, extraSampleMask } from '../../src/raytracer/extra-samples.js';
-import { referenceView } from '../hard-views.js';
+import { referenceView } from '../helpers/hard-views.js';
 import { renderView } from './page.js';
 import { renderReference } from '../../src/reference/render.js';
 
@@ -21,7 +21,7 @@ const isAdaptive = (params) => params.ADAPTIVE_AA !== 0 && params.SAMPLES !== 1;
 /**
  * Renders `view` in the page and measures it against the same-ray float64 reference.
  * @param {string} source the shader's text (the reference reads its controls and constants)
- * @param {{name: string, params: Record<string, any>}} view (tests/views.js)
+ * @param {{name: string, params: Record<string, any>}} view (tests/helpers/views.js)
  * @returns {Promise<{image: Awaited<ReturnType<typeof renderView>>, error: ReturnType<typeof imageError>, mask: Uint8Array | null, share: number | null}>}
  *   the page's image, its error (error.js's figures), and for adaptive anti-aliasing the
  *   pixels with extra samples and their share

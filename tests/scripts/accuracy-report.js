@@ -1,4 +1,4 @@
-// The accuracy table: every hard view (tests/hard-views.js) and each scene's default view, rendered by the
+// The accuracy table: every hard view (tests/helpers/hard-views.js) and each scene's default view, rendered by the
 // page in headless Chromium and compared with the float64 reference twice: with the same rays
 // (arithmetic error alone) and converged (64 jittered samples per pixel, texture point-sampled:
 // the total error, aliasing included). Each view is measured at one sample per pixel and with
@@ -16,8 +16,8 @@ import { renderReferenceParallel } from '../harness/reference-threads.js';
 import { measureSameRay } from '../harness/same-ray.js';
 import { rendererLabel } from '../../src/engine/browser.js';
 import { withHarness } from '../harness/setup.js';
-import { HARD_VIEWS, referenceView } from '../hard-views.js';
-import { DEFAULT_SIZE, viewSize } from '../views.js';
+import { HARD_VIEWS, referenceView } from '../helpers/hard-views.js';
+import { DEFAULT_SIZE, viewSize } from '../helpers/views.js';
 import { replaceMarkedSection } from './readme-section.js';
 
 const CONVERGED_SAMPLES_PER_AXIS = 8;

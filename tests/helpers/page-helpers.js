@@ -5,8 +5,8 @@
 import fs from 'node:fs';
 import path from 'node:path';
 import { afterAll, expect } from 'vitest';
-import { REPO_ROOT } from './harness/config.js';
-import { decodeRgba, openPage } from './harness/page.js';
+import { REPO_ROOT } from '../harness/config.js';
+import { decodeRgba, openPage } from '../harness/page.js';
 
 export const EXAMPLES_DIR = path.join(REPO_ROOT, 'public', 'examples');
 export const exampleSource = (name) => fs.readFileSync(path.join(EXAMPLES_DIR, `${name}.glsl`), 'utf8');
@@ -35,7 +35,7 @@ export async function withServedDir(prefix, body) {
  * @property {import('puppeteer-core').Page} page
  * @property {string[]} errors console errors and page errors
  * @property {string[]} warnings console warnings
- * @property {import('./globals.js').HarnessContext} context
+ * @property {import('../globals.js').HarnessContext} context
  * @property {(query: string, options?: {expectReady?: boolean, base?: string}) => Promise<void>} goto
  *   loads the page at `query` ("?shader=...") and waits for its first frame (or its failure)
  */
@@ -82,7 +82,7 @@ async function newPage({ deterministic, timeouts }) {
  * `deterministic: false` leaves the page's clocks real (the watchdog's tests need time to pass
  * while no animation frame is asked for); `timeouts` shortens the page's (harness/config.js's
  * SHORT_TIMEOUTS).
- * @param {{viewport?: import('puppeteer-core').Viewport, beforeLoad?: (page: import('puppeteer-core').Page) => Promise<unknown>, deterministic?: boolean, timeouts?: Partial<import('../src/shared/timeouts.js').Timeouts>}} [options]
+ * @param {{viewport?: import('puppeteer-core').Viewport, beforeLoad?: (page: import('puppeteer-core').Page) => Promise<unknown>, deterministic?: boolean, timeouts?: Partial<import('../../src/shared/timeouts.js').Timeouts>}} [options]
  */
 export async function withPage(body, { viewport, beforeLoad, deterministic = true, timeouts } = {}) {
   // a page set up otherwise before it loads is a page of its own, as without sharing

@@ -2,7 +2,7 @@
 // no ffmpeg), what each frame holds, and the shaders that read it back. Made as the site's .ogv
 // files are, Theora video (4:2:0) with Vorbis sound, by ffmpeg's libtheora and libvorbis:
 //
-//   node tests/theora-fixture.js     (needs ffmpeg; writes the file again from FRAMES below)
+//   node tests/helpers/theora-fixture.js     (needs ffmpeg; writes the file again from FRAMES below)
 //
 // Six frames at 10 fps, 40 × 48 pixels (a 48 × 48 Theora frame with a 40-wide picture inside, so
 // the crop is read), a keyframe every third frame (frames 0 and 3: frames 1, 2, 4, 5 are inter
@@ -17,7 +17,7 @@ import path from 'node:path';
 import { fileURLToPath, pathToFileURL } from 'node:url';
 import { glslVec, input, probeCode, shaderJson } from './media-fixture.js';
 
-export const THEORA_FILE = fileURLToPath(new URL('./fixtures/theora-colours.ogv', import.meta.url));
+export const THEORA_FILE = fileURLToPath(new URL('../fixtures/theora-colours.ogv', import.meta.url));
 
 export const VIDEO = { width: 40, height: 48, fps: 10, frames: 6, keyframeEvery: 3 };
 /** The patches: columns 16–31, rows 0–15 (top) and 32–47 (bottom). */

@@ -8,7 +8,7 @@ import fs from 'node:fs';
 import path from 'node:path';
 import { PNG } from 'pngjs';
 import { expect } from 'vitest';
-import { mediaFiles, writeVolume } from '../src/shadertoy/media.js';
+import { mediaFiles, writeVolume } from '../../src/shadertoy/media.js';
 import { pixel } from './page-helpers.js';
 import { MUSIC_READER } from './music-fixture.js';
 import { cubeLookup } from './cube-lookup.js';

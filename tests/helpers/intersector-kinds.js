@@ -6,12 +6,12 @@
 // cylinder (pa, pb, radius), torus (center, axis, R, r).
 
 import fs from 'node:fs';
-import { SHADERTOY_HEADER } from '../src/shadertoy/header.js';
-import { intersectPlane, intersectSphere, intersectBox, intersectCone } from '../src/reference/intersectors.js';
-import { intersectCylinder } from '../src/reference/cylinder.js';
-import { intersectTorus } from '../src/reference/torus.js';
-import { SHADER_FILE } from './harness/config.js';
-import { evaluateFloatShader } from './harness/raw-webgl.js';
+import { SHADERTOY_HEADER } from '../../src/shadertoy/header.js';
+import { intersectPlane, intersectSphere, intersectBox, intersectCone } from '../../src/reference/intersectors.js';
+import { intersectCylinder } from '../../src/reference/cylinder.js';
+import { intersectTorus } from '../../src/reference/torus.js';
+import { SHADER_FILE } from '../harness/config.js';
+import { evaluateFloatShader } from '../harness/raw-webgl.js';
 
 // ---- tolerances ---------------------------------------------------------------------------------
 // u = 2^-24 is float32's unit roundoff: one correctly rounded operation on numbers of size S is

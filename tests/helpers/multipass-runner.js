@@ -7,14 +7,14 @@
 // node tests check composed passes, the schedule and the progressive shader on a real GPU
 // (SwiftShader) before the page can run them.
 
-import { openRawPage } from './harness/raw-webgl.js';
-import { composePassShader } from '../src/shadertoy/header.js';
-import { channelTypes, frameSchedule } from '../src/shadertoy/multipass.js';
+import { openRawPage } from '../harness/raw-webgl.js';
+import { composePassShader } from '../../src/shadertoy/header.js';
+import { channelTypes, frameSchedule } from '../../src/shadertoy/multipass.js';
 
 /**
  * Composes every pass of a model in Shadertoy's header (no host block unless given) and lists
  * them in render order with the buffer each channel reads (null for none).
- * @param {import('../src/shadertoy/multipass.js').MultipassShader} model
+ * @param {import('../../src/shadertoy/multipass.js').MultipassShader} model
  * @param {{hostBlock?: string}} [options]
  */
 export function composeModel(model, { hostBlock = '' } = {}) {

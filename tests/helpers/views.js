@@ -11,8 +11,8 @@
 
 import fs from 'node:fs';
 import path from 'node:path';
-import { coerceControlValue } from '../src/shadertoy/controls.js';
-import { GOLDEN_DIR } from './harness/config.js';
+import { coerceControlValue } from '../../src/shadertoy/controls.js';
+import { GOLDEN_DIR } from '../harness/config.js';
 
 /** The canvas size of a view that gives none: the render views' and the hard views' (hard-views.js). */
 export const DEFAULT_SIZE = [320, 180];

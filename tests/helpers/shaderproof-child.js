@@ -4,7 +4,7 @@
 import { execFile } from 'node:child_process';
 import path from 'node:path';
 import { promisify } from 'node:util';
-import { REPO_ROOT } from './harness/config.js';
+import { REPO_ROOT } from '../harness/config.js';
 
 const run = promisify(execFile);
 

@@ -1,6 +1,6 @@
 // Hard views, as data: each is rendered by the real page (float32 on SwiftShader) and by the
 // float64 reference (src/reference/render.js) with the same rays, and compared with the error
-// module (src/reference/error.js). Parameters are the page's URL contract (tests/views.js).
+// module (src/reference/error.js). Parameters are the page's URL contract (tests/helpers/views.js).
 //
 // MAX_OVER_2: at most 0.01% of pixels may be off by more than 2/255 against the same-ray
 // reference. With identical rays, what is left is float32 arithmetic: a ray that grazes a
@@ -18,7 +18,7 @@ export const MAX_OVER_2 = 1e-4;
  * @typedef {object} HardView
  * @property {string} name
  * @property {string} what what makes it hard
- * @property {Record<string, any>} params the page's URL parameters (tests/views.js)
+ * @property {Record<string, any>} params the page's URL parameters (tests/helpers/views.js)
  * @property {[number, number]} [size] the canvas size (default: DEFAULT_SIZE)
  * @property {boolean} [uniform] a one-colour picture is right for it (not checked for blankness)
  * @property {number} [maxOver2] a bound raised above MAX_OVER_2, with the reason beside it
