@@ -285,13 +285,13 @@ describe('shaderproof, installed from its tarball', () => {
       const { page } = await openPage();
       try {
         await page.goto(`${url}&size=32x18&time=0`, { waitUntil: 'load' });
-        await page.waitForFunction(() => window.raytracer);
-        await page.evaluate(() => window.raytracer.ready);
-        const before = await page.evaluate(() => window.raytracer.info().compiled);
-        expect(await page.evaluate(() => window.raytracer.info().fileName)).toBe('live.glsl');
+        await page.waitForFunction(() => window.shaderEngine);
+        await page.evaluate(() => window.shaderEngine.ready);
+        const before = await page.evaluate(() => window.shaderEngine.info().compiled);
+        expect(await page.evaluate(() => window.shaderEngine.info().fileName)).toBe('live.glsl');
         write('live.glsl', WAVES.replace('vec4(uv,', 'vec4(1.0 - uv,'));
-        await page.waitForFunction((n) => window.raytracer.info().compiled > n, { polling: 100, timeout: 20_000 }, before);
-        expect(await page.evaluate(() => window.raytracer.editorSource())).toContain('1.0 - uv');
+        await page.waitForFunction((n) => window.shaderEngine.info().compiled > n, { polling: 100, timeout: 20_000 }, before);
+        expect(await page.evaluate(() => window.shaderEngine.editorSource())).toContain('1.0 - uv');
       } finally {
         await page.close();
       }

@@ -33,7 +33,7 @@ describe('the engine client is the one way into the page', () => {
     // a call of page.evaluate, evaluateOnNewDocument or evaluateHandle, on any object
     ['runs code on a page', /\.evaluate(OnNewDocument|Handle)?\s*\(/, sources('src'), ['src/engine/client.js']],
     // a DOM lookup, an id or selector of the page, or a data- attribute: what the page says comes
-    // back as data (window.raytracer notes(), hang(), info(); a page that does not answer, which
+    // back as data (window.shaderEngine notes(), hang(), info(); a page that does not answer, which
     // may have no hook yet, its window.pageMarks). The test report's HTML (html-report.js,
     // report-page.js) is the command line's own page, not the engine's.
     [
@@ -53,7 +53,7 @@ describe('the engine client is the one way into the page', () => {
 });
 
 it('both pages start their app in one place (start-page.js)', () => {
-  expect(matching(sources('src/page'), /RaytracerApp\.start\s*\(/)).toEqual(['src/page/start-page.js']);
+  expect(matching(sources('src/page'), /ShaderApp\.start\s*\(/)).toEqual(['src/page/start-page.js']);
 });
 
 // ---- the engine page loads no widget and no raytracer (issue 46) ---------------------------
@@ -179,7 +179,7 @@ describe("a page that could not start has the hook's every method", () => {
     vi.stubGlobal('document', { documentElement: { dataset: {} } });
     try {
       const hook = /** @type {Record<string, any>} */ (installFailedHook(error, Hook));
-      expect(/** @type {any} */ (window).raytracer).toBe(hook);
+      expect(/** @type {any} */ (window).shaderEngine).toBe(hook);
       expect(Object.keys(hook).sort()).toEqual([...hookMethods(Hook), 'ready'].sort());
       await expect(hook.ready).rejects.toBe(error);
       await expect(hook.renderSound()).rejects.toBe(error); // a method the hand-kept list once lacked

@@ -33,7 +33,7 @@ const status = (page) =>
 /** What `ready` came to: 'ok', or its error's message. @param {import('puppeteer-core').Page} page */
 const readyOutcome = (page) =>
   page.evaluate(() =>
-    window.raytracer.ready.then(
+    window.shaderEngine.ready.then(
       () => 'ok',
       (error) => String(error?.message ?? error),
     ),
@@ -51,11 +51,11 @@ describe('the engine page', () => {
       expect(loaded.some((name) => name.startsWith('engine-'))).toBe(true);
       // nothing of the interactive page or the raytracer: main.js's bundle, the raytracer's text or its convergence
       expect(loaded.filter((name) => /^(main|convergence)-|raytrace/.test(name))).toEqual([]);
-      expect(await page.evaluate(() => typeof (/** @type {any} */ (window.raytracer).inspect))).toBe('undefined');
+      expect(await page.evaluate(() => typeof (/** @type {any} */ (window.shaderEngine).inspect))).toBe('undefined');
 
       // the raytracer as the command line serves it (a ?shader= file), converged as --converge does
-      await page.evaluate(() => window.raytracer.open('?shader=shaders/raytrace.glsl&size=16x9&time=0&SAMPLES=1&BOUNCES=0'));
-      await page.evaluate(() => window.raytracer.setConverging(true, { frames: 2 }));
+      await page.evaluate(() => window.shaderEngine.open('?shader=shaders/raytrace.glsl&size=16x9&time=0&SAMPLES=1&BOUNCES=0'));
+      await page.evaluate(() => window.shaderEngine.setConverging(true, { frames: 2 }));
       expect((await info(page)).converging).toBe(true);
       expect((await scripts(page)).filter((name) => name.startsWith('convergence-'))).toHaveLength(1);
       expect((await scripts(page)).filter((name) => name.startsWith('main-'))).toEqual([]);
@@ -78,10 +78,10 @@ describe('the engine page', () => {
   test('a shader that does not compile is said in one line, and comes back as data', async () => {
     await withPage(async ({ page, goto }) => {
       await goto('engine.html?size=8x4&time=0');
-      const result = await page.evaluate(() => window.raytracer.setSource('void mainImage(out vec4 c, in vec2 f) { c = nope; }'));
+      const result = await page.evaluate(() => window.shaderEngine.setSource('void mainImage(out vec4 c, in vec2 f) { c = nope; }'));
       expect(result.ok).toBe(false);
       expect(await status(page)).toMatch(/ did not compile: .*nope/);
-      await page.evaluate(() => window.raytracer.setSource('void mainImage(out vec4 c, in vec2 f) { c = vec4(1.0); }'));
+      await page.evaluate(() => window.shaderEngine.setSource('void mainImage(out vec4 c, in vec2 f) { c = vec4(1.0); }'));
       expect(await status(page)).toBe(null);
     }, OWN_PAGE);
   });

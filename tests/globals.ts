@@ -4,15 +4,15 @@
 // file, not a .d.ts, so that skipLibCheck (jsconfig.json) does not skip it: a broken import()
 // here is an error. JSDoc reaches its types as import('./globals.js').
 
-/** window.raytracer.info(): see src/page/hook/engine-state.js. */
-export type RaytracerInfo = ReturnType<RaytracerHook['info']>;
+/** window.shaderEngine.info(): see src/page/hook/engine-state.js. */
+export type HookInfo = ReturnType<WindowHook['info']>;
 
 /**
- * window.raytracer: the page's hook, its type the hook's class, in src/ (the engine's,
+ * window.shaderEngine: the page's hook, its type the hook's class, in src/ (the engine's,
  * src/page/hook/engine-hook.js, with the interactive page's methods: page-hook.js). The tests
  * drive both pages; the command line reads the engine's alone (src/engine/client.js, HookedWindow).
  */
-type RaytracerHook = import('../src/page/hook/page-hook.js').PageHook;
+type WindowHook = import('../src/page/hook/page-hook.js').PageHook;
 
 /** Whether T is `any` (what an untyped parameter of a JavaScript function is). */
 type IsAny<T> = 0 extends 1 & T ? true : false;
@@ -27,7 +27,7 @@ type Typed<Untyped extends never> = Untyped;
  * names itself in the error here (npm run typecheck). The hook is the command line's contract
  * with the page.
  */
-type HookParametersTyped = Typed<UntypedMethods<RaytracerHook>>;
+type HookParametersTyped = Typed<UntypedMethods<WindowHook>>;
 
 /** What the pixel inspector read at a pixel. */
 export type Readout = import('../src/page/inspect/inspector.js').Readout;
@@ -53,7 +53,7 @@ declare global {
   // Each of these exists only on its own page (or after the test sets it): read them there.
   interface Window {
     /** The page's hook (src/page/hook/: engine-hook.js, and page-hook.js on the interactive page). */
-    raytracer: RaytracerHook;
+    shaderEngine: WindowHook;
     /** The longest gap between 10 ms timer ticks (tests/page-heavy.test.js). */
     __longestGap: number;
     /** The raw WebGL2 page's functions (tests/harness/raw-webgl-page.js). */
@@ -63,11 +63,11 @@ declare global {
     /** Set by the benchmark's timer (tests/bench/timer.js). */
     __benchmark: BenchmarkPage;
     /** Set by page-helpers.js's nextFrame(): the frame it waits for. */
-    __nextFrame: ReturnType<RaytracerHook['nextFrame']>;
+    __nextFrame: ReturnType<WindowHook['nextFrame']>;
     /** Set by page-heavy.test.js's compile test: hold back the next compiling band's messages this long. */
     __holdCompileMs: number;
     /** Set by the first-pin test (tests/page-inspector.test.js): the complete readout to come. */
-    __complete: ReturnType<RaytracerHook['inspect']>;
+    __complete: ReturnType<WindowHook['inspect']>;
     /** Set by the lost-context test (tests/page-lifecycle.test.js). */
     /** Set by the file-watching tests (tests/page-lifecycle.test.js): still true if the page did not reload. */
     __sameDocument: boolean;

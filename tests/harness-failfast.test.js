@@ -77,7 +77,7 @@ async function settle(promise) {
 /** A page as the real one looks when it is stuck: frame 7 drawn, an error, a message (its marks, page-marks.js), `ready` never settling. */
 const STUCK_PAGE = `<!doctype html><html><body><canvas></canvas>
 <script>window.pageMarks = { frame: 7, error: 'shader: boom', context: null, hung: null, status: 'Compile error on line 3' };
-window.raytracer = { ready: new Promise(() => {}), info: () => ({ fileName: 'stuck.glsl', time: 1.5, playing: false }) };</script>`;
+window.shaderEngine = { ready: new Promise(() => {}), info: () => ({ fileName: 'stuck.glsl', time: 1.5, playing: false }) };</script>`;
 
 /** A fresh page answers. */
 async function expectFreshPage() {
@@ -97,7 +97,7 @@ describe('every wait on a page ends, and says why', () => {
     try {
       await page.goto(`data:text/html,${encodeURIComponent(STUCK_PAGE)}`);
       for (const wait of [
-        page.evaluate(() => window.raytracer.ready),
+        page.evaluate(() => window.shaderEngine.ready),
         page.waitForFunction(() => document.title === 'never', { polling: 100 }),
       ]) {
         const { error, stillWaiting, ms } = await settle(wait);

@@ -49,7 +49,7 @@ describe('moving channels: video and music, against what the test computes', () 
           // the video, made by the page's recorder: frame i is grey i·40
           await goto(`?shader=/${base}/grey.glsl&size=8x8&time=0`);
           const recording = await page.evaluate(
-            (o) => window.raytracer.record({ format: 'webm', frames: o.frames, fps: o.fps, width: 8, height: 8 }),
+            (o) => window.shaderEngine.record({ format: 'webm', frames: o.frames, fps: o.fps, width: 8, height: 8 }),
             VIDEO,
           );
           fs.writeFileSync(path.join(dir, 'clip.webm'), Buffer.from(recording.data, 'base64'));
@@ -57,7 +57,7 @@ describe('moving channels: video and music, against what the test computes', () 
 
           await goto(`?shader=/${base}/video-reader.glsl&size=8x8&time=0&iChannel0=/${base}/clip.webm`);
           for (const t of [0, 0.05, 0.15, 0.35, 0.59, 0.65, 1.25]) {
-            await page.evaluate((s) => window.raytracer.setTime(s), t);
+            await page.evaluate((s) => window.shaderEngine.setTime(s), t);
             const [r, g, b] = pixel(await readPixels(page), 4, 4);
             const { index, local } = videoAt(t);
             expect(Math.abs(r - index * VIDEO.step), `iTime ${t}: grey ${r} is frame ${index}'s ${index * VIDEO.step}`).toBeLessThanOrEqual(
@@ -69,13 +69,13 @@ describe('moving channels: video and music, against what the test computes', () 
 
           await goto(`?shader=/${base}/music-reader.glsl&size=512x2&time=0&iChannel0=/${base}/tone.wav`);
           for (const t of [0.8, 1.9]) {
-            await page.evaluate((s) => window.raytracer.setTime(s), t);
+            await page.evaluate((s) => window.shaderEngine.setTime(s), t);
             checkMusic(await readPixels(page), samples, t, `page, iTime ${t}`);
           }
           // playing (heard where the browser lets it start), then paused: frames go on, nothing fails
           await goto(`?shader=/${base}/music-reader.glsl&size=512x2&iChannel0=/${base}/tone.wav`);
-          for (let i = 0; i < 3; i++) await page.evaluate(() => window.raytracer.nextFrame());
-          await page.evaluate(() => window.raytracer.pause());
+          for (let i = 0; i < 3; i++) await page.evaluate(() => window.shaderEngine.nextFrame());
+          await page.evaluate(() => window.shaderEngine.pause());
           expect(errors).toEqual([]);
         });
         fs.copyFileSync(path.join(dir, 'tone.wav'), path.join(folder, 'tone.wav'));
@@ -146,7 +146,7 @@ describe('moving channels: video and music, against what the test computes', () 
           const outcome = await page.evaluate(
             (s) =>
               Promise.race([
-                window.raytracer.setChannel(0, s).then(
+                window.shaderEngine.setChannel(0, s).then(
                   () => 'loaded',
                   (e) => String(e.message),
                 ),
@@ -203,10 +203,10 @@ describe('moving channels: video and music, against what the test computes', () 
         try {
           const page = await browser.newPage();
           await page.goto(`${context.baseUrl}/?shader=/${base}/size.glsl&size=8x8&time=0`, { waitUntil: 'load' });
-          await page.waitForFunction(() => window.raytracer || document.documentElement.dataset.error, { polling: 50, timeout: 20_000 });
+          await page.waitForFunction(() => window.shaderEngine || document.documentElement.dataset.error, { polling: 50, timeout: 20_000 });
           expect(
             await page.evaluate(() =>
-              window.raytracer.ready.then(
+              window.shaderEngine.ready.then(
                 () => 'ok',
                 (e) => String(e?.message ?? e),
               ),
@@ -221,14 +221,14 @@ describe('moving channels: video and music, against what the test computes', () 
           for (const [source, width, height] of devices) {
             const outcome = await page.evaluate(
               (s) =>
-                window.raytracer.setChannel(0, s).then(
+                window.shaderEngine.setChannel(0, s).then(
                   () => 'ok',
                   (e) => e.message,
                 ),
               source,
             );
             expect(outcome, source).toBe('ok');
-            const r = await page.evaluate(() => window.raytracer.readPixels());
+            const r = await page.evaluate(() => window.shaderEngine.readPixels());
             const [red, green] = Buffer.from(r.data, 'base64');
             expect([red, green], `${source}: iChannelResolution.xy / 2048`).toEqual([
               Math.round((width / 2048) * 255),

@@ -105,13 +105,13 @@ describe('the site’s media from a folder, against what the test computes', () 
         page.on('request', count);
         const edited = JSON.parse(json);
         edited.Shader.renderpass[0].code += '// an edit\n';
-        const result = await page.evaluate((text) => window.raytracer.setProject(text), JSON.stringify(edited));
+        const result = await page.evaluate((text) => window.shaderEngine.setProject(text), JSON.stringify(edited));
         expect(result.ok, result.error).toBe(true);
         checkRow(await readPixels(page), cases(), 'page, after an edit');
-        await page.evaluate(() => window.raytracer.loseContext());
-        await page.waitForFunction(() => window.raytracer.info().contextLost);
-        await page.evaluate(() => window.raytracer.restoreContext());
-        await page.waitForFunction(() => !window.raytracer.info().contextLost);
+        await page.evaluate(() => window.shaderEngine.loseContext());
+        await page.waitForFunction(() => window.shaderEngine.info().contextLost);
+        await page.evaluate(() => window.shaderEngine.restoreContext());
+        await page.waitForFunction(() => !window.shaderEngine.info().contextLost);
         checkRow(await readPixels(page), cases(), 'page, after a lost and restored context');
         page.off('request', count);
         expect(fetched, 'no media fetched again').toEqual([]);
@@ -119,7 +119,7 @@ describe('the site’s media from a folder, against what the test computes', () 
         await goto(`?shader=/${base}/music.json&size=512x2&time=${MUSIC_TIME}&media=/${base}/media/`);
         checkMusic(await readPixels(page), samples, MUSIC_TIME, 'page, music a buffer pass names');
         // the page's "Copy link" keeps the media folder, so the link draws the same
-        expect(await page.evaluate(() => window.raytracer.shareUrl())).toContain(`media=/${base}/media/`);
+        expect(await page.evaluate(() => window.shaderEngine.shareUrl())).toContain(`media=/${base}/media/`);
         expect(errors).toEqual([]);
       });
     });

@@ -38,24 +38,24 @@ const FRAME_0_SHADER = exportOf({ name: 'Frame zero', common: '', bufferA: SETS_
 const FRAME_0_JSON = JSON.stringify(FRAME_0_SHADER);
 
 /** The clock as the next frame gets it: {frame: its iFrame, time: its iTime}. */
-const clock = (page) => page.evaluate(() => ({ frame: window.raytracer.info().iFrame, time: window.raytracer.info().time }));
+const clock = (page) => page.evaluate(() => ({ frame: window.shaderEngine.info().iFrame, time: window.shaderEngine.info().time }));
 
 /** Waits until the page has drawn `n` more frames by itself (it plays). */
 async function moreFrames(page, n = 3) {
-  const start = await page.evaluate(() => window.raytracer.info().frame);
-  await page.waitForFunction((until) => window.raytracer.info().frame >= until, { polling: 20 }, start + n);
+  const start = await page.evaluate(() => window.shaderEngine.info().frame);
+  await page.waitForFunction((until) => window.shaderEngine.info().frame >= until, { polling: 20 }, start + n);
 }
 
 /** Does `arrive(page)`, and waits until a shader more has compiled. */
 async function compiledAfter(page, arrive) {
-  const before = await page.evaluate(() => window.raytracer.info().compiled);
+  const before = await page.evaluate(() => window.shaderEngine.info().compiled);
   await arrive(page);
-  await page.waitForFunction((n) => window.raytracer.info().compiled > n, { polling: 20 }, before);
+  await page.waitForFunction((n) => window.shaderEngine.info().compiled > n, { polling: 20 }, before);
 }
 
 /** How each way of bringing the shader in is done, on a page already running another one. @type {Array<[string, (page: import('puppeteer-core').Page) => Promise<unknown>]>} */
 const ARRIVALS = [
-  ['setProject()', (page) => page.evaluate((json) => window.raytracer.setProject(json), FRAME_0_JSON)],
+  ['setProject()', (page) => page.evaluate((json) => window.shaderEngine.setProject(json), FRAME_0_JSON)],
   ['a dropped .json file', (page) => dropFile(page, 'frame-zero.json', FRAME_0_JSON, 'application/json')],
   ['a paste into the editor', (page) => pasteIntoEditor(page, FRAME_0_JSON)],
 ];
@@ -78,9 +78,9 @@ describe('a shader loaded in place of another starts at iFrame 0 with cleared bu
       await readPixels(page); // a frame or two of the paused page: iFrame is past 0
       await readPixels(page);
       expect((await clock(page)).frame).toBeGreaterThan(0);
-      await page.evaluate(() => window.raytracer.setTime(3));
+      await page.evaluate(() => window.shaderEngine.setTime(3));
       await compiledAfter(page, (p) => dropFile(p, 'frame-zero.json', FRAME_0_JSON, 'application/json'));
-      await page.waitForFunction(() => window.raytracer.info().iFrame === 1, { polling: 20 });
+      await page.waitForFunction(() => window.shaderEngine.info().iFrame === 1, { polling: 20 });
       expect(await clock(page)).toEqual({ frame: 1, time: 0 }); // frame 0 drawn at iTime 0, paused
       expect(pixel(await readPixels(page), 10, 10)).toEqual(GREEN);
     });
@@ -107,15 +107,15 @@ describe('Restart always gives a frame 0', () => {
   test.each(cases)('%s while %s', async (_, __, rewind, playing) => {
     await withPage(async ({ page, goto }) => {
       await goto('?size=64x36');
-      await page.evaluate((json) => window.raytracer.setProject(json), FRAME_0_JSON);
+      await page.evaluate((json) => window.shaderEngine.setProject(json), FRAME_0_JSON);
       await moreFrames(page);
-      if (!playing) await page.evaluate(() => window.raytracer.pause());
+      if (!playing) await page.evaluate(() => window.shaderEngine.pause());
       await page.focus('body'); // R is a key of the page, not of the editor
       // a frame is under way when the rewind comes (the Image pass is slow)
-      if (playing) await page.waitForFunction(() => window.raytracer.info().progress !== null, { polling: 5 });
+      if (playing) await page.waitForFunction(() => window.shaderEngine.info().progress !== null, { polling: 5 });
       await rewind(page);
       if (playing) await moreFrames(page);
-      else await page.waitForFunction(() => window.raytracer.info().iFrame === 1, { polling: 20 });
+      else await page.waitForFunction(() => window.shaderEngine.info().iFrame === 1, { polling: 20 });
       expect(pixel(await readPixels(page), 10, 10), 'Buffer A was set up on the new frame 0').toEqual(GREEN);
       if (!playing) expect((await clock(page)).time).toBe(0);
     });

@@ -11,8 +11,8 @@ afterAll(disconnect);
 
 const PATTERN = 'shader=examples/pattern.glsl';
 // (an input event's handler has run when the page shows its effect: wait for it, do not race it)
-const playing = (page) => page.evaluate(() => window.raytracer.info().playing);
-const whenPlaying = (page, value) => page.waitForFunction((v) => window.raytracer.info().playing === v, { polling: 20 }, value);
+const playing = (page) => page.evaluate(() => window.shaderEngine.info().playing);
+const whenPlaying = (page, value) => page.waitForFunction((v) => window.shaderEngine.info().playing === v, { polling: 20 }, value);
 const playLabel = (page) => page.$eval('#toolbar button.play', (b) => b.getAttribute('aria-label'));
 
 describe('time', () => {
@@ -25,7 +25,7 @@ describe('time', () => {
       await (await button(page, 'Play')).click();
       await whenPlaying(page, true);
       expect(await playLabel(page)).toBe('Pause');
-      await page.waitForFunction(() => window.raytracer.info().time > 5.1, { polling: 50 });
+      await page.waitForFunction(() => window.shaderEngine.info().time > 5.1, { polling: 50 });
 
       await (await button(page, 'Pause')).click();
       await whenPlaying(page, false);
@@ -42,17 +42,17 @@ describe('time', () => {
       expect(await playLabel(page)).toBe('Play');
 
       await (await button(page, 'Restart')).click();
-      await page.waitForFunction(() => window.raytracer.info().time === 0);
+      await page.waitForFunction(() => window.shaderEngine.info().time === 0);
       expect(await playing(page)).toBe(false); // restart keeps the play state
 
-      await page.evaluate(() => window.raytracer.setTime(7));
+      await page.evaluate(() => window.shaderEngine.setTime(7));
       await page.keyboard.press('KeyR');
-      await page.waitForFunction(() => window.raytracer.info().time === 0, { polling: 20 });
+      await page.waitForFunction(() => window.shaderEngine.info().time === 0, { polling: 20 });
 
       // Space typed into the editor is text, not a shortcut
       const length = (await editorText(page)).length;
       await typeInEditor(page, ' ');
-      await page.waitForFunction((n) => window.raytracer.editorSource().length === n + 1, { polling: 20 }, length);
+      await page.waitForFunction((n) => window.shaderEngine.editorSource().length === n + 1, { polling: 20 }, length);
       expect(await playing(page)).toBe(false);
     });
   });
@@ -65,28 +65,28 @@ describe('time', () => {
       const before = await readPixels(page);
       await slider.focus();
       await page.keyboard.press('End'); // the slider's end: 60 s
-      await page.waitForFunction(() => window.raytracer.info().time === 60, { polling: 20 });
+      await page.waitForFunction(() => window.shaderEngine.info().time === 60, { polling: 20 });
       expect(await page.$eval('#toolbar output.time', (o) => o.textContent)).toBe('60.00 s');
       const after = await readPixels(page);
       expect(sameImage(before, after)).toBe(false); // the picture moved with time
       await page.keyboard.press('Home');
-      await page.waitForFunction(() => window.raytracer.info().time === 0, { polling: 20 });
+      await page.waitForFunction(() => window.shaderEngine.info().time === 0, { polling: 20 });
 
       const speed = await page.$('::-p-aria([name="Speed"][role="combobox"])');
       await speed.select('4');
-      await page.waitForFunction(() => window.raytracer.info().speed === 4, { polling: 20 });
+      await page.waitForFunction(() => window.shaderEngine.info().speed === 4, { polling: 20 });
       // play: the test clock gives every animation frame 1/60 s, so iTime grows 4/60 a frame
       const start = await info(page);
-      await page.evaluate(() => window.raytracer.play());
-      await page.waitForFunction((f) => window.raytracer.info().frame >= f + 20, { polling: 50 }, start.frame);
-      await page.evaluate(() => window.raytracer.pause());
+      await page.evaluate(() => window.shaderEngine.play());
+      await page.waitForFunction((f) => window.shaderEngine.info().frame >= f + 20, { polling: 50 }, start.frame);
+      await page.evaluate(() => window.shaderEngine.pause());
       const end = await info(page);
       const perFrame = (end.time - start.time) / (end.frame - start.frame);
       expect(perFrame).toBeGreaterThan(3.5 / 60);
       expect(perFrame).toBeLessThan(4.5 / 60);
 
       // the readout and the graph were drawn while playing (the clock runs at 60 fps)
-      await page.evaluate(() => window.raytracer.play());
+      await page.evaluate(() => window.shaderEngine.play());
       await page.waitForFunction(() => /fps/.test(document.querySelector('#toolbar .fps').textContent), { polling: 50 });
       // (GPU time where the browser measures it, real and not on the test clock)
       expect(await page.$eval('#toolbar .fps', (e) => e.textContent)).toMatch(/^(GPU \d+\.\d ms|16\.7 ms between frames) · 60 fps$/);
@@ -116,7 +116,7 @@ describe('size', () => {
       const c = /** @type {HTMLCanvasElement} */ (document.getElementById('view'));
       return { width: c.width, height: c.height, cssWidth: c.clientWidth, cssHeight: c.clientHeight, dpr: devicePixelRatio };
     });
-  const settle = (page) => page.evaluate(() => window.raytracer.readPixels().then(() => null));
+  const settle = (page) => page.evaluate(() => window.shaderEngine.readPixels().then(() => null));
 
   /** The pattern at `query` in a window of `viewport`: body(page, size) with the canvas's first size. */
   const inWindow = (query, viewport, body) =>
@@ -165,7 +165,7 @@ describe('size', () => {
       const aspect = size.cssWidth / size.cssHeight;
       expect(Math.abs(size.width / size.height - aspect)).toBeLessThan(0.02);
       // the window's size is the sender's: a link pins only a size the user fixed (?size=)
-      expect(new URL(await page.evaluate(() => window.raytracer.shareUrl())).searchParams.has('size')).toBe(false);
+      expect(new URL(await page.evaluate(() => window.shaderEngine.shareUrl())).searchParams.has('size')).toBe(false);
     });
   });
 
@@ -186,7 +186,7 @@ describe('the URL', () => {
       const twist = await page.$('::-p-aria([name="Twist (radians per unit)"])');
       expect(twist).not.toBeNull();
       expect(await page.$$eval('.lil-gui input', (inputs) => inputs.map((i) => i.value))).toContain('2.5');
-      expect(await page.evaluate(() => window.raytracer.loadShader('examples/pattern.glsl'))).toEqual({ ok: true });
+      expect(await page.evaluate(() => window.shaderEngine.loadShader('examples/pattern.glsl'))).toEqual({ ok: true });
       expect((await info(page)).controls).toEqual({});
       expect(await page.$('::-p-aria([name="Twist (radians per unit)"])')).toBeNull();
       expect(await page.$$eval('.lil-gui .lil-title', (els) => els.map((e) => e.textContent.trim()))).not.toContain('Shader controls');
@@ -201,21 +201,21 @@ describe('the URL', () => {
       await goto('?size=96x54&time=0');
       expect((await info(page)).liveControls).toBe('constants');
       const before = await readPixels(page);
-      await page.evaluate(() => window.raytracer.setControls({ CONE_HEIGHT: 2.6 }));
+      await page.evaluate(() => window.shaderEngine.setControls({ CONE_HEIGHT: 2.6 }));
       expect((await info(page)).liveControls).toBe('uniforms');
       const moving = await readPixels(page);
-      await page.waitForFunction(() => window.raytracer.info().liveControls === 'constants', { polling: 50, timeout: 10000 });
+      await page.waitForFunction(() => window.shaderEngine.info().liveControls === 'constants', { polling: 50, timeout: 10000 });
       const still = await readPixels(page);
       expect(sameImage(still, before)).toBe(false); // the change is drawn ...
       expect(differingPixels(moving, still, 2).count).toBe(0); // ... the same by both forms
-      await page.evaluate(() => window.raytracer.setControls({ CONE_HEIGHT: 1.7 }));
+      await page.evaluate(() => window.shaderEngine.setControls({ CONE_HEIGHT: 1.7 }));
       expect(differingPixels(await readPixels(page), before, 2).count).toBe(0);
     });
   });
 
   // Each bad URL: the page still draws a picture, warns on the console naming the parameter, and
   // logs no error. `check` looks at what the page made of it.
-  /** @type {Array<[name: string, query: string, warned: string, check: (s: import('./globals.js').RaytracerInfo) => void, options?: {mayBeDark?: boolean}]>} */
+  /** @type {Array<[name: string, query: string, warned: string, check: (s: import('./globals.js').HookInfo) => void, options?: {mayBeDark?: boolean}]>} */
   const BAD_URLS = [
     ['time=NaN', `${PATTERN}&size=64x36&time=NaN`, 'time=NaN', (s) => expect(s.playing).toBe(true)],
     ['negative time', `${PATTERN}&size=64x36&time=-3`, 'time=-3', (s) => expect(s.time).toBe(0)],

@@ -72,7 +72,7 @@ describe('the editor', () => {
 
       // undo takes the typing back; redo puts it again
       await withControl(page, 'KeyZ');
-      await page.waitForFunction(() => window.raytracer.editorSource().includes('\nint unused'), { polling: 20 });
+      await page.waitForFunction(() => window.shaderEngine.editorSource().includes('\nint unused'), { polling: 20 });
       for (let i = 0; i < 10 && (await editorText(page)) !== before; i++) await withControl(page, 'KeyZ');
       expect(await editorText(page)).toBe(before);
 
@@ -151,8 +151,8 @@ describe('defect 4: the editor was a bare text box', () => {
 
       // not compiled, and still kept
       await page.reload({ waitUntil: 'load' });
-      await page.waitForFunction(() => window.raytracer, { polling: 50 });
-      await page.evaluate(() => window.raytracer.ready);
+      await page.waitForFunction(() => window.shaderEngine, { polling: 50 });
+      await page.evaluate(() => window.shaderEngine.ready);
       expect(await editorText(page)).toBe(edited);
       expect(await info(page)).toMatchObject({ fileName: 'pattern.glsl (edited)', origin: 'editor', shaderUrl: 'examples/pattern.glsl' });
       const note = await page.waitForSelector('#restored-note', { visible: true });
@@ -160,12 +160,12 @@ describe('defect 4: the editor was a bare text box', () => {
 
       // discard: back to the file, and nothing restored after the next reload
       await (await button(page, 'Discard edits')).click();
-      await page.waitForFunction(() => window.raytracer.info().fileName === 'pattern.glsl', { polling: 50 });
+      await page.waitForFunction(() => window.shaderEngine.info().fileName === 'pattern.glsl', { polling: 50 });
       expect(await editorText(page)).toBe(file);
       expect(await page.$('#restored-note')).toBeNull();
       await page.reload({ waitUntil: 'load' });
-      await page.waitForFunction(() => window.raytracer, { polling: 50 });
-      await page.evaluate(() => window.raytracer.ready);
+      await page.waitForFunction(() => window.shaderEngine, { polling: 50 });
+      await page.evaluate(() => window.shaderEngine.ready);
       expect(await editorText(page)).toBe(file);
       expect(await page.$('#restored-note')).toBeNull();
       expect((await info(page)).fileName).toBe('pattern.glsl');
@@ -180,7 +180,7 @@ describe('defect 1: an edited or pasted shader kept the previous file name', () 
       await goto('?size=160x90&time=1'); // the built-in shaders/raytrace.glsl
       const saved = await recordDownloads(page);
       const shows = async (name) => {
-        await page.waitForFunction((n) => window.raytracer.info().fileName === n, { polling: 50 }, name);
+        await page.waitForFunction((n) => window.shaderEngine.info().fileName === n, { polling: 50 }, name);
         expect(await page.$eval('#toolbar .name', (e) => e.textContent)).toBe(name);
         expect(await page.title()).toContain(name);
         expect(await page.$eval('.editor-title', (e) => e.textContent)).toBe(name);
@@ -197,7 +197,7 @@ describe('defect 1: an edited or pasted shader kept the previous file name', () 
       await pasteIntoEditor(page, solid(10, 20, 30));
       await page.waitForFunction(() => document.getElementById('overlay').hidden, { polling: 50 });
       // the new shader's first frame is on the canvas (compiled is not yet drawn): the Screenshot is of it
-      await page.evaluate(() => window.raytracer.readPixels());
+      await page.evaluate(() => window.shaderEngine.readPixels());
       await (await button(page, 'Download .glsl')).click();
       await (await button(page, 'Screenshot')).click();
       await page.waitForFunction(() => /** @type {any} */ (window).__saved.length === 2, { polling: 50 });
@@ -208,10 +208,10 @@ describe('defect 1: an edited or pasted shader kept the previous file name', () 
 
       // an edit of the file: the file's name, marked as edited
       await page.reload({ waitUntil: 'load' });
-      await page.waitForFunction(() => window.raytracer, { polling: 50 });
-      await page.evaluate(() => window.raytracer.ready);
+      await page.waitForFunction(() => window.shaderEngine, { polling: 50 });
+      await page.evaluate(() => window.shaderEngine.ready);
       await (await button(page, 'Discard edits')).click(); // the paste was kept: back to the file
-      await page.waitForFunction(() => window.raytracer.info().fileName === 'shaders/raytrace.glsl', { polling: 50 });
+      await page.waitForFunction(() => window.shaderEngine.info().fileName === 'shaders/raytrace.glsl', { polling: 50 });
       const saved2 = await recordDownloads(page);
       await typeInEditor(page, '\n// edited', 'end');
       await withControl(page, 'Enter');

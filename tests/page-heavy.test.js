@@ -81,7 +81,7 @@ async function withHeavyShader(body) {
  */
 async function hangOnFirstBand(page, goto, base) {
   await goto(`?shader=${base}/heavy.glsl&${SIZE}&WORK=0`);
-  await page.evaluate((work) => window.raytracer.setControls({ WORK: work, HEAVY_ROWS: 8 }), HANGING_WORK);
+  await page.evaluate((work) => window.shaderEngine.setControls({ WORK: work, HEAVY_ROWS: 8 }), HANGING_WORK);
   await page.waitForFunction(() => document.documentElement.dataset.hung === 'true', { polling: 100, timeout: HANG_AFTER_MS + 30_000 });
 }
 
@@ -89,7 +89,7 @@ async function hangOnFirstBand(page, goto, base) {
 async function midFrame(page) {
   await page.waitForFunction(
     () => {
-      const progress = window.raytracer.info().progress;
+      const progress = window.shaderEngine.info().progress;
       return progress && progress.bands >= 1 && progress.y < progress.height;
     },
     { polling: 50, timeout: 60_000 },
@@ -131,7 +131,7 @@ describe('heavy frames are drawn in bands, and the page keeps answering', () => 
         // would have finished
         const changed = Date.now();
         const light = await nextFrame(page);
-        await page.evaluate(() => window.raytracer.setControls({ WORK: 0, SHADE: 1 }));
+        await page.evaluate(() => window.shaderEngine.setControls({ WORK: 0, SHADE: 1 }));
         const image = await light();
         const appliedMs = Date.now() - changed;
         expect(pixel(image, 0, 0)).toEqual([255, 128, 0]);
@@ -158,7 +158,9 @@ describe('heavy frames are drawn in bands, and the page keeps answering', () => 
         // the frame ends after all: the message goes, and the first frame it finishes clears the
         // note (it was only slow). That frame was begun for the shader before (the page plays),
         // and its shader changed under way: it counts as the new shader's.
-        const noteAfterFrame = page.evaluate(() => window.raytracer.nextFrame().then(() => localStorage.getItem('shadertoy-runner.hung')));
+        const noteAfterFrame = page.evaluate(() =>
+          window.shaderEngine.nextFrame().then(() => localStorage.getItem('shadertoy-runner.hung')),
+        );
         await page.waitForFunction(() => !document.documentElement.dataset.hung, { polling: 100, timeout: 90_000 });
         expect(await page.$eval('[role="alert"]', (e) => /** @type {HTMLElement} */ (e).hidden)).toBe(true);
         expect(await noteAfterFrame, 'the hang note after the first finished frame').toBeNull();
@@ -210,7 +212,7 @@ describe('a first draw that compiles for long is not a hang', () => {
         await page.evaluate((ms) => {
           window.__holdCompileMs = ms;
           // a new program: its first draw compiles
-          void window.raytracer.setSource('void mainImage(out vec4 c, in vec2 p) { c = vec4(0.25, p.x / 128.0, 0.5, 1.0); }');
+          void window.shaderEngine.setSource('void mainImage(out vec4 c, in vec2 p) { c = vec4(0.25, p.x / 128.0, 0.5, 1.0); }');
         }, hold);
         await page.waitForFunction(() => document.documentElement.dataset.hung, { polling: 20, timeout: 30_000 });
         expect(await page.evaluate(() => document.documentElement.dataset.hung)).toBe('compiling');
@@ -222,7 +224,9 @@ describe('a first draw that compiles for long is not a hang', () => {
           timeout: hold,
         });
         // the held band arrives: the first frame follows, the message goes and the record with it
-        const noteAfterFrame = page.evaluate(() => window.raytracer.nextFrame().then(() => localStorage.getItem('shadertoy-runner.hung')));
+        const noteAfterFrame = page.evaluate(() =>
+          window.shaderEngine.nextFrame().then(() => localStorage.getItem('shadertoy-runner.hung')),
+        );
         await page.waitForFunction(() => !document.documentElement.dataset.hung, { polling: 50, timeout: 30_000 });
         expect(await noteAfterFrame, 'the record after the first finished frame').toBeNull();
         expect((await info(page)).hung).toBe(false);
@@ -264,16 +268,16 @@ describe('the page never comes back with the shader that hung', () => {
         expect(note.name).toBe('heavy.glsl');
         expect(note.back.values.WORK).toBe(0);
         // what Chrome's GPU watchdog does on real hardware: the context goes, and comes back
-        await page.evaluate(() => window.raytracer.loseContext());
-        await page.waitForFunction(() => window.raytracer.info().contextLost, { polling: 50 });
-        await page.evaluate(() => window.raytracer.restoreContext());
-        await page.waitForFunction(() => !window.raytracer.info().contextLost && window.raytracer.info().controls.WORK === 0, {
+        await page.evaluate(() => window.shaderEngine.loseContext());
+        await page.waitForFunction(() => window.shaderEngine.info().contextLost, { polling: 50 });
+        await page.evaluate(() => window.shaderEngine.restoreContext());
+        await page.waitForFunction(() => !window.shaderEngine.info().contextLost && window.shaderEngine.info().controls.WORK === 0, {
           polling: 100,
           timeout: 60_000,
         });
         // and it draws: the hung band is over (it was finite), the restored context runs WORK = 0
         const before = (await info(page)).frame;
-        await page.waitForFunction((f) => window.raytracer.info().frame > f + 2, { polling: 100, timeout: 60_000 }, before);
+        await page.waitForFunction((f) => window.shaderEngine.info().frame > f + 2, { polling: 100, timeout: 60_000 }, before);
         expect((await info(page)).controls.WORK).toBe(0);
       }, REAL_CLOCKS);
     });
@@ -296,9 +300,9 @@ describe('a shader that never finishes', () => {
           /** @type {any} */ (window).__raytracerTimeouts = chosen;
         }, OWN_BROWSER_TIMEOUTS);
         await page.goto(`${baseUrl}/?shader=${base}/heavy.glsl&${SIZE}&WORK=0`, { waitUntil: 'load' });
-        await page.waitForFunction(() => window.raytracer, { polling: 50 });
-        await page.evaluate(() => window.raytracer.ready);
-        const outcome = await page.evaluate((url) => window.raytracer.loadShader(url), `${base}/endless.glsl`);
+        await page.waitForFunction(() => window.shaderEngine, { polling: 50 });
+        await page.evaluate(() => window.shaderEngine.ready);
+        const outcome = await page.evaluate((url) => window.shaderEngine.loadShader(url), `${base}/endless.glsl`);
         expect(outcome, 'it compiles; it is drawing it that never ends').toEqual({ ok: true });
         // the first band is a program's first draw: "compiling" for compileHangMs, then hung;
         // the rest is slack for a machine under load (20 s of it was not enough beside a benchmark)
@@ -313,7 +317,7 @@ describe('a shader that never finishes', () => {
         const asked = Date.now();
         const playing = await page.evaluate(() => {
           /** @type {HTMLButtonElement} */ (document.querySelector('#toolbar button.play')).click();
-          return window.raytracer.info().playing;
+          return window.shaderEngine.info().playing;
         });
         expect(Date.now() - asked).toBeLessThan(1000);
         expect(playing).toBe(false);

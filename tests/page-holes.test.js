@@ -71,7 +71,7 @@ async function withChannelFiles(body) {
 }
 
 /**
- * What `window.raytracer[method](...args)` came to in the page: {value} or {error} (its message),
+ * What `window.shaderEngine[method](...args)` came to in the page: {value} or {error} (its message),
  * or {error: 'still waiting'} after LOAD_TIMEOUT_MS and the margin, so that a hang fails the test
  * with that rather than with the test's timeout.
  * @returns {Promise<{value?: any, error?: string}>}
@@ -80,7 +80,7 @@ function settleInPage(page, method, ...args) {
   return page.evaluate(
     (name, wait, rest) =>
       Promise.race([
-        window.raytracer[name](...rest).then(
+        window.shaderEngine[name](...rest).then(
           (value) => ({ value }),
           (error) => ({ error: String(error?.message ?? error) }),
         ),
@@ -112,7 +112,7 @@ describe('a load that never gets an answer ends with a message', () => {
             });
           expect(Date.now() - started).toBeGreaterThanOrEqual(LOAD_TIMEOUT_MS);
           expect(await overlayText(page)).toContain(`Could not load ${url}`);
-          expect(await page.evaluate(() => window.raytracer.ready.then(() => 'drawn'))).toBe('drawn');
+          expect(await page.evaluate(() => window.shaderEngine.ready.then(() => 'drawn'))).toBe('drawn');
           expect((await info(page)).origin).toBe('builtin');
           expect(
             warnings.some((w) => w.includes(`shader=${url}`) && w.includes(TIMED_OUT)),
@@ -150,7 +150,7 @@ describe('images and shaders of another origin are refused up front', () => {
       await withPage(async ({ page, goto }) => {
         await goto(`?shader=${base}/channel.glsl&${SIZE}&iChannel0=${base}/top-red.png`);
         await page.waitForFunction(
-          () => window.raytracer.info().fileName === 'channel.glsl' && document.querySelector('.lil-gui')?.textContent.includes('(1×2)'),
+          () => window.shaderEngine.info().fileName === 'channel.glsl' && document.querySelector('.lil-gui')?.textContent.includes('(1×2)'),
         );
         const frame = await readPixels(page);
         expect(pixel(frame, 10, 5)).toEqual(TOP.slice(0, 3)); // top of the canvas: the image's top
@@ -166,7 +166,7 @@ describe('images and shaders of another origin are refused up front', () => {
         await goto(`?shader=${base}/channel.glsl&${SIZE}`);
         const outcome = await settleInPage(page, 'setChannel', 0, `${otherOrigin}/img.png`);
         expect(outcome.error).toBe(`only files served by this page's server (${context.baseUrl}) can be loaded`);
-        await page.waitForFunction(() => window.raytracer.info().fileName === 'channel.glsl');
+        await page.waitForFunction(() => window.shaderEngine.info().fileName === 'channel.glsl');
         const frame = await readPixels(page);
         // size 0 x 0: nothing bound (the page's state in the message, should it ever differ)
         expect(pixel(frame, 50, 5).slice(1), JSON.stringify(await info(page))).toEqual([0, 0]);

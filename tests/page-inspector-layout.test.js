@@ -72,11 +72,11 @@ describe('the inspector covers nothing it describes', () => {
     await withPage(
       async ({ page, goto }) => {
         await goto('?time=0&SAMPLES=1&scale=0.25'); // the canvas fills its place, at a sixteenth of its pixels
-        await page.evaluate(() => window.raytracer.compareWithFloat64());
-        const { w, h } = await page.evaluate(() => ({ w: window.raytracer.info().width, h: window.raytracer.info().height }));
+        await page.evaluate(() => window.shaderEngine.compareWithFloat64());
+        const { w, h } = await page.evaluate(() => ({ w: window.shaderEngine.info().width, h: window.shaderEngine.info().height }));
         for (const [u, v] of PINS) {
           const [x, y] = [Math.floor(u * w), h - 1 - Math.floor(v * h)];
-          await page.evaluate((px, py) => window.raytracer.inspect(px, py), x, y);
+          await page.evaluate((px, py) => window.shaderEngine.inspect(px, py), x, y);
           const g = await geometry(page);
           const where = `pixel ${x}, ${y} pinned: ${JSON.stringify(g)}`;
           expect(g.readout && g.compare && g.pin, where).toBeTruthy();
@@ -138,7 +138,7 @@ describe('a pixel pinned with a click: the magnifier then covers no box', () => 
     await withPage(
       async ({ page, goto }) => {
         await goto('?time=0&SAMPLES=1&scale=0.5');
-        await page.evaluate(() => window.raytracer.compareWithFloat64());
+        await page.evaluate(() => window.shaderEngine.compareWithFloat64());
         await page.keyboard.press('KeyI'); // Inspect on
         const { canvas } = await geometry(page);
         let clicked = 0;
@@ -156,7 +156,7 @@ describe('a pixel pinned with a click: the magnifier then covers no box', () => 
           // the readout comes up and grows as its path and its float64 colour come in: each lays the boxes out
           await page.waitForFunction(
             ([cx, cy]) => {
-              const { pinned, readout } = window.raytracer.inspection();
+              const { pinned, readout } = window.shaderEngine.inspection();
               return pinned && readout?.complete && Math.abs(readout.fragCoord[0] - cx) < 2 && Math.abs(readout.fragCoord[1] - cy) < 2;
             },
             { polling: 50 },

@@ -24,7 +24,7 @@ const DEFAULT_VIEW = `?size=${SIZE.join('x')}&time=0`;
 const U = 2 ** -24;
 
 /** The inspector's readout of pixel (x, y), y from the bottom. @returns {Promise<import('./globals.js').Readout>} */
-const inspect = (page, x, y) => page.evaluate((px, py) => window.raytracer.inspect(px, py), x, y);
+const inspect = (page, x, y) => page.evaluate((px, py) => window.shaderEngine.inspect(px, py), x, y);
 
 /** The RGBA bytes of a frame at pixel (x, y), y from the bottom. */
 function byteAt(image, x, y) {
@@ -109,9 +109,9 @@ describe('the pixel inspector', () => {
         async ({ page, goto }) => {
           await goto(DEFAULT_VIEW);
           if (shader.setSource)
-            expect(await page.evaluate((glsl) => window.raytracer.setSource(glsl), shader.setSource)).toEqual({ ok: true });
+            expect(await page.evaluate((glsl) => window.shaderEngine.setSource(glsl), shader.setSource)).toEqual({ ok: true });
           if (shader.setProject)
-            expect((await page.evaluate((json) => window.raytracer.setProject(json), shader.setProject)).ok).toBe(true);
+            expect((await page.evaluate((json) => window.shaderEngine.setProject(json), shader.setProject)).ok).toBe(true);
           const image = await readPixels(page);
           for (const [x, y] of pixels) {
             const readout = await inspect(page, x, y);
@@ -136,7 +136,7 @@ describe('the pixel inspector', () => {
             if (shader.setSource) expect(readout.path, 'no path for a shader that is not the raytracer').toBe(null);
           }
           if (shader.setSource) {
-            const last = await page.evaluate(() => window.raytracer.inspection().readout);
+            const last = await page.evaluate(() => window.shaderEngine.inspection().readout);
             expect(last.color[2], 'blue past 1, shown as it is').toBeGreaterThan(1);
           }
         },
@@ -151,10 +151,10 @@ describe('the pixel inspector', () => {
         await goto(DEFAULT_VIEW);
         // no path probe compiled yet: the colour read must not queue behind its compile
         await page.evaluate(() => {
-          window.__complete = window.raytracer.inspect(96, 90);
+          window.__complete = window.shaderEngine.inspect(96, 90);
         });
         const first = await page
-          .waitForFunction(() => window.raytracer.inspection().readout, { polling: 20 })
+          .waitForFunction(() => window.shaderEngine.inspection().readout, { polling: 20 })
           .then((handle) => handle.jsonValue());
         expect(first.color).toHaveLength(4);
         expect(first.path).toBe(null);
@@ -179,7 +179,7 @@ describe('the pixel inspector', () => {
           page
             .waitForFunction(
               (t) => {
-                const r = window.raytracer.inspection().readout;
+                const r = window.shaderEngine.inspection().readout;
                 return r?.complete && r.frame.time === t && r;
               },
               { polling: 50 },
@@ -191,7 +191,7 @@ describe('the pixel inspector', () => {
           page
             .waitForFunction(
               (before) => {
-                const r = window.raytracer.inspection().readout;
+                const r = window.shaderEngine.inspection().readout;
                 return r?.complete && r.color.some((v, c) => v !== before[c]) && r;
               },
               { polling: 50 },
@@ -199,13 +199,13 @@ describe('the pixel inspector', () => {
             )
             .then((handle) => handle.jsonValue());
 
-        await page.evaluate(() => window.raytracer.setTime(2.5)); // the camera turns 4° a second
+        await page.evaluate(() => window.shaderEngine.setTime(2.5)); // the camera turns 4° a second
         const later = await readoutAt(2.5);
         expect(later.color, 'another colour once the camera has turned').not.toEqual(first.color);
         expect(withinRounding(later.color, byteAt(await readPixels(page), x, y))).toBe(true);
 
         // a frame under way may still have the old light: the readout that has another colour is the new light's
-        await page.evaluate(() => window.raytracer.setControls({ LIGHT_POSITION: [4, 3, 2] }));
+        await page.evaluate(() => window.shaderEngine.setControls({ LIGHT_POSITION: [4, 3, 2] }));
         const lit = await readoutOtherThan(later.color);
         expect(withinRounding(lit.color, byteAt(await readPixels(page), x, y))).toBe(true);
       },
@@ -222,16 +222,16 @@ describe('the pixel inspector', () => {
         const box = await canvasBox(page);
         // the centre of pixel (40, 179 - 30): 40 columns in, 30 rows down
         await page.mouse.click(box.left + (40.5 / 320) * box.width, box.top + (30.5 / 180) * box.height);
-        await page.waitForFunction(() => window.raytracer.inspection().readout?.complete, { polling: 50 });
-        const state = await page.evaluate(() => window.raytracer.inspection());
+        await page.waitForFunction(() => window.shaderEngine.inspection().readout?.complete, { polling: 50 });
+        const state = await page.evaluate(() => window.shaderEngine.inspection());
         expect(state.pinned).toMatchObject({ x: 40, y: 149 });
         expect((await info(page)).mouse, 'the click went to the inspector, not to iMouse').toEqual([0, 0, 0, 0]);
         expect(await page.$eval('.inspector', (p) => p.textContent)).toMatch(/fragCoord \(40\.5, 149\.5\)/);
         expect(state.readout.pathNote).toMatch(/built-in raytracer/);
         await page.keyboard.press('Escape');
-        expect((await page.evaluate(() => window.raytracer.inspection())).pinned).toBe(null);
+        expect((await page.evaluate(() => window.shaderEngine.inspection())).pinned).toBe(null);
         await page.keyboard.press('KeyI');
-        expect((await page.evaluate(() => window.raytracer.inspection())).active).toBe(false);
+        expect((await page.evaluate(() => window.shaderEngine.inspection())).active).toBe(false);
         expect(await page.$eval('.inspector', (p) => /** @type {HTMLElement} */ (p).hidden)).toBe(true);
       },
       { viewport: VIEWPORT },
@@ -243,14 +243,14 @@ describe('the pixel inspector', () => {
       async ({ page, goto }) => {
         await goto(DEFAULT_VIEW);
         const before = await inspect(page, 96, 90);
-        await page.evaluate(() => window.raytracer.loseContext());
+        await page.evaluate(() => window.shaderEngine.loseContext());
         await page.waitForFunction(() => /GPU context was lost/.test(document.querySelector('.inspector').textContent), { polling: 50 });
-        await page.evaluate(() => window.raytracer.restoreContext());
+        await page.evaluate(() => window.shaderEngine.restoreContext());
         // the path probe died with the context: it is compiled again
         const after = await page
           .waitForFunction(
             () => {
-              const { readout, problem } = window.raytracer.inspection();
+              const { readout, problem } = window.shaderEngine.inspection();
               return !problem && readout?.complete && readout.path && readout;
             },
             { polling: 50 },

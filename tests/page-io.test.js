@@ -125,10 +125,10 @@ describe('the editor', () => {
       await page.keyboard.up('Control');
       await page.waitForFunction(
         () =>
-          window.raytracer.info().origin === 'editor' &&
+          window.shaderEngine.info().origin === 'editor' &&
           !document.querySelector('.lil-gui .lil-title')?.parentElement.textContent.includes('Twist'),
       );
-      await page.evaluate(() => window.raytracer.readPixels()); // settles the compile
+      await page.evaluate(() => window.shaderEngine.readPixels()); // settles the compile
       expect(allPixels(await readPixels(page), [255, 0, 255])).toBe(true);
       expect(await folders()).not.toContain('Shader controls');
       expect((await info(page)).controls).toEqual({});
@@ -154,7 +154,7 @@ describe('dropping files on the page', () => {
       await withPage(async ({ page, goto }) => {
         await goto(PATTERN);
         await dropFiles(page, [shader]);
-        await page.waitForFunction(() => window.raytracer.info().fileName === 'dropped-shader.glsl');
+        await page.waitForFunction(() => window.shaderEngine.info().fileName === 'dropped-shader.glsl');
         expect(await info(page)).toMatchObject({ origin: 'file', fileName: 'dropped-shader.glsl' });
         let frame = await readPixels(page);
         expect(pixel(frame, 20, 45)).toEqual([0, 0, 0]); // an empty channel is black
@@ -197,7 +197,7 @@ describe('dropping files on the page', () => {
         await chooser.accept([local]);
         await page.waitForFunction(() => document.querySelector('.lil-gui').textContent.includes('iChannel2… (2×2)'));
         expect(pixel(await readPixels(page), 120, 45)).toEqual([30, 220, 90]);
-        expect(await page.evaluate(() => window.raytracer.shareUrl())).toContain(`iChannel1=${base}/blue.png`);
+        expect(await page.evaluate(() => window.shaderEngine.shareUrl())).toContain(`iChannel1=${base}/blue.png`);
         await (await button(page, 'Clear iChannel1')).click();
         await page.waitForFunction(() => !document.querySelector('.lil-gui').textContent.includes('(3×5)'));
         expect(pixel(await readPixels(page), 20, 45)).toEqual([0, 0, 0]);
@@ -257,7 +257,7 @@ describe('output', () => {
     await withPage(async ({ page, context, goto }) => {
       await allowClipboard(page, context.baseUrl);
       await goto(`?shader=examples/raymarch.glsl&${SIZE}`); // playing, default controls
-      await page.evaluate(() => window.raytracer.setControls({ TWIST: 2.25, ALBEDO: [0.2, 0.5, 0.9] }));
+      await page.evaluate(() => window.shaderEngine.setControls({ TWIST: 2.25, ALBEDO: [0.2, 0.5, 0.9] }));
       // a real drag on the canvas
       const box = await page.evaluate(() => document.getElementById('view').getBoundingClientRect().toJSON());
       await page.mouse.move(box.left + 30.5, box.top + 20.5);
@@ -265,13 +265,13 @@ describe('output', () => {
       await page.mouse.move(box.left + 120.5, box.top + 50.5, { steps: 3 });
       await page.mouse.up();
       await page.keyboard.press('Space'); // pause where it is
-      await page.waitForFunction(() => !window.raytracer.info().playing);
-      await page.evaluate(() => window.raytracer.setTime(3.5));
+      await page.waitForFunction(() => !window.shaderEngine.info().playing);
+      await page.evaluate(() => window.shaderEngine.setTime(3.5));
       original = await readPixels(page);
       await (await button(page, 'Copy link')).click();
       await page.waitForFunction(() => document.getElementById('toast').textContent.startsWith('Copied a link'));
       link = await page.evaluate(() => navigator.clipboard.readText());
-      expect(link).toBe(await page.evaluate(() => window.raytracer.shareUrl()));
+      expect(link).toBe(await page.evaluate(() => window.shaderEngine.shareUrl()));
     });
     const url = new URL(link);
     expect(Object.fromEntries(url.searchParams)).toEqual({

@@ -12,7 +12,7 @@ import { writeFiles } from './helpers/page-multipass-helpers.js';
 
 const SIZE = 'size=64x36&time=1';
 
-const named = (page, name) => page.waitForFunction((n) => window.raytracer.info().fileName === n, { polling: 50 }, name);
+const named = (page, name) => page.waitForFunction((n) => window.shaderEngine.info().fileName === n, { polling: 50 }, name);
 
 /** Opens the page with nothing kept from earlier tests in this browser's storage. */
 async function freshPage(page, goto, query) {
@@ -24,8 +24,8 @@ async function freshPage(page, goto, query) {
 /** Reloads the page as a person does (a reload, not a link opened afresh) and waits for its first frame. */
 async function reload(page) {
   await page.reload({ waitUntil: 'load' });
-  await page.waitForFunction(() => window.raytracer, { polling: 50 });
-  await page.evaluate(() => window.raytracer.ready);
+  await page.waitForFunction(() => window.shaderEngine, { polling: 50 });
+  await page.evaluate(() => window.shaderEngine.ready);
 }
 
 /** Edits the built-in raytracer in the editor and runs it: "raytrace.glsl (edited)". */
@@ -60,7 +60,7 @@ describe('a restored note belongs to the text it restored', () => {
       await withPage(async ({ page, goto }) => {
         await freshPage(page, goto, `?${SIZE}`);
         // the note the watchdog leaves: hung.glsl hung, the built-in raytracer had finished a frame
-        const back = await page.evaluate(() => window.raytracer.info());
+        const back = await page.evaluate(() => window.shaderEngine.info());
         const note = {
           key: projectKey(singlePass(hung), {}),
           name: 'hung.glsl',
@@ -113,8 +113,8 @@ describe('a link opens what it names', () => {
       for (const colour of [solid(200, 0, 0), solid(0, 0, 200)]) {
         const compiled = (await info(page)).compiled;
         await pasteIntoEditor(page, colour);
-        await page.waitForFunction((n) => window.raytracer.info().compiled > n, { polling: 50 }, compiled);
-        links.push(new URL(await page.evaluate(() => window.raytracer.shareUrl())));
+        await page.waitForFunction((n) => window.shaderEngine.info().compiled > n, { polling: 50 }, compiled);
+        links.push(new URL(await page.evaluate(() => window.shaderEngine.shareUrl())));
       }
       expect(links[0].hash).not.toBe(links[1].hash);
     });
@@ -122,8 +122,8 @@ describe('a link opens what it names', () => {
       await goto(links[0].search + links[0].hash);
       expect(await editorText(page)).toBe(solid(200, 0, 0));
       await page.evaluate((hash) => (location.hash = hash), links[1].hash);
-      await page.waitForFunction((c) => window.raytracer.editorSource() === c, { polling: 50 }, solid(0, 0, 200));
-      const { data } = await page.evaluate(() => window.raytracer.readPixels());
+      await page.waitForFunction((c) => window.shaderEngine.editorSource() === c, { polling: 50 }, solid(0, 0, 200));
+      const { data } = await page.evaluate(() => window.shaderEngine.readPixels());
       expect([...Buffer.from(data, 'base64').subarray(0, 3)]).toEqual([0, 0, 200]);
     });
   });
@@ -132,10 +132,10 @@ describe('a link opens what it names', () => {
     await withPage(async ({ page, goto }) => {
       await goto('?size=64x36');
       expect((await info(page)).playing).toBe(true);
-      expect(new URL(await page.evaluate(() => window.raytracer.shareUrl())).searchParams.has('time')).toBe(false);
-      await page.evaluate(() => window.raytracer.pause());
+      expect(new URL(await page.evaluate(() => window.shaderEngine.shareUrl())).searchParams.has('time')).toBe(false);
+      await page.evaluate(() => window.shaderEngine.pause());
       const time = (await info(page)).time;
-      expect(new URL(await page.evaluate(() => window.raytracer.shareUrl())).searchParams.get('time')).toBe(
+      expect(new URL(await page.evaluate(() => window.shaderEngine.shareUrl())).searchParams.get('time')).toBe(
         String(Number(time.toFixed(6))),
       );
     });
@@ -147,17 +147,17 @@ describe('kept edits that do not compile, and notes with buttons (issue 24, item
     await withPage(async ({ page, goto }) => {
       await freshPage(page, goto, `?${SIZE}`);
       await typeInEditor(page, '\nfloat broken = ;', 'end'); // kept as typed, mid-work
-      await page.waitForFunction(() => window.raytracer.editorSource().includes('broken = ;'), { polling: 50 });
+      await page.waitForFunction(() => window.shaderEngine.editorSource().includes('broken = ;'), { polling: 50 });
       await page.reload({ waitUntil: 'load' });
-      await page.waitForFunction(() => window.raytracer, { polling: 50 });
+      await page.waitForFunction(() => window.shaderEngine, { polling: 50 });
       const outcome = await page.evaluate(() =>
-        window.raytracer.ready.then(
+        window.shaderEngine.ready.then(
           () => 'drawn',
           (e) => `rejected: ${e.message}`,
         ),
       );
       expect(outcome, 'the file draws while the edits do not compile').toBe('drawn');
-      const { data } = await page.evaluate(() => window.raytracer.readPixels());
+      const { data } = await page.evaluate(() => window.shaderEngine.readPixels());
       expect(Math.max(...Buffer.from(data, 'base64')), 'not a black canvas').toBeGreaterThan(100);
       expect(await editorText(page), 'the edits are in the editor').toContain('broken = ;');
       const note = await page.$eval('#restored-note', (n) => n.textContent);
@@ -168,10 +168,10 @@ describe('kept edits that do not compile, and notes with buttons (issue 24, item
       const compiled = (await info(page)).compiled;
       await typeInEditor(page, '\n// fixed', 'end');
       await page.evaluate(() => {
-        const text = window.raytracer.editorSource().replace('float broken = ;', 'float broken = 1.0;');
-        return window.raytracer.setSource(text);
+        const text = window.shaderEngine.editorSource().replace('float broken = ;', 'float broken = 1.0;');
+        return window.shaderEngine.setSource(text);
       });
-      await page.waitForFunction((n) => window.raytracer.info().compiled > n, { polling: 50 }, compiled);
+      await page.waitForFunction((n) => window.shaderEngine.info().compiled > n, { polling: 50 }, compiled);
       const after = await page.$eval('#notes', (n) => n.textContent);
       expect(after, 'the edited text is not the one restored: its note went').not.toMatch(/do not compile|Restored/);
       expect((await info(page)).fileName).toBe('raytrace.glsl (edited)');

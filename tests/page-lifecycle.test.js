@@ -31,10 +31,10 @@ describe('errors', () => {
 
         // a shader that compiles after it: it draws, and reading it back works (the first
         // compile's error, which `ready` keeps, no longer stands in the way)
-        const outcome = await page.evaluate((source) => window.raytracer.setSource(source), solid(0, 255, 0));
+        const outcome = await page.evaluate((source) => window.shaderEngine.setSource(source), solid(0, 255, 0));
         expect(outcome).toEqual({ ok: true });
         expect(pixel(await readPixels(page), 3, 3)).toEqual([0, 255, 0]);
-        const shot = await page.evaluate(() => window.raytracer.capture({ width: 8, height: 4 }));
+        const shot = await page.evaluate(() => window.shaderEngine.capture({ width: 8, height: 4 }));
         expect([shot.width, shot.height]).toEqual([8, 4]);
       });
     });
@@ -45,14 +45,14 @@ describe('errors', () => {
       await goto(PATTERN);
       const before = await readPixels(page);
       // the context is the render worker's (WEBGL_lose_context there, through the hook)
-      await page.evaluate(() => window.raytracer.loseContext());
+      await page.evaluate(() => window.shaderEngine.loseContext());
       await page.waitForFunction(
-        () => window.raytracer.info().contextLost && !(/** @type {HTMLElement} */ (document.querySelector('[role="alert"]')).hidden),
+        () => window.shaderEngine.info().contextLost && !(/** @type {HTMLElement} */ (document.querySelector('[role="alert"]')).hidden),
       );
       expect(await overlayText(page)).toContain('GPU context was lost');
-      await page.evaluate(() => window.raytracer.restoreContext());
+      await page.evaluate(() => window.shaderEngine.restoreContext());
       await page.waitForFunction(
-        () => !window.raytracer.info().contextLost && /** @type {HTMLElement} */ (document.querySelector('[role="alert"]')).hidden,
+        () => !window.shaderEngine.info().contextLost && /** @type {HTMLElement} */ (document.querySelector('[role="alert"]')).hidden,
       );
       const after = await readPixels(page);
       expect(sameImage(after, before), 'the restored context draws the same picture').toBe(true);
@@ -68,7 +68,7 @@ describe('errors', () => {
         expect(alert).toContain('WebGL2 is not available');
         expect(alert).toMatch(/browser or GPU provides no WebGL2/);
         const rejected = await page.evaluate(() =>
-          window.raytracer.ready.then(
+          window.shaderEngine.ready.then(
             () => null,
             (e) => e.message,
           ),

@@ -49,15 +49,15 @@ describe('an endless loop pasted over an untitled shader (in a browser of its ow
     }, OWN_BROWSER_TIMEOUTS);
     await page.browserContext().overridePermissions(baseUrl, ['clipboard-read', 'clipboard-write', 'clipboard-sanitized-write']);
     await page.goto(`${baseUrl}/?shader=examples/pattern.glsl&${SIZE}`, { waitUntil: 'load' });
-    await page.waitForFunction(() => window.raytracer, { polling: 50 });
-    await page.evaluate(() => window.raytracer.ready);
+    await page.waitForFunction(() => window.shaderEngine, { polling: 50 });
+    await page.evaluate(() => window.shaderEngine.ready);
     await page.bringToFront();
-    const frame = async () => Number(await page.evaluate(() => window.raytracer.info().frame));
+    const frame = async () => Number(await page.evaluate(() => window.shaderEngine.info().frame));
     await pasteIntoEditor(page, CHEAP_SHADER);
-    await page.waitForFunction(() => window.raytracer.info().fileName === 'untitled', { polling: 50 });
+    await page.waitForFunction(() => window.shaderEngine.info().fileName === 'untitled', { polling: 50 });
     // the cheap shader draws frames (it is the one to go back to), and plays
     const drawn = await frame();
-    await page.waitForFunction((f) => window.raytracer.info().frame > f + 5, { polling: 50, timeout: 30_000 }, drawn);
+    await page.waitForFunction((f) => window.shaderEngine.info().frame > f + 5, { polling: 50, timeout: 30_000 }, drawn);
     const pasted = Date.now();
     await pasteIntoEditor(page, ENDLESS_SHADER);
     await page.waitForFunction(() => document.documentElement.dataset.hung === 'true', {
@@ -133,7 +133,7 @@ describe("a new program's first draw waits for the page's paint", () => {
         await goto(`?shader=examples/pattern.glsl&${SIZE}`);
         await page.evaluate(() => {
           /** @type {any} */ (window).__slowFrames = true;
-          void window.raytracer.setSource('void mainImage(out vec4 c, in vec2 p) { c = vec4(0.5, p.y / 72.0, 0.25, 1.0); }');
+          void window.shaderEngine.setSource('void mainImage(out vec4 c, in vec2 p) { c = vec4(0.5, p.y / 72.0, 0.25, 1.0); }');
         });
         await page.waitForFunction(() => /** @type {any} */ (window).__gate.compileStartedAt > 0, { polling: 50, timeout: 30_000 });
         const { settledAt, compileStartedAt } = await page.evaluate(() => /** @type {any} */ (window).__gate);

@@ -16,7 +16,7 @@ afterAll(disconnect);
 
 const SIZE = 'size=64x36&time=1';
 
-const named = (page, name) => page.waitForFunction((n) => window.raytracer.info().fileName === n, { polling: 50 }, name);
+const named = (page, name) => page.waitForFunction((n) => window.shaderEngine.info().fileName === n, { polling: 50 }, name);
 const toast = (page) => page.$eval('#toast', (t) => t.textContent);
 
 describe('a tab out', () => {
@@ -78,11 +78,11 @@ describe('the whole shader out and back', () => {
         expect(JSON.parse(first.text).Shader.info).toEqual(original.Shader.info);
 
         // back through the page: a single-pass shader first, then the export dropped on the page
-        await page.evaluate(() => window.raytracer.setSource('void mainImage(out vec4 c, in vec2 p) { c = vec4(1.0); }'));
+        await page.evaluate(() => window.shaderEngine.setSource('void mainImage(out vec4 c, in vec2 p) { c = vec4(1.0); }'));
         expect(await editorTabs(page)).toEqual({ names: [], selected: null });
         await dropFile(page, 'trip.json', first.text);
         await named(page, 'Round trip'); // an export goes by its shader's own name
-        await page.evaluate(() => window.raytracer.ready);
+        await page.evaluate(() => window.shaderEngine.ready);
         expect(await editorTabs(page)).toEqual({ names: ['Common', 'Buffer A', 'Image', 'Sound'], selected: 'Image' });
         expect((await loadNotes(page))?.lines).toHaveLength(1); // the texture, again (the Sound tab plays)
         const second = await exportJsonFile(page);
@@ -103,7 +103,7 @@ describe('the whole shader out and back', () => {
         await typeInEditor(page, '\n// shared edit', 'end');
         await withControl(page, 'Enter');
         await named(page, 'two.json (edited)');
-        link = await page.evaluate(() => window.raytracer.shareUrl());
+        link = await page.evaluate(() => window.shaderEngine.shareUrl());
         exported = (await exportJsonFile(page)).text;
       });
     });
@@ -133,8 +133,8 @@ describe('the whole shader out and back', () => {
         await showTab(page, 'Common');
         await typeInEditor(page, '\n// kept common', 'end');
         await page.reload({ waitUntil: 'load' });
-        await page.waitForFunction(() => window.raytracer, { polling: 50 });
-        await page.evaluate(() => window.raytracer.ready);
+        await page.waitForFunction(() => window.shaderEngine, { polling: 50 });
+        await page.evaluate(() => window.shaderEngine.ready);
         expect(await page.$eval('#restored-note', (n) => n.textContent)).toContain('Restored two.json (edited)');
         expect((await info(page)).fileName).toBe('two.json (edited)');
         expect(await editorTabs(page)).toEqual({ names: ['Common', 'Buffer A', 'Image'], selected: 'Image' });
@@ -151,8 +151,8 @@ describe('the whole shader out and back', () => {
         await showTab(page, 'Buffer A');
         expect(await editorText(page)).toBe(BUFFER_A);
         await page.reload({ waitUntil: 'load' });
-        await page.waitForFunction(() => window.raytracer, { polling: 50 });
-        await page.evaluate(() => window.raytracer.ready);
+        await page.waitForFunction(() => window.shaderEngine, { polling: 50 });
+        await page.evaluate(() => window.shaderEngine.ready);
         expect(await page.$('#restored-note')).toBeNull();
       });
     });

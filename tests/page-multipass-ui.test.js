@@ -24,7 +24,7 @@ afterAll(disconnect);
 const SIZE = 'size=64x36&time=1';
 const PATTERN = `?shader=examples/pattern.glsl&${SIZE}`;
 
-const named = (page, name) => page.waitForFunction((n) => window.raytracer.info().fileName === n, { polling: 50 }, name);
+const named = (page, name) => page.waitForFunction((n) => window.shaderEngine.info().fileName === n, { polling: 50 }, name);
 
 describe('tabs', () => {
   test('?shader=….json shows one tab per pass; each tab keeps its text and its undo; Ctrl+Enter runs them all', async () => {
@@ -48,7 +48,7 @@ describe('tabs', () => {
         await typeInEditor(page, '\n// edit I', 'end');
         await withControl(page, 'Enter');
         await named(page, 'two.json (edited)');
-        await page.evaluate(() => window.raytracer.ready);
+        await page.evaluate(() => window.shaderEngine.ready);
         const { model } = fromShadertoyJson((await exportJsonFile(page)).text);
         expect(model.common).toBe(COMMON);
         expect(model.passes.find((p) => p.name === 'Buffer A')?.code).toBe(`${BUFFER_A}\n// edit A`);
@@ -204,7 +204,7 @@ describe('loading Shadertoy JSON', () => {
       await named(page, 'Pasted one');
       expect(await editorTabs(page)).toEqual({ names: ['Common', 'Buffer A', 'Image'], selected: 'Image' });
       expect(await editorText(page)).toBe(IMAGE);
-      await page.evaluate(() => window.raytracer.ready);
+      await page.evaluate(() => window.shaderEngine.ready);
 
       await pasteIntoEditor(page, '{"renderpass": "no"}');
       await page.waitForFunction(() => document.getElementById('load-notes')?.className === 'error', { polling: 50 });

@@ -52,7 +52,7 @@ const SHOW_CHANNEL0 = `void mainImage(out vec4 c, in vec2 p) { c = vec4(texelFet
 /** Opens the page and runs `json`, checking it compiled. */
 async function run(page, goto, json, query = SIZE) {
   await goto(`?${query}`);
-  const outcome = await page.evaluate((j) => window.raytracer.setProject(j), json);
+  const outcome = await page.evaluate((j) => window.shaderEngine.setProject(j), json);
   expect(outcome.error ?? null).toBe(null);
   return outcome;
 }
@@ -135,7 +135,7 @@ describe('Restart, resize and inputs', () => {
       await run(page, goto, COUNTER);
       for (let i = 0; i < 3; i++) await readPixels(page);
       expect(pixel(await readPixels(page), 5, 5)[0]).toBeGreaterThan(3);
-      await page.evaluate(() => window.raytracer.restart());
+      await page.evaluate(() => window.shaderEngine.restart());
       // the counter starts again with iFrame: one more than iFrame in every frame after
       const [count, frame] = pixel(await readPixels(page), 5, 5);
       expect(frame).toBeLessThan(3);
@@ -151,7 +151,7 @@ describe('Restart, resize and inputs', () => {
         const before = await readPixels(page);
         const counted = pixel(before, 2, before.height - 3)[0]; // lower left: kept by a shrink
         await page.setViewport({ width: 200, height: 150 });
-        await page.waitForFunction((w) => window.raytracer.info().width !== w, {}, before.width);
+        await page.waitForFunction((w) => window.shaderEngine.info().width !== w, {}, before.width);
         const after = await readPixels(page);
         expect(after.width).toBeLessThan(before.width);
         expect(pixel(after, 2, after.height - 3)[0], 'the count went on where the buffer was kept').toBeGreaterThan(counted);
@@ -186,7 +186,7 @@ describe('Restart, resize and inputs', () => {
       await page.keyboard.press('KeyA');
       expect(pixel(await readPixels(page), 1, 1), "A, typed on the time slider, is the shader's").toEqual([255, 0, 0]);
       await page.keyboard.press('ArrowRight');
-      await page.waitForFunction(() => window.raytracer.info().time > 0, { polling: 20 });
+      await page.waitForFunction(() => window.shaderEngine.info().time > 0, { polling: 20 });
       expect(pixel(await readPixels(page), 1, 1), "ArrowRight moved the slider, and is not the shader's").toEqual([255, 0, 0]);
       await page.keyboard.press('Space'); // a page shortcut still: Play
       expect((await info(page)).playing).toBe(true);
@@ -229,7 +229,7 @@ describe('Restart, resize and inputs', () => {
     await withPage(async ({ page, goto }) => {
       await run(page, goto, COUNTER);
       for (let i = 0; i < 3; i++) await readPixels(page); // the live buffers have counted a while
-      const result = await page.evaluate(() => window.raytracer.record({ format: 'png', frames: 4, fps: 10, width: 64, height: 64 }));
+      const result = await page.evaluate(() => window.shaderEngine.record({ format: 'png', frames: 4, fps: 10, width: 64, height: 64 }));
       expect([result.width, result.height], 'the canvas size, whatever was asked').toEqual([32, 18]);
       const files = unzipSync(new Uint8Array(Buffer.from(result.data, 'base64')));
       const counts = Object.keys(files)

@@ -99,7 +99,7 @@ describe('the page says a missing video three passes name once', () => {
     await withPage(
       async ({ page, goto }) => {
         await goto('?time=0&scale=0.25'); // the canvas fills the stage, at a sixteenth of its pixels
-        const result = await page.evaluate((json) => window.raytracer.setProject(json), THREE_PASSES);
+        const result = await page.evaluate((json) => window.shaderEngine.setProject(json), THREE_PASSES);
         expect(result.ok, result.error).toBe(true);
         const notes = await loadNotes(page);
         expect(notes?.lines, JSON.stringify(notes)).toHaveLength(1);

@@ -1,4 +1,4 @@
-// window.raytracer.open(query) (src/page/open-view.js): the page put in the state a fresh load of
+// window.shaderEngine.open(query) (src/page/open-view.js): the page put in the state a fresh load of
 // a URL gives, without a reload. Each view below is rendered both ways: a fresh page loaded at
 // its URL, and one page that was first left in another state (another shader, a control moved,
 // the mouse and the clock elsewhere, a pixel pinned) and then given open() for each view in
@@ -77,17 +77,17 @@ describe('open(query) gives the page a fresh load of that URL gives', () => {
       await withPage(async ({ page, goto }) => {
         // another state first: another size, time and start mouse, the mouse moved, controls moved, a pixel pinned
         await goto('?size=100x50&time=3&mouse=5,5,5,-5');
-        await page.evaluate(() => window.raytracer.setMouse([10, 20, 10, -20]));
-        await page.evaluate(() => window.raytracer.setControls({ BOUNCES: 0, SHADOWS: 0 }));
-        await page.evaluate(() => window.raytracer.inspect(20, 20));
+        await page.evaluate(() => window.shaderEngine.setMouse([10, 20, 10, -20]));
+        await page.evaluate(() => window.shaderEngine.setControls({ BOUNCES: 0, SHADOWS: 0 }));
+        await page.evaluate(() => window.shaderEngine.inspect(20, 20));
         // another order than the fresh loads', a raytracer view first (the moved controls must not carry over)
         for (const query of [3, 6, 0, 5, 2, 4, 1].map((i) => views[i])) {
-          await page.evaluate((q) => window.raytracer.open(q), query);
+          await page.evaluate((q) => window.shaderEngine.open(q), query);
           const image = await readPixels(page);
           const want = /** @type {{image: any, state: object}} */ (fresh.get(query));
           expect({ ...stateOf(await info(page)), notes: await notesText(page) }, query).toEqual(want.state);
           expect(sameImage(image, want.image), `${query}: open() drew other pixels than a fresh load`).toBe(true);
-          expect((await page.evaluate(() => window.raytracer.inspection())).pinned, 'no pixel pinned').toBe(null);
+          expect((await page.evaluate(() => window.shaderEngine.inspection())).pinned, 'no pixel pinned').toBe(null);
         }
       });
     });
@@ -105,8 +105,8 @@ describe('a view is drawn once, and its still is frame 0', () => {
       await goto('?shader=examples/inputs.glsl&size=40x20&time=0');
       const frames = [];
       for (const size of ['64x36', '96x54', '30x30', '160x90', '48x27', '128x72', '20x40', '100x50']) {
-        await page.evaluate((q) => window.raytracer.open(q), `?shader=examples/inputs.glsl&size=${size}&time=0`);
-        const still = await page.evaluate(() => window.raytracer.readFrame());
+        await page.evaluate((q) => window.shaderEngine.open(q), `?shader=examples/inputs.glsl&size=${size}&time=0`);
+        const still = await page.evaluate(() => window.shaderEngine.readFrame());
         const image = { width: still.width, height: still.height, data: Buffer.from(still.data, 'base64') };
         // inputs.glsl's data cell 0 holds iFrame
         frames.push([still.iFrame, dataAt(image, 5, 5), dataAt(await readPixels(page), 5, 5)]);

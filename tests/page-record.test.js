@@ -1,6 +1,6 @@
 // Recording (src/page/io/recorder.js, src/page/ui/toolbar/record-dialog.js), end to end in the real browser: a
 // test shader that paints iFrame, iTime and iTimeDelta as colour is recorded frame by frame at a
-// fixed frame rate and size, through window.raytracer.record() and through the toolbar's
+// fixed frame rate and size, through window.shaderEngine.record() and through the toolbar's
 // "Record" button; the WebM is read back in Node with mediabunny (frame count, size, times; its
 // frames, decoded by the browser's VideoDecoder, show their iFrame and iTime), the PNG sequence
 // with fflate and pngjs (frame count, size, and each frame's iFrame and iTime in its colour).
@@ -29,7 +29,7 @@ const expectedColour = (i) => [16 * i, Math.round((100 * i) / FPS), 1000 / FPS];
 /** Opens the page at 64×36 playing the clock shader. */
 async function openClockShader(page, goto) {
   await goto('?size=64x36');
-  const outcome = await page.evaluate((source) => window.raytracer.setSource(source), CLOCK_SHADER);
+  const outcome = await page.evaluate((source) => window.shaderEngine.setSource(source), CLOCK_SHADER);
   expect(outcome).toEqual({ ok: true });
 }
 
@@ -130,7 +130,7 @@ describe('Recording', () => {
     await withPage(async ({ page, goto }) => {
       await openClockShader(page, goto);
       expect((await info(page)).playing).toBe(true);
-      const result = await page.evaluate((frames, fps) => window.raytracer.record({ format: 'webm', frames, fps }), FRAMES, FPS);
+      const result = await page.evaluate((frames, fps) => window.shaderEngine.record({ format: 'webm', frames, fps }), FRAMES, FPS);
       expect({ ...result, data: undefined }).toMatchObject({
         format: 'webm',
         frames: FRAMES,
@@ -153,9 +153,9 @@ describe('Recording', () => {
   test("raytracer.record(): a PNG sequence holds one PNG per frame, of the chosen size, each painted with its frame's iFrame, iTime and iTimeDelta", async () => {
     await withPage(async ({ page, goto }) => {
       await openClockShader(page, goto);
-      await page.evaluate(() => window.raytracer.pause());
+      await page.evaluate(() => window.shaderEngine.pause());
       const result = await page.evaluate(
-        (frames, fps) => window.raytracer.record({ format: 'png', frames, fps, width: 40, height: 30 }),
+        (frames, fps) => window.shaderEngine.record({ format: 'png', frames, fps, width: 40, height: 30 }),
         FRAMES,
         FPS,
       );
@@ -213,16 +213,16 @@ describe('Recording', () => {
       await page.waitForFunction(() => document.querySelector('.record-dialog progress').getAttribute('value') !== '0', { polling: 20 });
       expect((await info(page)).playing, 'the live loop is paused while recording').toBe(false);
       await (await page.$('.record-dialog ::-p-aria([name="Cancel"][role="button"])')).click();
-      await page.waitForFunction(() => !window.raytracer.recording().busy, { polling: 20 });
+      await page.waitForFunction(() => !window.shaderEngine.recording().busy, { polling: 20 });
       expect(await page.$eval('.record-status', (s) => s.textContent)).toMatch(/cancelled/i);
       expect(await page.$eval('progress', (p) => p.value)).toBe(0);
       expect((await info(page)).playing).toBe(true);
 
       const outcome = await page.evaluate(async () => {
-        const recording = window.raytracer.record({ frames: 3000, fps: 30 });
-        while (!window.raytracer.recording().busy) await new Promise((r) => setTimeout(r, 5));
+        const recording = window.shaderEngine.record({ frames: 3000, fps: 30 });
+        while (!window.shaderEngine.recording().busy) await new Promise((r) => setTimeout(r, 5));
         await new Promise((r) => setTimeout(r, 50));
-        window.raytracer.cancelRecording();
+        window.shaderEngine.cancelRecording();
         return recording.then(
           () => 'finished',
           (error) => error.name,
@@ -243,7 +243,7 @@ describe('Recording', () => {
       downloads = await captureDownloads(page);
       await typeInEditor(page, '\n// edited', 'end');
       await withControl(page, 'Enter');
-      await page.waitForFunction(() => window.raytracer.info().fileName === 'raytrace.glsl (edited)', { polling: 50 });
+      await page.waitForFunction(() => window.shaderEngine.info().fileName === 'raytrace.glsl (edited)', { polling: 50 });
       await (await button(page, 'Screenshot')).click();
       expect((await downloads.next()).name).toMatch(/^raytrace-edited-t1\.00-32x18\.png$/);
       await (await button(page, 'Record')).click();

@@ -93,13 +93,13 @@ describe('say it on the page', () => {
       );
       await (await page.$('.record-dialog ::-p-aria([name="Start"][role="button"])')).click();
       await page.waitForFunction(
-        () => window.raytracer.recording().busy || /Saved|Frame/.test(document.querySelector('.record-status').textContent),
+        () => window.shaderEngine.recording().busy || /Saved|Frame/.test(document.querySelector('.record-status').textContent),
         {
           polling: 20,
         },
       );
       expect(await page.$eval('.record-status', (s) => s.textContent)).not.toMatch(/positive number/);
-      await page.evaluate(() => window.raytracer.cancelRecording());
+      await page.evaluate(() => window.shaderEngine.cancelRecording());
     });
   });
 });
@@ -111,9 +111,9 @@ describe('the frame-time readout tells what is happening', () => {
     try {
       await recordReadouts(page);
       await page.goto(`${context.baseUrl}/?size=480x270&SAMPLES=16&ADAPTIVE_AA=0`, { waitUntil: 'load' });
-      await page.waitForFunction(() => window.raytracer, { polling: 50 });
-      await page.evaluate(() => window.raytracer.ready);
-      await page.waitForFunction(() => window.raytracer.info().frame >= 3, { polling: 100 });
+      await page.waitForFunction(() => window.shaderEngine, { polling: 50 });
+      await page.evaluate(() => window.shaderEngine.ready);
+      await page.waitForFunction(() => window.shaderEngine.info().frame >= 3, { polling: 100 });
       /** @type {string[]} */
       const seen = (await page.evaluate(() => /** @type {any} */ (window).__readouts)).map(([text]) => text);
       expect(seen[0], `the first readout (all: ${JSON.stringify(seen)})`).toMatch(/^Drawing the first frame/);
@@ -134,7 +134,7 @@ describe('the frame-time readout tells what is happening', () => {
   test('at speed 0× time stands still: no frame is drawn again, and the readout says why', async () => {
     await withPage(async ({ page, goto }) => {
       await goto('?size=64x36&BOUNCES=0&SAMPLES=1');
-      await page.evaluate(() => window.raytracer.setSpeed(0));
+      await page.evaluate(() => window.shaderEngine.setSpeed(0));
       await page.waitForFunction(() => /^Speed 0× · time stands still$/.test(document.querySelector('#toolbar .fps').textContent), {
         polling: 50,
       });
@@ -175,7 +175,7 @@ describe('small things', () => {
       const before = await readPixels(page);
       const box = await (await page.$('#view')).boundingBox();
       await page.mouse.click(box.x + box.width * 0.8, box.y + box.height * 0.3);
-      await page.waitForFunction(() => window.raytracer.info().mouse[0] !== 0, { polling: 50 });
+      await page.waitForFunction(() => window.shaderEngine.info().mouse[0] !== 0, { polling: 50 });
       expect(sameImage(await readPixels(page), before), 'the click turned the camera (iMouse, as on Shadertoy)').toBe(false);
       await (await button(page, 'Reset view')).click();
       expect((await info(page)).mouse).toEqual([0, 0, 0, 0]);

@@ -36,8 +36,8 @@ test("the Torus scene's panel shows the torus's controls and no other scene's; s
     for (const dead of ['Cone height', 'Cone base centre', 'Cone reflectivity', 'Cylinder radius', 'Cylinder reflectivity'])
       expect(torus, `${dead} changes nothing in the Torus scene`).not.toContain(dead);
 
-    await page.evaluate(() => window.raytracer.setControls({ SCENE: 0 }));
-    await page.waitForFunction(() => window.raytracer.info().controls.SCENE === 0, { polling: 50 });
+    await page.evaluate(() => window.shaderEngine.setControls({ SCENE: 0 }));
+    await page.waitForFunction(() => window.shaderEngine.info().controls.SCENE === 0, { polling: 50 });
     const cone = await shownControls(page);
     expect(cone).toEqual(expect.arrayContaining(['Cone height', 'Cone reflectivity']));
     expect(cone).not.toContain('Torus radii');
@@ -47,7 +47,7 @@ test("the Torus scene's panel shows the torus's controls and no other scene's; s
 test('Copy link writes a choice by its name, which reads back to the same controls', async () => {
   await withPage(async ({ page, goto }) => {
     await goto(`?${SIZE}&SCENE=2&VIEW=1`);
-    const url = new URL(await page.evaluate(() => window.raytracer.shareUrl()));
+    const url = new URL(await page.evaluate(() => window.shaderEngine.shareUrl()));
     expect([url.searchParams.get('SCENE'), url.searchParams.get('VIEW')]).toEqual(['Torus', 'Normals']);
   });
 });

@@ -302,9 +302,9 @@ describe('a shader with a Sound tab: its mute button and level meter crowd nothi
     await withPage(
       async ({ page, goto }) => {
         await goto(QUERY);
-        const result = await page.evaluate((json) => window.raytracer.setProject(json), SOUND_PROJECT);
+        const result = await page.evaluate((json) => window.shaderEngine.setProject(json), SOUND_PROJECT);
         expect(result.ok, result.error).toBe(true);
-        await page.waitForFunction(() => window.raytracer.soundState().available, { polling: 50 });
+        await page.waitForFunction(() => window.shaderEngine.soundState().available, { polling: 50 });
         const where = `${width}x${height}`;
         const s = await soundGeometry(page, [...SHORT_LINES, ...PLAYING_LINES]);
         expect(s.mute && s.meter && s.fps, `${where}: mute, meter and frame-time line shown ${JSON.stringify(s)}`).toBeTruthy();
@@ -327,10 +327,10 @@ describe('a shader with a Sound tab: its mute button and level meter crowd nothi
           if (SHORT_LINES.includes(line) || width >= 800) expect(whole, `${where}: "${line}" whole in ${JSON.stringify(s.fps)}`).toBe(true);
 
         // muted: the name stays, its state is aria-pressed
-        await page.evaluate(() => window.raytracer.setMuted(true));
+        await page.evaluate(() => window.shaderEngine.setMuted(true));
         const muted = await page.$eval('#toolbar .sound-mute', (b) => [b.getAttribute('aria-label'), b.getAttribute('aria-pressed')]);
         expect(muted).toEqual(['Mute sound', 'true']);
-        await page.evaluate(() => window.raytracer.setMuted(false));
+        await page.evaluate(() => window.shaderEngine.setMuted(false));
         // and the toolbar's own rules still hold: two rows, labels on one line, everything inside
         const g = await toolbarGeometry(page);
         const centres = [...new Set(g.controls.map((c) => Math.round((c.top + c.bottom) / 2 / 8)))];

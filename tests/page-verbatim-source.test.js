@@ -110,7 +110,7 @@ async function runTabs(page, goto, tabs) {
   await goto(`?${SIZE}`);
   await recordCompiledSources(page);
   await takeCompiledSources(page);
-  return page.evaluate((json) => window.raytracer.setProject(json), exportOf(tabs));
+  return page.evaluate((json) => window.shaderEngine.setProject(json), exportOf(tabs));
 }
 
 const DRAWS = [

@@ -40,9 +40,9 @@ describe('the "Extra samples" view says what it shows', () => {
     await withPage(async ({ page, goto }) => {
       await goto(`?${SIZE}&VIEW=5`);
       expect(await viewNote(page)).toBe(null);
-      await page.evaluate(() => window.raytracer.setControls({ ADAPTIVE_AA: 0 }));
+      await page.evaluate(() => window.shaderEngine.setControls({ ADAPTIVE_AA: 0 }));
       expect(await viewNote(page)).toMatch(/every pixel takes all 16 samples/);
-      await page.evaluate(() => window.raytracer.setControls({ VIEW: 0 }));
+      await page.evaluate(() => window.shaderEngine.setControls({ VIEW: 0 }));
       expect(await viewNote(page)).toBe(null);
     });
   });

@@ -82,8 +82,12 @@ describe('a heavy shader: built up when still or new, whole frames while playing
 
           const mark = (await shownSince(page, 0)).length;
           const from = (await info(page)).frame;
-          await page.waitForFunction((n) => window.raytracer.info().frame >= n, { polling: 100, timeout: PLAY_TIMEOUT_MS }, from + FRAMES);
-          await page.evaluate(() => window.raytracer.pause());
+          await page.waitForFunction(
+            (n) => window.shaderEngine.info().frame >= n,
+            { polling: 100, timeout: PLAY_TIMEOUT_MS },
+            from + FRAMES,
+          );
+          await page.evaluate(() => window.shaderEngine.pause());
           const playing = await shownSince(page, mark);
           const frames = new Set(playing.map((colours) => colours.join()));
           expect(frames.size, `frames shown while playing: ${JSON.stringify(playing)}`).toBeGreaterThanOrEqual(3);
@@ -91,8 +95,8 @@ describe('a heavy shader: built up when still or new, whole frames while playing
 
           // paused: a still frame (a new iMouse) builds up over the one before, as it is drawn
           const still = (await shownSince(page, 0)).length;
-          await page.evaluate(() => window.raytracer.setMouse([10, 10, 0, 0]));
-          await page.evaluate(() => window.raytracer.readPixels());
+          await page.evaluate(() => window.shaderEngine.setMouse([10, 10, 0, 0]));
+          await page.evaluate(() => window.shaderEngine.readPixels());
           const built = await shownSince(page, still);
           expect(torn(built).length, `the still frame shown as it built up: ${JSON.stringify(built)}`).toBeGreaterThan(0);
         },

@@ -1,4 +1,4 @@
-// The command line's and the harness's one client of the engine page's API (window.raytracer,
+// The command line's and the harness's one client of the engine page's API (window.shaderEngine,
 // src/page/hook/engine-hook.js): one method for each thing they ask the page, and the only module
 // under src/ that runs code on a page (page.evaluate). Everything else (view.js, long-work.js,
 // the session, render, sound, test) asks through it, so that what the page is asked, and what
@@ -57,7 +57,7 @@ export function engineClient(page) {
       const response = await page.goto(url, { waitUntil: 'load' });
       if (!response || (!response.ok() && response.status() !== 304)) return `the page answered HTTP ${response?.status()}`;
       // a page that could not start has a hook too (hook/failed-hook.js)
-      await page.waitForFunction(() => Boolean(/** @type {HookedWindow} */ (window).raytracer), { polling: 100 });
+      await page.waitForFunction(() => Boolean(/** @type {HookedWindow} */ (window).shaderEngine), { polling: 100 });
       return null;
     },
 
@@ -71,8 +71,8 @@ export function engineClient(page) {
      */
     startView(query) {
       return page.evaluate((opening) => {
-        if (!(/** @type {HookedWindow} */ (window).raytracer)) return 'page error: the page has no engine hook (window.raytracer)';
-        const hook = /** @type {HookedWindow} */ (window).raytracer;
+        if (!(/** @type {HookedWindow} */ (window).shaderEngine)) return 'page error: the page has no engine hook (window.shaderEngine)';
+        const hook = /** @type {HookedWindow} */ (window).shaderEngine;
         const slot = { settled: /** @type {any} */ (null), view: /** @type {any} */ (null) };
         /** @type {any} */ (window).__view = slot;
         const opened = opening === null ? hook.ready : hook.open(opening);
@@ -100,9 +100,9 @@ export function engineClient(page) {
       return page.evaluate(() => {
         const settled = /** @type {any} */ (window).__view?.settled;
         if (settled) return settled;
-        const hang = /** @type {HookedWindow} */ (window).raytracer.hang();
+        const hang = /** @type {HookedWindow} */ (window).shaderEngine.hang();
         if (hang?.phase === 'drawing') return { state: 'hung', message: hang.message };
-        const { progress, band } = /** @type {HookedWindow} */ (window).raytracer.info();
+        const { progress, band } = /** @type {HookedWindow} */ (window).shaderEngine.info();
         return { state: 'running', rows: progress?.y ?? 0, height: progress?.height ?? 0, bands: progress?.bands ?? 0, band };
       });
     },
@@ -124,25 +124,25 @@ export function engineClient(page) {
     },
 
     /** What the page says of itself (hook/engine-state.js info()). */
-    info: () => page.evaluate(() => JSON.parse(JSON.stringify(/** @type {HookedWindow} */ (window).raytracer.info()))),
+    info: () => page.evaluate(() => JSON.parse(JSON.stringify(/** @type {HookedWindow} */ (window).shaderEngine.info()))),
     /** The last frame drawn again (RGBA8). @returns {Promise<PageImage>} */
-    capture: () => page.evaluate(() => /** @type {HookedWindow} */ (window).raytracer.capture()),
+    capture: () => page.evaluate(() => /** @type {HookedWindow} */ (window).shaderEngine.capture()),
     /** The last frame's Image pass in RGBA32F. @returns {Promise<PageImage>} */
-    captureFloat: () => page.evaluate(() => /** @type {HookedWindow} */ (window).raytracer.captureFloat()),
+    captureFloat: () => page.evaluate(() => /** @type {HookedWindow} */ (window).shaderEngine.captureFloat()),
     /**
      * A tile of the last frame drawn at the full size.
      * @param {{x: number, y: number, width: number, height: number, fullWidth: number, fullHeight: number}} tile
      * @returns {Promise<PageImage>}
      */
-    captureTile: (tile) => page.evaluate((t) => /** @type {HookedWindow} */ (window).raytracer.captureTile(t), tile),
+    captureTile: (tile) => page.evaluate((t) => /** @type {HookedWindow} */ (window).shaderEngine.captureTile(t), tile),
     /** `n` whole frames drawn back to back: their median time in ms. @param {number} n */
-    renderFrames: (n) => page.evaluate((count) => /** @type {HookedWindow} */ (window).raytracer.renderFrames(count), n),
+    renderFrames: (n) => page.evaluate((count) => /** @type {HookedWindow} */ (window).shaderEngine.renderFrames(count), n),
     /**
      * The Sound tab's samples over [time, time + duration): base64 interleaved 16-bit PCM.
      * @param {{time: number, duration: number}} range
      * @returns {Promise<{data: string, sampleRate: number}>}
      */
-    renderSound: (range) => page.evaluate((r) => /** @type {HookedWindow} */ (window).raytracer.renderSound(r), range),
+    renderSound: (range) => page.evaluate((r) => /** @type {HookedWindow} */ (window).shaderEngine.renderSound(r), range),
     /** Answers at once if the page's thread is free: a heartbeat. */
     ping: () => page.evaluate(() => 0),
 
@@ -156,7 +156,7 @@ export function engineClient(page) {
     startLong(method, { request, total, controls = {} }) {
       return page.evaluate(
         (m, r, t, c) => {
-          const hook = /** @type {any} */ (/** @type {HookedWindow} */ (window).raytracer);
+          const hook = /** @type {any} */ (/** @type {HookedWindow} */ (window).shaderEngine);
           const slot = { settled: /** @type {any} */ (null) };
           /** @type {any} */ (window).__longWork = slot;
           // a converge is "Converge when still" of t samples, done when t still frames are drawn: its
@@ -194,7 +194,7 @@ export function engineClient(page) {
     pollLong(method, total) {
       return page.evaluate(
         (m, t) => {
-          const hook = /** @type {any} */ (/** @type {HookedWindow} */ (window).raytracer);
+          const hook = /** @type {any} */ (/** @type {HookedWindow} */ (window).shaderEngine);
           const settled = /** @type {any} */ (window).__longWork.settled;
           const hang = hook.hang();
           if (hang?.phase === 'drawing') return { state: 'hung', message: hang.message };
@@ -224,7 +224,7 @@ export function engineClient(page) {
  * yet, or not whole) and what its hook says, asked with `evaluate` (the page's own, unbounded: the
  * caller races it).
  * @param {import('puppeteer-core').Page['evaluate']} evaluate
- * @returns {Promise<{url: string, frame: number | null, error: string | null, status: string | null, raytracer: boolean, info: object | null}>}
+ * @returns {Promise<{url: string, frame: number | null, error: string | null, status: string | null, shaderEngine: boolean, info: object | null}>}
  */
 export function describePage(evaluate) {
   return evaluate(() => {
@@ -236,7 +236,7 @@ export function describePage(evaluate) {
     /** @type {string | null} */
     let hang = null;
     // the hook may not be there yet, or not whole: this page is being asked why it is stuck
-    const hook = /** @type {Partial<EngineHook> | undefined} */ (/** @type {Partial<HookedWindow>} */ (window).raytracer);
+    const hook = /** @type {Partial<EngineHook> | undefined} */ (/** @type {Partial<HookedWindow>} */ (window).shaderEngine);
     try {
       const { fileName, origin, time, playing, width, height } = hook?.info?.() ?? {};
       info = hook?.info ? { fileName, origin, time, playing, width, height } : null;
@@ -249,7 +249,7 @@ export function describePage(evaluate) {
       frame: marks.frame ?? null,
       error: marks.error ?? null,
       status: marks.status ?? hang,
-      raytracer: Boolean(/** @type {HookedWindow} */ (window).raytracer),
+      shaderEngine: Boolean(/** @type {HookedWindow} */ (window).shaderEngine),
       info,
     };
   });

@@ -9,9 +9,9 @@
 const POLL_MS = 250;
 
 /**
- * Runs `method` of window.raytracer with `request` on the page of `client` until it settles, and
+ * Runs `method` of window.shaderEngine with `request` on the page of `client` until it settles, and
  * returns its value. `progress` is called after each ask with the work's count so far
- * (window.raytracer's `progressOf` reading: 'recording' for record and frameAt, 'stillFrames'
+ * (window.shaderEngine's `progressOf` reading: 'recording' for record and frameAt, 'stillFrames'
  * for a converge). A converge sets the live `controls` it is given first (the raytracer's
  * sample-count overlay off: the caller knows its shader). Rejects with the page's error, or with
  * `hung` set when the watchdog gave up on the shader. With `limits` (the command line's watchdog, view.js), a page that leaves an ask unanswered for

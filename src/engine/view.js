@@ -2,7 +2,7 @@
 // through, the page tests' (tests/harness/page.js renderView), the scripts' and the command
 // line's (src/cli/render.js, which draws the goldens too: tests/harness/goldens.js). A view is a query of the page's URL contract
 // (src/shared/url-params.js: ?shader=…&size=…&time=…&NAME=value); a fresh page loads it, a page
-// that is already loaded is brought to it by window.raytracer.open(), which gives what a fresh
+// that is already loaded is brought to it by window.shaderEngine.open(), which gives what a fresh
 // load gives (tests/page-open.test.js).
 
 /**

@@ -1,8 +1,8 @@
 // Every wait on a page ends, and says why: the pages the test harness (tests/harness/page.js) and
 // the command line (src/cli/) open have waits (evaluate, waitForFunction, goto, ...) that each
 // have a timeout shorter than the test's or the command's, and fail at once when the page or the browser crashes, with what the page was doing (its frame count, the
-// error it reports, the message it shows, what window.raytracer.info() says) in the message.
-// Without this a hung `raytracer.ready` ran into vitest's 120 s test timeout with no word about
+// error it reports, the message it shows, what window.shaderEngine.info() says) in the message.
+// Without this a hung `shaderEngine.ready` ran into vitest's 120 s test timeout with no word about
 // the page, and a wait on a crashed page never ended (puppeteer settles it only when the page is
 // closed).
 
@@ -107,7 +107,7 @@ export function watchPage(page, browser, { waitTimeoutMs = WAIT_TIMEOUT_MS } = {
     return (
       `The page (${state.url.length > 120 ? `${state.url.slice(0, 117)}...` : state.url}): frames drawn ${state.frame ?? '(none)'}; error ${state.error ?? '(none)'}; ` +
       `message shown ${state.status ? JSON.stringify(state.status.slice(0, 500)) : '(none)'}; ` +
-      `window.raytracer ${state.raytracer ? `info() ${JSON.stringify(state.info)}` : '(none)'}.`
+      `window.shaderEngine ${state.shaderEngine ? `info() ${JSON.stringify(state.info)}` : '(none)'}.`
     );
   }
 

@@ -1,6 +1,6 @@
 // The engine page's entry (engine.html): only what draws, for the command line. The app (its
 // Shadertoy inputs, passes and render worker), the recorder, the watchdog and the engine's hook
-// (hook/engine-hook.js: window.raytracer), and none of the interactive page's widgets (ui/, the
+// (hook/engine-hook.js: window.shaderEngine), and none of the interactive page's widgets (ui/, the
 // inspector, kept work) nor the built-in raytracer (shaders/raytrace.glsl, src/raytracer/), whose
 // code the engine page never loads (tests/engine-boundaries.test.js walks its imports; the lint
 // rule in eslint.config.js keeps them out). A view is opened as on the interactive page

@@ -21,7 +21,7 @@ export function showStatus(text) {
 /**
  * Keeps the status line in step with the app: a compile error while no shader runs, the
  * watchdog's message while a band goes unfinished.
- * @param {import('./app/app.js').RaytracerApp} app
+ * @param {import('./app/app.js').ShaderApp} app
  * @param {import('./hook/engine-hook.js').EngineHook} hook
  */
 export function followStatus(app, hook) {

@@ -12,7 +12,7 @@ import { deserializeProject, serializeProject } from './io/project-files.js';
 import { BUILTIN_BASE } from './io/share-link.js';
 import { sayOnNote, showKeptOffer, showRestoredNote } from './ui/notices.js';
 
-/** @typedef {import('./app/app.js').RaytracerApp} RaytracerApp */
+/** @typedef {import('./app/app.js').ShaderApp} ShaderApp */
 /** @typedef {import('./app/app.js').ShaderVersion} ShaderVersion */
 /** @typedef {import('../shadertoy/multipass.js').MultipassShader} MultipassShader */
 /** @typedef {import('./io/kept-source.js').NamedSource} NamedSource */
@@ -25,7 +25,7 @@ function reopened() {
 
 export class KeptWork {
   /**
-   * @param {RaytracerApp} app
+   * @param {ShaderApp} app
    * @param {string} builtinSource the built-in raytracer's text (a link to an edit of it says so)
    * @param {KeptSource} [store] where the edits are kept (the browser's localStorage)
    */
@@ -90,7 +90,7 @@ export class KeptWork {
    * set aside and offered, never run in its place.
    * @param {string} pageKey the file's URL or name as the page was given it (a link's own shader
    *   is kept by its name and text instead)
-   * @param {{project: MultipassShader, from: {name: string, origin: RaytracerApp['origin'], info?: object | null}}} first what the page loaded
+   * @param {{project: MultipassShader, from: {name: string, origin: ShaderApp['origin'], info?: object | null}}} first what the page loaded
    * @returns {(() => ShaderVersion) | null} edits restored: the file, to run while they do not compile
    */
   open(pageKey, { project, from }) {

@@ -1,7 +1,7 @@
 // Entry point of the interactive page (index.html): reads the URL, starts the app (app/) on the
 // page's canvas with the built-in raytracer (shaders/raytrace.glsl, or the shader a link or
 // ?shader= names), builds the page's widgets (ui/), shows what the app reports (ui/notices.js:
-// the overlay, the notes, the toasts) and installs window.raytracer (hook/page-hook.js: the
+// the overlay, the notes, the toasts) and installs window.shaderEngine (hook/page-hook.js: the
 // engine's hook and the widgets' methods). The raytracer's own parts plug in here: its
 // convergence (src/raytracer/convergence.js) and its debug view's note (extra-samples.js).
 
@@ -37,7 +37,7 @@ async function start() {
   const { app, params } = started;
   app.converge.use(raytracerConvergence);
   const noticeAfterCompile = showAppOnPage(app, overlay);
-  const recorder = new Recorder(app); // the page's: the Record dialog and window.raytracer share it
+  const recorder = new Recorder(app); // the page's: the Record dialog and window.shaderEngine share it
   const ui = installUi(app, { builtinSource, recorder, viewNote: extraSamplesViewNote });
   overlay.onLine = (line, pass) => ui.editor.goToLine(line, pass);
   // what opening a view reports (open-view.js), shown as a person sees it
@@ -48,7 +48,7 @@ async function start() {
   /** @type {import('./open-view.js').KeepWork} */
   const keep = (pageKey, first) => ui.kept.open(pageKey, first);
   /**
-   * window.raytracer.open(query): the page as a fresh load of `query` (a URL's ?… and #…) gives
+   * window.shaderEngine.open(query): the page as a fresh load of `query` (a URL's ?… and #…) gives
    * it, its widgets too: the inspector off, the notes of the view before gone, the panel at the
    * view's scale and cap.
    * @param {string} query
@@ -82,7 +82,7 @@ async function start() {
   return app;
 }
 
-/** @type {import('./app/app.js').RaytracerApp | null} */
+/** @type {import('./app/app.js').ShaderApp | null} */
 let app = null;
 start().then((started) => (app = started));
 

@@ -2,7 +2,7 @@
 // ?shader= file, or the page's built-in shader), its controls, size, clock, mouse and channels,
 // the edits kept for it (the interactive page's kept-work.js, given as `keep`), and the notes on
 // what it could not have. Both pages' own loads (main.js, engine-main.js) and
-// window.raytracer.open() (hook/engine-hook.js) go through openView, so that a page put in a
+// window.shaderEngine.open() (hook/engine-hook.js) go through openView, so that a page put in a
 // state by open() is the page a fresh load of that URL gives (tests/page-open.test.js holds the
 // two pixel-identical).
 //
@@ -17,7 +17,7 @@ import { readShader } from './io/open-shader.js';
 import { CHANNEL_PARAMS } from '../shared/url-params.js';
 import { singlePass } from '../shadertoy/multipass.js';
 
-/** @typedef {import('./app/app.js').RaytracerApp} RaytracerApp */
+/** @typedef {import('./app/app.js').ShaderApp} ShaderApp */
 /** @typedef {import('./io/hang-guard.js').HangGuard} HangGuard */
 /** @typedef {ReturnType<typeof import('../shared/url-params.js').parseUrlParams>} UrlParams */
 /** @typedef {import('./app/events.js').Notice} Notice */
@@ -25,7 +25,7 @@ import { singlePass } from '../shadertoy/multipass.js';
 /**
  * @typedef {object} FirstSource the shader the page opens with
  * @property {import('../shadertoy/multipass.js').MultipassShader} project
- * @property {{name: string, origin: RaytracerApp['origin'], url?: string | null, info?: object | null}} from
+ * @property {{name: string, origin: ShaderApp['origin'], url?: string | null, info?: object | null}} from
  * @property {Notice} [notice]
  */
 /**
@@ -127,7 +127,7 @@ const plainWarning = (warning) => warning.replace(/^(URL parameter |URL: )/, '')
 /**
  * The shader about to run is the one that hung last time (io/hang-guard.js): run the last one that
  * finished a frame instead, say so, and offer the text that hung back to the editor, not run.
- * @param {RaytracerApp} app
+ * @param {ShaderApp} app
  */
 function avoidHungShader(app) {
   const guard = /** @type {HangGuard} */ (app.hangGuard);
@@ -152,7 +152,7 @@ function avoidHungShader(app) {
 
 /**
  * Runs a shader as it ran before (its tabs and control values).
- * @param {RaytracerApp} app
+ * @param {ShaderApp} app
  * @param {ShaderVersion} version
  */
 function runAgain(app, version) {
@@ -163,14 +163,14 @@ function runAgain(app, version) {
 /**
  * Brings the page to the view `params` (parseUrlParams of a URL) and `hash` describe, as a load
  * of that URL does: on the page's own load with the app just started, or again later
- * (window.raytracer.open) with the page as it was left: then what the last view left behind (the
+ * (window.shaderEngine.open) with the page as it was left: then what the last view left behind (the
  * controls' values, the clock, the channels) goes first; the interactive page clears its own
  * widgets (the inspector, its notes) itself (main.js). Resolves once the view's first frame is
  * drawn; rejects with the compile error when its shader does not compile. The interactive page's
  * own load runs its built-in shader, with a notice, when the shader asked for cannot be had;
- * `strict` (the engine page's load) and window.raytracer.open() (`again`) reject with why
+ * `strict` (the engine page's load) and window.shaderEngine.open() (`again`) reject with why
  * instead: a render of the built-in in its place would claim what did not happen.
- * @param {RaytracerApp} app
+ * @param {ShaderApp} app
  * @param {UrlParams} params
  * @param {{hash: string, again?: boolean, strict?: boolean, keep?: KeepWork}} options keep: the
  *   interactive page's kept work (none on the engine page)
@@ -228,7 +228,7 @@ export async function openView(app, params, { hash, again = false, strict = agai
  * What the app holds from the view before, undone, so that the next view starts as a fresh page
  * would: the clock stopped at 0 with the view's play state, speed, mouse, size and channels, and
  * no control values carried over.
- * @param {RaytracerApp} app
+ * @param {ShaderApp} app
  * @param {UrlParams} params
  */
 async function leaveView(app, params) {

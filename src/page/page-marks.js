@@ -10,7 +10,7 @@
 // the command line asks a page that stopped answering what it was doing (src/engine/client.js
 // describePage), before its hook may be there, and reads no attribute or element of the page.
 
-/** @typedef {import('./app/app.js').RaytracerApp} RaytracerApp */
+/** @typedef {import('./app/app.js').ShaderApp} ShaderApp */
 
 /**
  * The page's marks as data: frames drawn, the start-up or compile error, the context and the
@@ -27,7 +27,7 @@ export function pageMarks() {
 
 /**
  * Keeps the attributes in step with what the app reports.
- * @param {RaytracerApp} app
+ * @param {ShaderApp} app
  */
 export function markApp(app) {
   const root = document.documentElement.dataset;

@@ -4,7 +4,7 @@
 // WebGL2, a worker that did not come up), null, after `failed` has said so (each page in its own
 // way, and each installs its failed hook: hook/failed-hook.js).
 
-import { RaytracerApp } from './app/app.js';
+import { ShaderApp } from './app/app.js';
 import { parseUrlParams } from '../shared/url-params.js';
 import { fetchMedia, loadChannel, shaderName } from './io/shader-loader.js';
 import { HangGuard, watchHangs } from './io/hang-guard.js';
@@ -13,14 +13,14 @@ import { builtinName } from './open-view.js';
 /**
  * Starts the app on #view at the view of the page's URL. Null when it could not start.
  * @param {(error: Error) => void} failed says that the page could not start, and why
- * @returns {Promise<{app: RaytracerApp, params: ReturnType<typeof parseUrlParams>} | null>}
+ * @returns {Promise<{app: ShaderApp, params: ReturnType<typeof parseUrlParams>} | null>}
  */
 export async function startPage(failed) {
   const canvas = /** @type {HTMLCanvasElement} */ (document.getElementById('view'));
   const params = parseUrlParams(location.search, location.href);
   let app;
   try {
-    app = await RaytracerApp.start({
+    app = await ShaderApp.start({
       canvas,
       loadChannel,
       fetchMedia,

@@ -114,7 +114,7 @@ export function decodeRgba(base64, width, height, what) {
 
 /**
  * The page renderView draws on, kept for the rest of the test file: loaded at the first view's
- * URL, then brought to each next view by window.raytracer.open() (src/page/open-view.js), which
+ * URL, then brought to each next view by window.shaderEngine.open() (src/page/open-view.js), which
  * gives what a fresh load of that URL gives (tests/page-open.test.js) without loading the page
  * again. Closed by disconnect(), and after a view that failed (the next one gets a fresh page).
  * @type {{page: import('puppeteer-core').Page, errors: string[], context: any} | null}
@@ -129,10 +129,10 @@ async function closeViewPage() {
 
 /**
  * Brings the page to a view (tests/helpers/views.js: a fresh load for the first view of a test file,
- * window.raytracer.open() after), waits until its first frame, and reads one
+ * window.shaderEngine.open() after), waits until its first frame, and reads one
  * rendered frame. Throws if the page reports a WebGL/compile error, logs a console error or
  * throws, renders a frame of the wrong size, or does not report the view's controls and time as
- * its current values (window.raytracer.info()).
+ * its current values (window.shaderEngine.info()).
  * @returns {Promise<{width:number, height:number, data:Buffer, url:string, frame:number, info:object}>}
  */
 export async function renderView(view) {

@@ -26,8 +26,8 @@ async function warmUp(browser, baseUrl) {
   const { page } = await openPage(browser, { waitTimeoutMs: WAIT_TIMEOUT_MS });
   try {
     await page.goto(`${baseUrl}/?size=32x18&time=0`, { waitUntil: 'load' });
-    await page.waitForFunction(() => window.raytracer || document.documentElement.dataset.error);
-    await page.evaluate(() => window.raytracer?.ready.catch(() => {}));
+    await page.waitForFunction(() => window.shaderEngine || document.documentElement.dataset.error);
+    await page.evaluate(() => window.shaderEngine?.ready.catch(() => {}));
   } catch (error) {
     // the tests report it for themselves; this says why they may start slowly
     console.warn(`harness warm-up: ${error.message.split('\n')[0]}`);

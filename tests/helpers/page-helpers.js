@@ -42,7 +42,7 @@ export async function withServedDir(prefix, body) {
 
 /**
  * Whether this test file's withPage calls share one page (sharePageAcrossTests): the second and
- * later `goto`s bring it to their view with window.raytracer.open(), which gives what a fresh
+ * later `goto`s bring it to their view with window.shaderEngine.open(), which gives what a fresh
  * load of that URL gives (tests/page-open.test.js), instead of loading the page again.
  */
 let sharing = false;
@@ -51,7 +51,7 @@ let shared = null;
 
 /**
  * For a test file whose tests are not about loading the page: its withPage calls share one page,
- * and each `goto` after the first is window.raytracer.open() (a page load is most of a short
+ * and each `goto` after the first is window.shaderEngine.open() (a page load is most of a short
  * test). Call it at the top of the file. The shared page has the production timeouts and the
  * deterministic clocks; a withPage given other ones, or a beforeLoad, gets a page of its own.
  */
@@ -100,7 +100,7 @@ export async function withPage(body, { viewport, beforeLoad, deterministic = tru
     if (shares && session.loaded && base === context.baseUrl && expectReady) {
       const outcome = await page.evaluate(
         (q) =>
-          window.raytracer.open(q).then(
+          window.shaderEngine.open(q).then(
             () => 'ok',
             (e) => `open rejected: ${e?.message ?? e}`,
           ),
@@ -110,11 +110,11 @@ export async function withPage(body, { viewport, beforeLoad, deterministic = tru
       return;
     }
     await page.goto(`${base}/${query}`, { waitUntil: 'load' });
-    await page.waitForFunction(() => window.raytracer || document.documentElement.dataset.error, { polling: 50 });
+    await page.waitForFunction(() => window.shaderEngine || document.documentElement.dataset.error, { polling: 50 });
     session.loaded = base === context.baseUrl;
     if (expectReady) {
       const outcome = await page.evaluate(() =>
-        window.raytracer.ready.then(
+        window.shaderEngine.ready.then(
           () => 'ok',
           (e) => `ready rejected: ${e?.message ?? e}`,
         ),
@@ -150,9 +150,9 @@ export async function withControl(page, key) {
   await page.keyboard.up('Control');
 }
 
-/** window.raytracer.readPixels(): a new frame, rows top to bottom. */
+/** window.shaderEngine.readPixels(): a new frame, rows top to bottom. */
 export async function readPixels(page) {
-  const r = await page.evaluate(() => window.raytracer.readPixels());
+  const r = await page.evaluate(() => window.shaderEngine.readPixels());
   return { width: r.width, height: r.height, data: decodeRgba(r.data, r.width, r.height, 'readPixels') };
 }
 
@@ -163,7 +163,7 @@ export async function readPixels(page) {
  */
 export async function nextFrame(page) {
   await page.evaluate(() => {
-    window.__nextFrame = window.raytracer.nextFrame();
+    window.__nextFrame = window.shaderEngine.nextFrame();
   });
   return () =>
     page
@@ -172,7 +172,7 @@ export async function nextFrame(page) {
 }
 
 export async function info(page) {
-  return page.evaluate(() => window.raytracer.info());
+  return page.evaluate(() => window.shaderEngine.info());
 }
 
 /** RGB of the pixel at (x, y), y counted from the top. */
@@ -283,7 +283,7 @@ export async function openEditor(page) {
 
 /** The editor's whole text (compiled or not). */
 export async function editorText(page) {
-  return page.evaluate(() => window.raytracer.editorSource());
+  return page.evaluate(() => window.shaderEngine.editorSource());
 }
 
 /**

@@ -65,11 +65,11 @@ await withHarness(async (context) => {
   try {
     await page.setViewport(PAGE_VIEWPORT);
     await page.goto(`${(await harnessContext()).baseUrl}/?time=0`, { waitUntil: 'load' });
-    await page.waitForFunction(() => window.raytracer, { polling: 50 }); // installed once the render worker runs
-    await page.evaluate(() => window.raytracer.ready);
+    await page.waitForFunction(() => window.shaderEngine, { polling: 50 }); // installed once the render worker runs
+    await page.evaluate(() => window.shaderEngine.ready);
     const edit = await page.$('::-p-aria([name="Edit shader"])');
     if (edit) await edit.click();
-    await page.evaluate(() => window.raytracer.readPixels()); // one more frame, with the editor open
+    await page.evaluate(() => window.shaderEngine.readPixels()); // one more frame, with the editor open
     const pageFile = path.join(REPO_ROOT, 'public', 'page.png');
     await page.screenshot({ path: pageFile });
     if (errors.length) throw new Error(`the page logged errors:\n  ${errors.join('\n  ')}`);
@@ -87,12 +87,12 @@ async function inspectorPicture() {
   try {
     await page.setViewport(PAGE_VIEWPORT);
     await page.goto(`${(await harnessContext()).baseUrl}/?time=0`, { waitUntil: 'load' });
-    await page.waitForFunction(() => window.raytracer, { polling: 50 });
-    await page.evaluate(() => window.raytracer.ready);
-    const compared = await page.evaluate(() => window.raytracer.compareWithFloat64());
+    await page.waitForFunction(() => window.shaderEngine, { polling: 50 });
+    await page.evaluate(() => window.shaderEngine.ready);
+    const compared = await page.evaluate(() => window.shaderEngine.compareWithFloat64());
     const { width, height } = compared;
     const [x, y] = pixelOf(PINNED, width, height);
-    const readout = await page.evaluate((px, py) => window.raytracer.inspect(px, py), x, y);
+    const readout = await page.evaluate((px, py) => window.shaderEngine.inspect(px, py), x, y);
     const box = await page.$eval('#view', (c) => {
       const r = c.getBoundingClientRect();
       return { left: r.left, top: r.top, width: r.width, height: r.height };

@@ -35,13 +35,13 @@ import { MediaLibrary } from '../inputs/media-library.js';
 /**
  * A shader as it ran: its tabs, where it came from, its control values, and which load of a
  * shader it is (a new number each time a shader replaces another: app.loadProject).
- * @typedef {{project: MultipassShader, info: object | null, name: string, origin: RaytracerApp['origin'], url: string | null, values?: Record<string, any>, load?: number}} ShaderVersion
+ * @typedef {{project: MultipassShader, info: object | null, name: string, origin: ShaderApp['origin'], url: string | null, values?: Record<string, any>, load?: number}} ShaderVersion
  */
 /**
  * Where a shader given to loadProject comes from. `continues`: it is the shader on screen going
  * on (an edit typed in the editor, "Converge when still"), whose clock runs on; anything else is
  * a new shader, which starts at iFrame 0 (Shadertoy's contract).
- * @typedef {{name?: string, origin?: RaytracerApp['origin'], url?: string|null, info?: object | null, continues?: boolean}} ProjectFrom
+ * @typedef {{name?: string, origin?: ShaderApp['origin'], url?: string|null, info?: object | null, continues?: boolean}} ProjectFrom
  */
 
 /**
@@ -51,9 +51,9 @@ import { MediaLibrary } from '../inputs/media-library.js';
  */
 
 /** @extends {Emitter<AppEvents>} */
-export class RaytracerApp extends Emitter {
+export class ShaderApp extends Emitter {
   /**
-   * Use RaytracerApp.start (the render worker starts first).
+   * Use ShaderApp.start (the render worker starts first).
    * @param {object} options
    * @param {RenderClient} options.gpu a started render worker's client
    * @param {HTMLCanvasElement} options.canvas
@@ -167,10 +167,10 @@ export class RaytracerApp extends Emitter {
   /**
    * Starts the render worker, then the app. Rejects with WebGL2UnavailableError when there is no
    * WebGL2.
-   * @param {Omit<ConstructorParameters<typeof RaytracerApp>[0], 'gpu'>} options
+   * @param {Omit<ConstructorParameters<typeof ShaderApp>[0], 'gpu'>} options
    */
   static async start(options) {
-    return new RaytracerApp({ ...options, gpu: await RenderClient.start() });
+    return new ShaderApp({ ...options, gpu: await RenderClient.start() });
   }
 
   // ---- source and controls ---------------------------------------------------------------------

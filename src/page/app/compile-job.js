@@ -8,7 +8,7 @@
 import { hostControlBlock } from '../../shadertoy/header.js';
 import { controlDefaults, projectControls } from '../../shadertoy/controls.js';
 
-/** @typedef {import('./app.js').RaytracerApp} RaytracerApp */
+/** @typedef {import('./app.js').ShaderApp} ShaderApp */
 /** @typedef {import('./app.js').ShaderVersion} ShaderVersion */
 
 /**
@@ -16,13 +16,13 @@ import { controlDefaults, projectControls } from '../../shadertoy/controls.js';
  * each compile, and what it tells when one ends.
  * @typedef {object} CompileHost
  * @property {import('./render-client.js').RenderClient} gpu the render worker (contextLost, ask)
- * @property {RaytracerApp['version']} version the shader as it is now
+ * @property {ShaderApp['version']} version the shader as it is now
  * @property {() => string} hostBlock the controls' block with their current values, as the shader compiles now
  *   (header.js's hostControlBlock; empty when the shader's block could not be read)
  * @property {(listener: () => void) => void} onceContext calls `listener` at the app's next 'context' event
  * @property {(...args: import('./events.js').AppEvents['compile']) => void} emitCompile the app's 'compile' event
  * @property {() => void} requestFrame a frame drawn (FrameLoop.request)
- * @property {() => void} startClock a newly loaded shader starts at iFrame 0 (RaytracerApp.startClock)
+ * @property {() => void} startClock a newly loaded shader starts at iFrame 0 (ShaderApp.startClock)
  */
 
 export class CompileJob {

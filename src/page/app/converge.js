@@ -9,20 +9,20 @@
 // raytracer's side plugs it in (use(): src/raytracer/convergence.js), the interactive page at
 // its start, the engine page when a converge is first asked for (a chunk loaded then).
 
-/** @typedef {import('./app.js').RaytracerApp} RaytracerApp */
+/** @typedef {import('./app.js').ShaderApp} ShaderApp */
 /** @typedef {import('./app.js').ShaderVersion} ShaderVersion */
 
 /**
  * What converging uses of the app (app.js builds it): the shader it reads, and the app's
  * methods that load, set and compile another (each field stays its owner's).
  * @typedef {object} ConvergeHost
- * @property {() => string} source the Image tab's text (RaytracerApp.source)
+ * @property {() => string} source the Image tab's text (ShaderApp.source)
  * @property {() => boolean} isMultipass whether the shader has a Common tab or a buffer
- * @property {RaytracerApp['version']} version
- * @property {RaytracerApp['loadProject']} loadProject
- * @property {RaytracerApp['runVersion']} runVersion
- * @property {RaytracerApp['applyControls']} applyControls
- * @property {RaytracerApp['pause']} pause
+ * @property {ShaderApp['version']} version
+ * @property {ShaderApp['loadProject']} loadProject
+ * @property {ShaderApp['runVersion']} runVersion
+ * @property {ShaderApp['applyControls']} applyControls
+ * @property {ShaderApp['pause']} pause
  * @property {() => Promise<void>} compile the app's shader compiled (CompileJob.compile)
  * @property {() => void} requestFrame a frame drawn (FrameLoop.request)
  */

@@ -25,7 +25,7 @@ import { fitGpu } from './canvas-size.js';
  * @property {import('./shadertoy-inputs.js').ShadertoyInputs} inputs the clock and the mouse
  * @property {import('./canvas-size.js').CanvasSize} canvasSize the drawing buffer's size
  * @property {import('../../shadertoy/keyboard.js').KeyboardState} keyboard Shadertoy's keyboard texture
- * @property {() => boolean} readsKeyboard whether some pass reads the keyboard (RaytracerApp.readsKeyboard)
+ * @property {() => boolean} readsKeyboard whether some pass reads the keyboard (ShaderApp.readsKeyboard)
  * @property {(frame: FrameInputs, running: boolean | null) => FrameInputs | Promise<FrameInputs>} withMedia a
  *   frame's inputs with its moving channels' textures at its iTime (Channels.withMedia)
  * @property {() => boolean} isMultipass whether the shader has a Common tab or a buffer

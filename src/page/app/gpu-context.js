@@ -4,11 +4,11 @@
 // after a hang, the one to compile is the last shader that finished a frame (io/hang-guard.js),
 // not the one that hung.
 
-/** @typedef {import('./app.js').RaytracerApp} RaytracerApp */
+/** @typedef {import('./app.js').ShaderApp} ShaderApp */
 
 /**
  * Follows the worker's context: 'context' and 'state' events, and on its return a compile.
- * @param {RaytracerApp} app
+ * @param {ShaderApp} app
  */
 export function watchContext(app) {
   app.gpu.on('context', (_, lost) => {
@@ -32,7 +32,7 @@ export function watchContext(app) {
 
 /**
  * Gives the worker the control uniforms and the channels again (a new worker, a new context).
- * @param {RaytracerApp} app
+ * @param {ShaderApp} app
  */
 function resend(app) {
   app.gpu.tell('controlUniforms', { controls: app.controls, values: app.values });
@@ -45,7 +45,7 @@ function resend(app) {
  * the last shader a frame was finished with, in a new one. On a real GPU that draws at once
  * (the browser resets a GPU held too long); on SwiftShader the endless draw keeps the GPU
  * process busy, and the new worker waits with it.
- * @param {RaytracerApp} app
+ * @param {ShaderApp} app
  */
 export async function goBack(app) {
   const back = app.frames.lastFinished;

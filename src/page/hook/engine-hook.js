@@ -1,4 +1,4 @@
-// window.raytracer on the engine page (installEngine): what a headless run needs of the engine
+// window.shaderEngine on the engine page (installEngine): what a headless run needs of the engine
 // and no more. The command line (src/engine/client.js), the test harness and the benchmark drive
 // it; the interactive page adds its own widgets' methods for its tests (page-hook.js). Each
 // method is documented here once; the hook's type is the class itself (EngineHook: the command
@@ -91,7 +91,7 @@ import { hasSound, sampleRange, soundSamples } from '../sound/samples.js';
 import { markApp } from '../page-marks.js';
 import { EngineState } from './engine-state.js';
 
-/** @typedef {import('../app/app.js').RaytracerApp} RaytracerApp */
+/** @typedef {import('../app/app.js').ShaderApp} ShaderApp */
 /** An image read back: base64 RGBA8, rows top to bottom. @typedef {{width: number, height: number, data: string}} HookImage */
 
 /**
@@ -117,7 +117,7 @@ export class EngineHook {
   #state;
 
   /**
-   * @param {RaytracerApp} app
+   * @param {ShaderApp} app
    * @param {EngineHost} host
    */
   constructor(app, { ready, open, recorder }) {
@@ -367,7 +367,7 @@ export class EngineHook {
 
 /**
  * Installs the engine's hook on the window for `app`, with the page's marks (page-marks.js).
- * @param {RaytracerApp} app
+ * @param {ShaderApp} app
  * @param {EngineHost} host
  */
 export function installEngine(app, host) {
@@ -376,12 +376,12 @@ export function installEngine(app, host) {
 }
 
 /**
- * Puts `hook` on the window as window.raytracer.
+ * Puts `hook` on the window as window.shaderEngine.
  * @template {EngineHook} T
  * @param {T} hook
  * @returns {T}
  */
 export function hookOnWindow(hook) {
-  /** @type {{raytracer: unknown}} */ (/** @type {unknown} */ (window)).raytracer = hook;
+  /** @type {{shaderEngine: unknown}} */ (/** @type {unknown} */ (window)).shaderEngine = hook;
   return hook;
 }

@@ -1,4 +1,4 @@
-// What the engine page says of itself, as data (window.raytracer's notes(), hang() and info():
+// What the engine page says of itself, as data (window.shaderEngine's notes(), hang() and info():
 // engine-hook.js): the same facts the interactive page shows as notes and messages (ui/notices.js),
 // in the same words (words.js), kept from the app's events.
 //
@@ -27,7 +27,7 @@
 import { missingLines } from '../io/project-files.js';
 import { VALUE_NOTES_TITLE, missingNotesTitle, watchdogDetail, watchdogTitle } from '../words.js';
 
-/** @typedef {import('../app/app.js').RaytracerApp} RaytracerApp */
+/** @typedef {import('../app/app.js').ShaderApp} ShaderApp */
 /** A note beside the picture, as data. @typedef {{kind: 'missing' | 'values', title: string, lines: string[]}} HookNote */
 
 export class EngineState {
@@ -39,7 +39,7 @@ export class EngineState {
   /** 'shader-compile' while no shader could run (page-marks.js says the same as data-error). @type {string | null} */
   #compileError = null;
 
-  /** @param {RaytracerApp} app */
+  /** @param {ShaderApp} app */
   constructor(app) {
     this.#app = app;
     app.on('values', (_, lines) => (this.#valueLines = lines));

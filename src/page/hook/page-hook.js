@@ -1,4 +1,4 @@
-// window.raytracer on the interactive page (index.html, main.js): the engine's hook
+// window.shaderEngine on the interactive page (index.html, main.js): the engine's hook
 // (engine-hook.js) and the methods of the page's own widgets, which its tests drive: the
 // inspector, the float64 comparison, the link, the editor and the Sound tab's player. The engine
 // page (engine-main.js) has none of these widgets, and so none of these methods.
@@ -34,7 +34,7 @@ export class PageHook extends EngineHook {
   #ui;
 
   /**
-   * @param {import('../app/app.js').RaytracerApp} app
+   * @param {import('../app/app.js').ShaderApp} app
    * @param {import('./engine-hook.js').EngineHost} host
    * @param {PageUi} ui
    */
@@ -101,7 +101,7 @@ export class PageHook extends EngineHook {
 
 /**
  * Installs the interactive page's hook on the window for `app`: the engine's, and its widgets'.
- * @param {import('../app/app.js').RaytracerApp} app
+ * @param {import('../app/app.js').ShaderApp} app
  * @param {import('./engine-hook.js').EngineHost} host
  * @param {PageUi} ui
  */

@@ -17,7 +17,7 @@ import { extraSampleMask } from '../../raytracer/extra-samples.js';
 import { Emitter } from '../app/events.js';
 import { ReferenceCancelled } from './reference-client.js';
 
-/** @typedef {import('../app/app.js').RaytracerApp} RaytracerApp */
+/** @typedef {import('../app/app.js').ShaderApp} ShaderApp */
 /** @typedef {import('./probe-program.js').ProbeProgram} ProbeProgram */
 /** @typedef {import('./reference-client.js').ReferenceClient} ReferenceClient */
 /** @typedef {{pixels: number, rmse: number, psnr: number, maxAbs: number, over1: number, over2: number, nonFinite: number}} ImageError */
@@ -46,7 +46,7 @@ import { ReferenceCancelled } from './reference-client.js';
 /** @extends {Emitter<ComparisonEvents>} */
 export class Comparison extends Emitter {
   /**
-   * @param {RaytracerApp} app
+   * @param {ShaderApp} app
    * @param {ProbeProgram} program
    * @param {ReferenceClient} reference
    * @param {string} builtinSource the built-in raytracer's text (an edit's code is not the reference's)

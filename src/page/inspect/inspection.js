@@ -15,13 +15,13 @@ import { BoxLayout } from './box-layout.js';
 import { isTyping } from '../ui/keys.js';
 import './inspect.css';
 
-/** @typedef {import('../app/app.js').RaytracerApp} RaytracerApp */
+/** @typedef {import('../app/app.js').ShaderApp} ShaderApp */
 
 /** The page's notes over the canvas (ui/notices.js: the column of the toast and the notes, the view's note; the overlay), which the boxes keep clear of where they can. */
 const notes = () => [...document.querySelectorAll('#messages, .view-note, #overlay')];
 
 /**
- * @param {RaytracerApp} app
+ * @param {ShaderApp} app
  * @param {{stage: HTMLElement, canvas: HTMLCanvasElement, builtinSource: string}} page
  */
 export function installInspection(app, { stage, canvas, builtinSource }) {

@@ -13,7 +13,7 @@ import { Emitter } from '../app/events.js';
 import { objectNames, readPath } from '../../raytracer/path-probe.js';
 import { edgeKind } from '../../raytracer/extra-samples.js';
 
-/** @typedef {import('../app/app.js').RaytracerApp} RaytracerApp */
+/** @typedef {import('../app/app.js').ShaderApp} ShaderApp */
 /** @typedef {import('./probe-program.js').ProbeProgram} ProbeProgram */
 /** @typedef {import('./reference-client.js').ReferenceClient} ReferenceClient */
 /** @typedef {import('../../raytracer/path-probe.js').PathRay} PathRay */
@@ -51,7 +51,7 @@ const LOST = 'The GPU context was lost: the readout comes back with the picture.
 /** @extends {Emitter<InspectorEvents>} */
 export class Inspector extends Emitter {
   /**
-   * @param {RaytracerApp} app
+   * @param {ShaderApp} app
    * @param {ProbeProgram} program the path probe
    * @param {ReferenceClient} reference the float64 reference's workers
    */

@@ -13,7 +13,7 @@ import { hostControlBlock } from '../../shadertoy/header.js';
 import { missingRaytracerFunctions } from '../../raytracer/progressive.js';
 import { PROBE_TEXELS, pathProbeHostBlock, pathProbeProject } from '../../raytracer/path-probe.js';
 
-/** @typedef {import('../app/app.js').RaytracerApp} RaytracerApp */
+/** @typedef {import('../app/app.js').ShaderApp} ShaderApp */
 
 /**
  * Why there is no path while "Converge when still" runs the raytracer's progressive form: each of
@@ -24,7 +24,7 @@ const CONVERGING =
   'the path and the float64 colour are of one frame of the raytracer, not of the mean that "Converge when still" sums: turn that off (Controls → View) to see them';
 
 export class ProbeProgram {
-  /** @param {RaytracerApp} app */
+  /** @param {ShaderApp} app */
   constructor(app) {
     this.app = app;
     /** The key of the probe the worker holds (null: none). @type {string | null} */

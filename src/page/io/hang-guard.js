@@ -79,7 +79,7 @@ export class HangGuard {
 
 /**
  * Watches an app: notes a hang, clears the note when a frame finishes after all.
- * @param {import('../app/app.js').RaytracerApp} app
+ * @param {import('../app/app.js').ShaderApp} app
  * @param {HangGuard} guard
  */
 export function watchHangs(app, guard) {

@@ -5,13 +5,13 @@
 import { isJsonName, readShaderText } from './project-files.js';
 import { fetchShader, shaderName } from './shader-loader.js';
 
-/** @typedef {import('../app/app.js').RaytracerApp} RaytracerApp */
+/** @typedef {import('../app/app.js').ShaderApp} ShaderApp */
 /** @typedef {import('../../shadertoy/multipass.js').MultipassShader} MultipassShader */
 
 /**
  * Where a shader's text came from.
  * @typedef {object} ShaderFrom
- * @property {RaytracerApp['origin']} origin
+ * @property {ShaderApp['origin']} origin
  * @property {string} [name] its name in messages and downloads; omitted: a Shadertoy export's
  *   own name (else `fileName`, else "untitled"), and a plain shader `fileName` or, without one,
  *   the page's current name
@@ -26,7 +26,7 @@ import { fetchShader, shaderName } from './shader-loader.js';
  * JSON that is not a Shadertoy shader.
  * @param {string} text
  * @param {ShaderFrom} from
- * @returns {{project: MultipassShader, notes: string[], from: {name?: string, origin: RaytracerApp['origin'], url: string | null, info: object | null}}}
+ * @returns {{project: MultipassShader, notes: string[], from: {name?: string, origin: ShaderApp['origin'], url: string | null, info: object | null}}}
  */
 export function readShader(text, { origin, name, fileName, url = null, json = false }) {
   const { model, info, notes } = readShaderText(text, { json: json || (url !== null && isJsonName(url)) });
@@ -38,7 +38,7 @@ export function readShader(text, { origin, name, fileName, url = null, json = fa
  * Reads a shader's text and runs it. Throws at once, with a readable reason, for a text that is
  * not a shader; else returns it as read, with `running`, which resolves once it runs and rejects
  * with the compile error (the last shader that compiled keeps running then).
- * @param {RaytracerApp} app
+ * @param {ShaderApp} app
  * @param {string} text
  * @param {ShaderFrom} from
  * @param {(loaded: ReturnType<typeof readShader>) => void} [beforeRun] called between reading and running
@@ -53,7 +53,7 @@ export function openShader(app, text, from, beforeRun = () => {}) {
 /**
  * Fetches a shader from the page's own server and runs it, as ?shader= does: resolves once it
  * runs, rejects with why it could not be had, read or compiled.
- * @param {RaytracerApp} app
+ * @param {ShaderApp} app
  * @param {string} url
  */
 export async function openShaderUrl(app, url) {

@@ -10,7 +10,7 @@ import { fitGpu } from '../app/canvas-size.js';
 import { addSoundTrack } from '../sound/sound-track.js';
 import { hasSound, sampleRange, soundSamples } from '../sound/samples.js';
 
-/** @typedef {import('../app/app.js').RaytracerApp} RaytracerApp */
+/** @typedef {import('../app/app.js').ShaderApp} ShaderApp */
 /** @typedef {import('../gpu/protocol.js').FrameInputs} FrameInputs */
 
 /**
@@ -187,9 +187,9 @@ function pngWriter({ width, height, frames }) {
   };
 }
 
-/** One recording at a time, of one app; the toolbar's dialog and window.raytracer share it. */
+/** One recording at a time, of one app; the toolbar's dialog and window.shaderEngine share it. */
 export class Recorder {
-  /** @param {RaytracerApp} app */
+  /** @param {ShaderApp} app */
   constructor(app) {
     this.app = app;
     /** @type {AbortController | null} */
@@ -269,7 +269,7 @@ export class Recorder {
    * Runs `work` with the live loop paused and this recorder busy, then puts the page back.
    * @template T
    * @param {RecordRequest} request
-   * @param {(app: RaytracerApp, settings: ReturnType<typeof recordSettings>) => Promise<T>} work
+   * @param {(app: ShaderApp, settings: ReturnType<typeof recordSettings>) => Promise<T>} work
    * @returns {Promise<T>}
    */
   async _frames(request, work) {
@@ -318,7 +318,7 @@ export class Recorder {
 /**
  * The inputs of recorded frame i: time from the frame number, the page's mouse, the date moving
  * on with iTime from the start (the page's fixed date, else the real one when the recording began).
- * @param {RaytracerApp} app
+ * @param {ShaderApp} app
  * @param {number} fps
  * @returns {(i: number) => FrameInputs}
  */

@@ -144,7 +144,7 @@ export async function textFragment(source, name, shipped) {
 
 /**
  * The link for the app's current view, and what it leaves out.
- * @param {import('../app/app.js').RaytracerApp} app
+ * @param {import('../app/app.js').ShaderApp} app
  * @param {{base: string, source: string} | null} [shipped] the file the page ships that the
  *   editor's text is an edit of (BUILTIN_BASE, or its ?shader= URL), if it is one
  * @returns {Promise<{url: string, omitted: string[], tooLong: boolean}>}

@@ -17,11 +17,11 @@ const AHEAD_SECONDS = 2;
 /** Blocks kept as AudioBuffers (6 s each). */
 const BUFFERS_KEPT = 4;
 
-/** @typedef {import('../app/app.js').RaytracerApp} RaytracerApp */
+/** @typedef {import('../app/app.js').ShaderApp} ShaderApp */
 /** @typedef {import('./schedule.js').Plan} Plan */
 
 export class SoundPlayer {
-  /** @param {RaytracerApp} app */
+  /** @param {ShaderApp} app */
   constructor(app) {
     this.app = app;
     /** @type {AudioContext | null} made on the first interaction (unlock) */

@@ -1,18 +1,18 @@
 // The Sound tab's samples as the page asks the render worker for them (sound-pass.js draws
-// them): what the player schedules, the recorder encodes and window.raytracer hands the command
+// them): what the player schedules, the recorder encodes and window.shaderEngine hands the command
 // line.
 
 import { soundPass } from '../../shadertoy/multipass.js';
 import { SAMPLE_RATE } from '../../shadertoy/sound.js';
 
-/** @typedef {import('../app/app.js').RaytracerApp} RaytracerApp */
+/** @typedef {import('../app/app.js').ShaderApp} ShaderApp */
 
-/** Whether the shader in the app has a Sound tab. @param {RaytracerApp} app */
+/** Whether the shader in the app has a Sound tab. @param {ShaderApp} app */
 export const hasSound = (app) => soundPass(app.project) !== null;
 
 /**
  * Samples [first, first + count) of the Sound tab: two 16-bit words a sample (sound.js).
- * @param {RaytracerApp} app
+ * @param {ShaderApp} app
  * @param {number} first
  * @param {number} count
  * @param {number[]} [date] iDate (default: the page's at iTime 0)

@@ -15,7 +15,7 @@ const METER = { width: 40, height: 24 };
 
 /**
  * Makes the player and its widgets, in a group of the toolbar before its frame-time graph.
- * @param {import('../app/app.js').RaytracerApp} app
+ * @param {import('../app/app.js').ShaderApp} app
  * @param {{toolbar: import('../ui/toolbar/toolbar.js').Toolbar, stage: HTMLElement}} where
  */
 export function installSound(app, { toolbar, stage }) {

@@ -7,7 +7,7 @@ import { MAX_LINK_LENGTH, shareLink } from '../io/share-link.js';
 import { exportJson, projectTabs, tabCode } from '../io/project-files.js';
 import { fileStem, jsonFileName, screenshotFileName, tabFileName } from '../io/file-names.js';
 
-/** @typedef {import('../app/app.js').RaytracerApp} RaytracerApp */
+/** @typedef {import('../app/app.js').ShaderApp} ShaderApp */
 
 /**
  * Enters fullscreen with `element`, or leaves it when the page is fullscreen.
@@ -26,7 +26,7 @@ async function toggleFullscreen(element) {
 
 /**
  * The page's actions.
- * @param {RaytracerApp} app
+ * @param {ShaderApp} app
  * @param {object} page
  * @param {HTMLElement} page.stage what goes fullscreen
  * @param {(text: string) => void} page.toast a short confirmation

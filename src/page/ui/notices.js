@@ -10,7 +10,7 @@ import { goBack } from '../app/gpu-context.js';
 import { element } from './dom.js';
 import { VALUE_NOTES_TITLE, watchdogDetail, watchdogTitle } from '../words.js';
 
-/** @typedef {import('../app/app.js').RaytracerApp} RaytracerApp */
+/** @typedef {import('../app/app.js').ShaderApp} ShaderApp */
 /** @typedef {import('./overlay.js').Overlay} Overlay */
 /** @typedef {import('../app/events.js').Notice} Notice */
 
@@ -184,9 +184,9 @@ export function showKeptOffer(parent, name, { open, discard }) {
  * applies: `viewNote` says it for the shader's controls and values (the raytracer's "Extra
  * samples" view with nothing to mark: src/raytracer/extra-samples.js extraSamplesViewNote, which
  * main.js gives), or null.
- * @param {RaytracerApp} app
+ * @param {ShaderApp} app
  * @param {HTMLElement} stage
- * @param {(controls: RaytracerApp['controls'], values: RaytracerApp['values']) => string | null} viewNote
+ * @param {(controls: ShaderApp['controls'], values: ShaderApp['values']) => string | null} viewNote
  */
 export function installViewNote(app, stage, viewNote) {
   const note = element('p', { class: 'view-note', role: 'status', hidden: true });
@@ -207,7 +207,7 @@ export function installViewNote(app, stage, viewNote) {
 /**
  * A compile message as the error box shows it: "Buffer A:12: error: ..." for a tab of a
  * multipass shader, "NAME:12: error: ..." for a single-pass one; the line's text under it.
- * @param {RaytracerApp} app
+ * @param {ShaderApp} app
  * @param {string} fileName
  */
 function messageFormatter(app, fileName) {
@@ -229,7 +229,7 @@ export function showStartupFailure(overlay, error) {
 /**
  * Shows what the app reports: compile errors, an unreadable control block and a lost context in
  * the overlay.
- * @param {RaytracerApp} app
+ * @param {ShaderApp} app
  * @param {Overlay} overlay
  * @returns {(notice: Notice) => void} shows a notice once the next compile succeeds (instead of
  *   hiding the overlay)
@@ -266,7 +266,7 @@ export function showAppOnPage(app, overlay) {
  * never finish; a program's first draw that takes long is still compiling, which SwiftShader
  * does on that draw. Either offers to go back to the last shader that finished a frame; it goes
  * away by itself when the drawing goes on.
- * @param {RaytracerApp} app
+ * @param {ShaderApp} app
  * @param {Overlay} overlay
  */
 function showWatchdog(app, overlay) {

@@ -19,7 +19,7 @@ import { missingLines } from '../io/project-files.js';
 import { openShader } from '../io/open-shader.js';
 import { installInspection } from '../inspect/inspection.js';
 
-/** @typedef {import('../app/app.js').RaytracerApp} RaytracerApp */
+/** @typedef {import('../app/app.js').ShaderApp} ShaderApp */
 /** @typedef {import('./toolbar/frame-readout.js').Activity} Activity */
 
 /** A compile is said in the readout once it has taken this long (a quick one never shows). */
@@ -27,7 +27,7 @@ const COMPILE_SAID_AFTER_S = 1;
 
 /**
  * What the page is doing, for the frame-time readout.
- * @param {RaytracerApp} app
+ * @param {ShaderApp} app
  * @returns {Activity}
  */
 function activity(app) {
@@ -47,7 +47,7 @@ function activity(app) {
 }
 
 /**
- * @param {RaytracerApp} app
+ * @param {ShaderApp} app
  * @param {{builtinSource: string, recorder: import('../io/recorder.js').Recorder,
  *   viewNote: Parameters<typeof installViewNote>[2]}} page the built-in raytracer's text (the
  *   float64 reference is its twin), the page's recorder, and why a debug view of the shader shows

@@ -8,7 +8,7 @@ import { MAX_FPS, MAX_FRAMES, RecordingCancelled } from '../../io/recorder.js';
 import { recordingFileName } from '../../io/file-names.js';
 import { element, placeAbove, saveBlob } from '../dom.js';
 
-/** @typedef {import('../../app/app.js').RaytracerApp} RaytracerApp */
+/** @typedef {import('../../app/app.js').ShaderApp} ShaderApp */
 
 const RECORD_ICON = '<svg viewBox="0 0 16 16" width="14" height="14" fill="currentColor"><circle cx="8" cy="8" r="5"/></svg>';
 
@@ -19,8 +19,8 @@ function field(label, input) {
 
 /**
  * Adds "Record" to the toolbar's output buttons (after "Screenshot"), a view on the page's
- * recorder (main.js owns it, and gives it to window.raytracer too).
- * @param {RaytracerApp} app
+ * recorder (main.js owns it, and gives it to window.shaderEngine too).
+ * @param {ShaderApp} app
  * @param {Recorder} recorder
  * @param {HTMLElement} toolbarRoot
  * @param {(text: string) => void} toast a short confirmation
