@@ -102,20 +102,11 @@ describe('an endless shader fails within the watchdog at every size, and one cas
   // the watchdog's 2 s, plus Chromium's start and the kill (about 8 s on a quiet 2-core machine,
   // 20 s beside other work): well inside the 135 s the 320x180 render took before
   const BOUND_S = 40;
+  /** shaderproof with `args`, on SwiftShader, with a watchdog of 2 s. @param {string[]} args */
+  const watched = (...args) => shaderproof(...args, '--watchdog', '2', '--renderer', 'swiftshader');
   test.each([['320x180'], ['1280x720']])('render at %s', async (size) => {
     write('endless.glsl', ENDLESS);
-    const out = await shaderproof(
-      'render',
-      'endless.glsl',
-      '-o',
-      'endless.png',
-      '--size',
-      size,
-      '--watchdog',
-      '2',
-      '--renderer',
-      'swiftshader',
-    );
+    const out = await watched('render', 'endless.glsl', '-o', 'endless.png', '--size', size);
     expect(out.code).toBe(1);
     expect(out.stderr.trim().split('\n')).toEqual([
       expect.stringMatching(
@@ -130,18 +121,7 @@ describe('an endless shader fails within the watchdog at every size, and one cas
     // a view's still is its frame 0 read back as drawn (client.js startView); a frame more (a
     // late resize used to ask for one, and the read drew one) would hang here until the watchdog
     write('second.glsl', ENDLESS.replace('float s = 0.0;', 'float s = 0.0; if (iFrame < 1) { c = vec4(1.0); return; }'));
-    const out = await shaderproof(
-      'render',
-      'second.glsl',
-      '-o',
-      'second.png',
-      '--size',
-      '64x36',
-      '--watchdog',
-      '2',
-      '--renderer',
-      'swiftshader',
-    );
+    const out = await watched('render', 'second.glsl', '-o', 'second.png', '--size', '64x36');
     expect(out.stderr).toBe('');
     expect(out.code).toBe(0);
     expect([...readPng(path.join(folder, 'second.png')).data.subarray(0, 4)]).toEqual([255, 255, 255, 255]);
@@ -149,20 +129,7 @@ describe('an endless shader fails within the watchdog at every size, and one cas
 
   test("a recording whose third frame never ends: the command line's line, not the page's", async () => {
     write('later.glsl', ENDLESS.replace('float s = 0.0;', 'float s = 0.0; if (iFrame < 2) { c = vec4(1.0); return; }'));
-    const out = await shaderproof(
-      'record',
-      'later.glsl',
-      '-o',
-      'later.zip',
-      '--frames',
-      '6',
-      '--size',
-      '64x36',
-      '--watchdog',
-      '2',
-      '--renderer',
-      'swiftshader',
-    );
+    const out = await watched('record', 'later.glsl', '-o', 'later.zip', '--frames', '6', '--size', '64x36');
     expect(out.code).toBe(1);
     expect(out.stderr.trim().split('\n')).toEqual([
       expect.stringMatching(

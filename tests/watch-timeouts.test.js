@@ -15,7 +15,7 @@ function standIns(ms) {
     setDefaultTimeout() {},
     close: async () => {},
   });
-  const state = { url: 'http://stand-in/', frame: null, error: null, overlay: null, shaderEngine: false, info: null };
+  const state = { url: 'http://stand-in/', frame: null, error: null, status: null, shaderEngine: false, info: null };
   const later = () => new Promise((resolve) => setTimeout(() => resolve(state), ms));
   for (const name of ['evaluate', 'evaluateHandle', 'waitForFunction', 'waitForSelector', 'goto', 'reload', '$eval', '$$eval'])
     page[name] = later;
