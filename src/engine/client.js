@@ -75,7 +75,11 @@ export function engineClient(page) {
         const hook = /** @type {HookedWindow} */ (window).shaderEngine;
         const slot = { settled: /** @type {any} */ (null), view: /** @type {any} */ (null) };
         /** @type {any} */ (window).__view = slot;
-        const opened = opening === null ? hook.ready : hook.open(opening);
+        // what the loop guard found is said of this view alone (loopCuts)
+        const opened = hook
+          .loopCuts(true)
+          .catch(() => null)
+          .then(() => (opening === null ? hook.ready : hook.open(opening)));
         opened
           .then(async () => {
             const { iFrame, ...pixels } = await hook.readFrame();
@@ -143,6 +147,19 @@ export function engineClient(page) {
      * @returns {Promise<{data: string, sampleRate: number}>}
      */
     renderSound: (range) => page.evaluate((r) => /** @type {HookedWindow} */ (window).shaderEngine.renderSound(r), range),
+    /**
+     * What llvmpipe's loop limit cut short since the view began (or the last reset), pass by
+     * pass, and the passes it could not check (src/page/gpu/loop-cuts.js).
+     * @param {boolean} [reset]
+     * @returns {Promise<import('../page/gpu/protocol.js').LoopReport>}
+     */
+    loopCuts: (reset = false) => page.evaluate((r) => /** @type {HookedWindow} */ (window).shaderEngine.loopCuts(r), reset),
+    /**
+     * Whether a frame with a loop cut stops at that band (the default renderer then draws the
+     * shader with SwiftShader) rather than being drawn whole.
+     * @param {boolean} on
+     */
+    stopOnLoopCut: (on) => page.evaluate((o) => /** @type {HookedWindow} */ (window).shaderEngine.stopOnLoopCut(o), on),
     /** Answers at once if the page's thread is free: a heartbeat. */
     ping: () => page.evaluate(() => 0),
 

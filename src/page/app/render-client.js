@@ -78,6 +78,18 @@ export class RenderClient extends Emitter {
     this._started = null;
     /** ImageBitmaps received from this worker, in all (its 'settled' command counts them). */
     this._bitmaps = 0;
+    /** What the loop guard does with a cut (protocol.js 'loopGuard'): told to every worker started. */
+    this._loopGuard = { stopOnCut: false };
+  }
+
+  /**
+   * Whether a frame in which llvmpipe's loop limit cut a loop stops there (the command line
+   * draws it again with SwiftShader) or is drawn whole; kept for the workers started after.
+   * @param {{stopOnCut: boolean}} setting
+   */
+  setLoopGuard(setting) {
+    this._loopGuard = { ...setting };
+    this.tell('loopGuard', this._loopGuard);
   }
 
   async _spawn() {
@@ -94,6 +106,7 @@ export class RenderClient extends Emitter {
       this._started?.reject(new Error(`the render worker failed: ${event.message}`));
     };
     this.tell('init', {});
+    this.tell('loopGuard', this._loopGuard);
     const timer = window.setTimeout(
       () => this._started?.reject(new Error(`the render worker did not start within ${TIMEOUTS.workerStartMs / 1000} s`)),
       TIMEOUTS.workerStartMs,

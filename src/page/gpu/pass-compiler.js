@@ -15,8 +15,13 @@ import { channelTypes, frameSchedule } from '../../shadertoy/multipass.js';
 import { ShaderCompileError } from './errors.js';
 import { verbatimStandIn } from './verbatim-source.js';
 import { CubeBuffer } from './channels/cube-buffer.js';
+import { guardLoops } from '../../shadertoy/loop-guard.js';
 
-/** Compiled materials kept for switching back without a compile: a uniform form, a constant form, and one spare, for each of up to five passes. */
+/**
+ * Compiled materials kept for switching back without a compile: a uniform form, a constant form,
+ * and one spare, for each of up to five passes; twice that on llvmpipe, where a pass with loops
+ * has its guarded form beside it.
+ */
 const MATERIALS_KEPT = 15;
 
 /** @typedef {ReturnType<typeof frameSchedule>[number] & {material: THREE.RawShaderMaterial}} Step */
@@ -40,9 +45,12 @@ export class PassCompiler {
    * @param {THREE.BufferGeometry} geometry the fullscreen triangle
    * @param {THREE.Camera} camera
    * @param {(material: THREE.RawShaderMaterial) => boolean} inUse whether a material is on screen (never disposed here)
+   * @param {import('./loop-cuts.js').LoopCuts} loopCuts where a pass that cannot be guarded is
+   *   said to be unchecked; with `enabled` (llvmpipe), each pass with loops compiles guarded
    */
-  constructor(three, geometry, camera, inUse) {
+  constructor(three, geometry, camera, inUse, loopCuts) {
     this.three = three;
+    this._loopCuts = loopCuts;
     this.camera = camera;
     this._inUse = inUse;
     three.debug.onShaderError = (...args) => this._onShaderError(...args);
@@ -97,7 +105,8 @@ export class PassCompiler {
       try {
         // the Cube A pass has uniforms of its own (cube-buffer.js), its iResolution among them
         const uniforms = pass.kind === 'cubemap' ? () => ({ ...passUniforms(), ...CubeBuffer.ownUniforms() }) : passUniforms;
-        steps.push({ ...step, material: await this._compileMaterial(composed, check, uniforms) });
+        const material = await this._compileMaterial(composed, check, uniforms);
+        steps.push({ ...step, material: await this._guarded(material, composed, uniforms, pass.name) });
       } catch (error) {
         if (!error.messages) throw error;
         // an error in Common is the same error in every pass that includes it: said once
@@ -119,11 +128,43 @@ export class PassCompiler {
    * @param {{code: string, firstSourceLine: number}} composed
    * @param {{userText: string, sections: PassSection[] | null}} check
    * @param {() => Record<string, {value: any}>} uniforms
+   * @param {string} name the pass's name ('Sound'), for what the loop guard says of it
    */
-  async compileOne(composed, check, uniforms) {
-    const material = await this._compileMaterial(composed, check, uniforms);
+  async compileOne(composed, check, uniforms, name) {
+    const material = await this._guarded(await this._compileMaterial(composed, check, uniforms), composed, uniforms, name);
     this._remember(material.fragmentShader, material);
     return material;
+  }
+
+  /**
+   * On llvmpipe, the guarded form of a pass that compiled (src/shadertoy/loop-guard.js), drawn
+   * in its place: the same picture, and where the loop limit cut a loop. The pass as it is, where
+   * it has no loop, or (said as unchecked) where its guarded form cannot be made or compiled.
+   * The plain material is kept either way: its compile is what reports the user's errors.
+   * @param {THREE.RawShaderMaterial} plain
+   * @param {{code: string}} composed
+   * @param {() => Record<string, {value: any}>} uniforms
+   * @param {string} name the pass's name
+   */
+  async _guarded(plain, { code }, uniforms, name) {
+    if (!this._loopCuts.enabled) return plain;
+    const form = guardLoops(code);
+    if (form.code === null) {
+      if (form.reason === 'no loops') this._loopCuts.checkable(name);
+      else this._loopCuts.uncheckable(name, `its loops could not be read (${form.reason})`);
+      return plain;
+    }
+    try {
+      const guarded = await this._compileMaterial({ code: form.code, firstSourceLine: 1 }, { userText: '', sections: null }, uniforms);
+      guarded.userData.loopGuard = true;
+      this._remember(plain.fragmentShader, plain);
+      this._loopCuts.checkable(name);
+      return guarded;
+    } catch (error) {
+      const why = error?.messages?.[0]?.message ?? error?.message ?? String(error);
+      this._loopCuts.uncheckable(name, `its guarded form did not compile (${why})`);
+      return plain;
+    }
   }
 
   /**
@@ -178,7 +219,7 @@ export class PassCompiler {
     this._compiled.delete(fragmentShader);
     this._compiled.set(fragmentShader, material);
     for (const [key, old] of this._compiled) {
-      if (this._compiled.size <= MATERIALS_KEPT) break;
+      if (this._compiled.size <= MATERIALS_KEPT * (this._loopCuts.enabled ? 2 : 1)) break;
       this._compiled.delete(key);
       if (!this._inUse(old)) old.dispose();
     }

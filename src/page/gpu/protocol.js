@@ -91,7 +91,12 @@ import { ShaderCompileError, WebGL2UnavailableError } from './errors.js';
  *   right: src/shadertoy/sound.js); rejects for a shader without one
  * @property {[{inputs: FrameInputs, n: number}, number[]]} bench n whole frames back to back, each
  *   one draw waited for: their times in ms
+ * @property {[{reset: boolean}, LoopReport]} loopCuts what llvmpipe's loop limit cut short since the
+ *   last reset (loop-cuts.js), and the passes drawn unchecked; `enabled`: whether passes are
+ *   guarded at all (on llvmpipe only)
  */
+
+/** @typedef {{enabled: boolean, cuts: import('./loop-cuts.js').LoopCut[], unchecked: import('./loop-cuts.js').UncheckedPass[]}} LoopReport */
 
 /**
  * Commands: name → what the page sends.
@@ -110,6 +115,9 @@ import { ShaderCompileError, WebGL2UnavailableError } from './errors.js';
  *   (FrameInputs.passMedia)
  * @property {{bitmaps: number}} settled the answer to `awaitingPaint`: the page has shown (or
  *   closed) and painted the first `bitmaps` ImageBitmaps the worker sent it
+ * @property {{stopOnCut: boolean}} loopGuard whether a frame in which llvmpipe's loop limit cut a
+ *   loop stops at that band (its picture is thrown away: the command line draws it again with
+ *   SwiftShader) or is drawn whole (the cut is said, the picture kept)
  * @property {{}} loseContext WEBGL_lose_context, for tests of a lost context
  * @property {{}} restoreContext
  */

@@ -50,6 +50,7 @@ function start() {
   canvas.addEventListener('webglcontextrestored', () => {
     // three.js has rebuilt its state; programs and textures are made again from our objects
     renderer().forgetCompiled();
+    renderer().loopCuts.forget();
     bands.contextRestored();
     tell('context', { lost: false });
   });
@@ -74,6 +75,7 @@ const tell = serve(
   {
     async compile({ project, hostBlock, fileName, serial }) {
       try {
+        renderer().loopCuts.unchecked.clear(); // the passes of this shader say again
         const sound = await renderer().sound.compile(project); // the Sound tab, if any (sound-pass.js)
         await renderer().compile(project, hostBlock, fileName, serial);
         if (renderer().installed === serial) renderer().sound.install(sound);
@@ -118,6 +120,8 @@ const tell = serve(
       return renderer().sound.render(first, count, date);
     },
 
+    loopCuts: ({ reset }) => renderer().loopCuts.report(reset),
+
     bench({ inputs, n }) {
       const times = [];
       renderer().setSize(inputs.width, inputs.height);
@@ -158,6 +162,10 @@ const tell = serve(
     passMedia(media) {
       renderer().passMedia.set(media);
       bands.changed();
+    },
+
+    loopGuard({ stopOnCut }) {
+      renderer().loopCuts.stopOnCut = stopOnCut;
     },
 
     settled({ bitmaps: count }) {

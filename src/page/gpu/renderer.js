@@ -28,6 +28,7 @@ import { SoundPass } from '../sound/sound-pass.js';
 import { sendVerbatimSources } from './verbatim-source.js';
 import { flipRows } from '../../shared/pixels.js';
 import { TILE_OFFSET_UNIFORM } from '../../shadertoy/header.js';
+import { LoopCuts } from './loop-cuts.js';
 
 /** @typedef {import('./pass-compiler.js').Step} Step */
 
@@ -67,6 +68,8 @@ export class ShaderRenderer {
     this.mesh = new THREE.Mesh(geometry);
     this.mesh.frustumCulled = false;
     this.scene.add(this.mesh);
+    /** What llvmpipe's loop limit cut short (loop-cuts.js): on llvmpipe, passes are drawn guarded. */
+    this.loopCuts = new LoopCuts(gl);
     /** Compiles the passes (pass-compiler.js); keeps compiled materials, never disposing one on screen. */
     this.compiler = new PassCompiler(
       this.three,
@@ -77,6 +80,7 @@ export class ShaderRenderer {
         this.probe.uses(material) ||
         this.tiledStep?.material === material ||
         this.sound.material === material,
+      this.loopCuts,
     );
 
     /** Where frames are drawn and kept (RGBA8, as the page's canvas): the page shows copies of it. */
@@ -110,6 +114,8 @@ export class ShaderRenderer {
     this.probe = new PixelProbe(this);
     /** The Sound tab (sound-pass.js). */
     this.sound = new SoundPass(this);
+    /** The pass beginStep began, by its name ('Image', 'Buffer A', …): what a loop cut is said of. */
+    this._passName = 'Image';
   }
 
   /** True once some shader has compiled (render() draws nothing before). */
@@ -172,6 +178,7 @@ export class ShaderRenderer {
    * @param {number} height
    */
   beginStep(step, width, height) {
+    this._passName = step.pass?.name ?? 'Image';
     const uniforms = step.material.uniforms;
     for (const name of Object.keys(this.uniforms)) if (!(name in uniforms)) uniforms[name] = this.uniforms[name]; // controls added later
     bindChannels(step, width, height, this.inputs.sources);
@@ -294,7 +301,9 @@ export class ShaderRenderer {
     this.three.setRenderTarget(target, face);
     this.samplers.bind();
     try {
-      this.three.render(this.scene, this.camera);
+      const region = { x, y, width, height, targetWidth: target.width, targetHeight: target.height };
+      const drawing = { pass: this._passName, frame: this.uniforms.iFrame.value };
+      this.loopCuts.around(/** @type {THREE.Material} */ (this.mesh.material), { ...region, ...drawing }, () => this.three.render(this.scene, this.camera));
     } finally {
       this.samplers.unbind(); // a sampler left on a unit would override every texture drawn there later
       this.three.setRenderTarget(null);

@@ -71,6 +71,11 @@
 //                         60, as the site's WAV export), drawn as the site draws them
 //                         (sound/sound-pass.js); `data` is base64 of interleaved little-endian
 //                         Int16 (left, right). Rejects for a shader without a Sound tab.
+//   loopCuts(reset?)      Promise<{enabled, cuts, unchecked}>: what llvmpipe's loop limit cut short
+//                         since the last reset, pass by pass (gpu/loop-cuts.js), and the passes
+//                         drawn unchecked; enabled: whether passes are guarded (on llvmpipe).
+//   stopOnLoopCut(on)     whether a frame with a cut stops at that band (the command line's
+//                         default renderer then draws it again with SwiftShader).
 //   cancelRecording()     stops the recording under way (this one or the Record button's).
 //   recording()           {busy, done, total}: whether a recording is under way, and how many
 //                         frames of the last record() or frameAt() are done, of how many.
@@ -345,6 +350,20 @@ export class EngineHook {
     const { first, count } = sampleRange(time, duration);
     const pcm = toPcm16(await soundSamples(app, first, count));
     return { sampleRate: SAMPLE_RATE, channels: 2, samples: count, data: toBase64(new Uint8Array(pcm.buffer)) };
+  }
+
+  /**
+   * What llvmpipe's loop limit cut short since the last reset (src/page/gpu/loop-cuts.js).
+   * @param {boolean} [reset] start a new log
+   * @returns {Promise<import('../gpu/protocol.js').LoopReport>}
+   */
+  loopCuts(reset = false) {
+    return this.#app.gpu.ask('loopCuts', { reset });
+  }
+
+  /** @param {boolean} on whether a frame with a loop cut stops at that band (its picture thrown away) */
+  stopOnLoopCut(on) {
+    this.#app.gpu.setLoopGuard({ stopOnCut: on });
   }
 
   cancelRecording() {

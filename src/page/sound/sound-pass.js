@@ -56,7 +56,7 @@ export class SoundPass {
     const composed = composeSoundShader(pass.code, { common: project.common, channelTypes: channelTypes(pass) });
     const check = passCheck(project, pass, composed);
     try {
-      const material = await this.renderer.compiler.compileOne(composed, check, () => this.uniforms());
+      const material = await this.renderer.compiler.compileOne(composed, check, () => this.uniforms(), 'Sound');
       material.userData.channelTypes = channelTypes(pass); // what each channel is declared: bindMedia
       return material;
     } catch (error) {
@@ -152,12 +152,16 @@ export class SoundPass {
     this.mesh.material = material;
     const three = this.renderer.three;
     three.setRenderTarget(this.target);
+    const whole = { x: 0, y: 0, width: BLOCK_SIDE, height: BLOCK_SIDE, targetWidth: BLOCK_SIDE, targetHeight: BLOCK_SIDE };
     try {
-      three.render(this.scene, this.renderer.camera);
+      this.renderer.loopCuts.around(material, { ...whole, pass: 'Sound', frame: index }, () =>
+        three.render(this.scene, this.renderer.camera),
+      );
     } finally {
       three.setRenderTarget(null);
     }
     const words = unpackBlock(this.renderer.readTarget(this.target));
+    this.renderer.loopCuts.collect(); // what llvmpipe's loop limit cut in the block (loop-cuts.js)
     this.blocks.set(index, words);
     for (const old of this.blocks.keys()) if (this.blocks.size > BLOCKS_KEPT) this.blocks.delete(old);
     return words;

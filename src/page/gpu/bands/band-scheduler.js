@@ -331,9 +331,16 @@ export class BandScheduler {
     }
     const extent = CubeBuffer.extent(renderer.steps[job.step], job.width, job.height);
     this._planner.measured(extent.width, rows, ms);
+    // what llvmpipe's loop limit cut in the band (loop-cuts.js); told to, a frame with a cut goes
+    // no further: its picture is not the shader's, and a loop that never ends costs the limit in
+    // every pixel
+    const cut = renderer.loopCuts.collect();
     if (job.redo) job.redo = false;
     else job.y += rows;
-    if (job.y >= extent.height && job.step < renderer.steps.length - 1) {
+    if (cut && renderer.loopCuts.stopOnCut) {
+      job.step = renderer.steps.length - 1;
+      job.y = CubeBuffer.extent(renderer.steps[job.step], job.width, job.height).height;
+    } else if (job.y >= extent.height && job.step < renderer.steps.length - 1) {
       renderer.endStep(renderer.steps[job.step]); // a buffer is done: the next pass reads it
       job.step++;
       job.y = 0;
