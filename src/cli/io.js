@@ -96,7 +96,12 @@ export function sessionOptions(values, fallback) {
     throw new UsageError(error.message);
   }
   const seconds = values.watchdog === undefined ? null : readNumber(values.watchdog, '--watchdog', { min: 0.1 });
-  return { renderer, ...watchdogFor(renderer, seconds) };
+  // llvmpipe by default gives way to SwiftShader where its loop limit would cut a loop; asked
+  // for, it draws, and says what it cut (loop-limit.js)
+  const asked = Boolean(values.gpu || values.renderer || process.env[RENDERER_ENV]) || fallback !== 'auto';
+  /** @type {import('./loop-limit.js').LoopLimitMode} */
+  const loopLimit = asked ? 'warn' : 'fallback';
+  return { renderer, loopLimit, ...watchdogFor(renderer, seconds) };
 }
 
 /** A frame slower than this gets a progress line on a terminal. */

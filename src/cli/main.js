@@ -13,6 +13,7 @@ import { runOpen } from './open.js';
 import { runRecord } from './record.js';
 import { outputFormat, renderShader, renderTiled, writeFloatImage, writeImage } from './render.js';
 import { CliError, shaderKind, startSession } from './session.js';
+import { LoopLimitFallback, judgeLoops } from './loop-limit.js';
 import { DEFAULT_JOBS, runTest } from './test/corpus.js';
 import { DEFAULT_SIZE as TEST_SIZE } from './test/manifest.js';
 import { UsageError, VIEW_FLAGS, dateLabel, readNumber, readViewOptions } from './view-options.js';
@@ -243,7 +244,9 @@ async function runRender({ values, positionals }) {
         2,
       );
     sayNotes(file, image.notes, { strict: values.strict });
-    if (format === 'pfm') writeFloatImage(values.output, await session.drawFloat());
+    const floats = format === 'pfm' ? await session.drawFloat() : null;
+    await judgeLoops(session, file, { mode: session.loopLimit, strict: values.strict, warn: io.err });
+    if (floats) writeFloatImage(values.output, floats);
     else writeImage(values.output, image);
     const { label: renderer } = await session.environment();
     const date = /\biDate\b/.test(text) ? `, iDate ${dateLabel(view.date)}` : '';
@@ -272,6 +275,7 @@ async function runRenderWav({ values, positionals }) {
   try {
     const sound = await renderSound(session, file, view, { time, duration });
     sayNotes(file, sound.notes, { strict: values.strict });
+    await judgeLoops(session, file, { mode: session.loopLimit, strict: values.strict, warn: io.err });
     writeWav(values.output, sound);
     const { label: renderer } = await session.environment();
     io.out(`${values.output}: ${wavSummary(sound)}, from ${time} s, ${renderer}, ${((Date.now() - started) / 1000).toFixed(1)} s`);
@@ -337,7 +341,14 @@ export async function main(argv) {
     return 0;
   }
   try {
-    return await spec.run(/** @type {any} */ (args));
+    try {
+      return await spec.run(/** @type {any} */ (args));
+    } catch (error) {
+      if (!(error instanceof LoopLimitFallback)) throw error;
+      // llvmpipe, the default, would have cut a loop short: the whole verb again with SwiftShader
+      io.err(`note: ${error.message}`);
+      return await spec.run(/** @type {any} */ ({ ...args, values: { ...args.values, renderer: 'swiftshader' } }));
+    }
   } catch (error) {
     if (error instanceof UsageError) {
       io.err(`${NAME} ${verb}: ${error.message} ${seeHelp}`);

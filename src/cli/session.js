@@ -55,13 +55,16 @@ const START_VIEW = `${ENGINE_PAGE}?size=2x2&time=0`;
 
 /**
  * @param {{renderer?: import('../engine/renderers.js').RendererName, hangMs?: number, compileHangMs?: number,
+ *   loopLimit?: import('./loop-limit.js').LoopLimitMode,
  *   say?: (line: string) => void, progress?: (state: import('../engine/view.js').ViewProgress | null) => void}} [options]
  *   hangMs: a band of a frame unfinished this long fails (the watchdog: watchdog.js);
- *   compileHangMs: the same for a program's first draw, which compiles it; progress: hears how
- *   far each view has got, every 0.1 s while it draws
+ *   compileHangMs: the same for a program's first draw, which compiles it; loopLimit: what a
+ *   loop cut by llvmpipe's limit does (loop-limit.js: 'warn' draws the frame whole, the others
+ *   stop it at the cut); progress: hears how far each view has got, every 0.1 s while it draws
  */
 export async function startSession({
   renderer = 'swiftshader',
+  loopLimit = 'warn',
   hangMs = WATCHDOG_LIMITS[renderer].hangMs,
   compileHangMs = WATCHDOG_LIMITS[renderer].compileHangMs,
   say = () => {},
@@ -124,6 +127,7 @@ export async function startSession({
     } catch (error) {
       throw new CliError(error.message);
     }
+    if (loopLimit !== 'warn') await client.stopOnLoopCut(true);
     mark('page loaded, first frame, WebGL2 checked');
     return client;
   }
@@ -142,6 +146,15 @@ export async function startSession({
     server,
     /** The watchdog's limits this session runs with. */
     limits,
+    /** What a loop cut by llvmpipe's limit does (loop-limit.js). */
+    loopLimit,
+    /**
+     * What llvmpipe's loop limit cut short since the last view began, pass by pass (the render
+     * worker's log: src/page/gpu/loop-cuts.js); null when no page is open.
+     */
+    async loopReport() {
+      return page && !page.isClosed() ? page.loopCuts() : null;
+    },
     /**
      * What draws: Chromium's version, the renderer's name (`rendererName`) and its WebGL2 string
      * (`label`: without its device id).

@@ -14,6 +14,7 @@ import { sayOnce } from '../../shared/said-once.js';
 import { renderShader } from '../render.js';
 import { renderSound, writeWav } from '../sound.js';
 import { CliError } from '../session.js';
+import { judgeLoops } from '../loop-limit.js';
 import { UsageError } from '../view-options.js';
 import { decodeWav } from '../../shared/wav.js';
 import { halve, thumbnail } from './scale.js';
@@ -118,6 +119,14 @@ export async function runCase(session, testCase, { update, out, thumbnails, rend
     return finish();
   }
   result.size = { width: image.width, height: image.height };
+  // a frame llvmpipe's loop limit cut short is not the shader's: no reference, nor a pass
+  const cut = await judgeLoops(session, testCase.file, { mode: 'fail' });
+  if (cut.length) {
+    failures.push(...cut);
+    if (update) failures.push("no reference written from a render llvmpipe's loop limit cut short");
+    keep('actual', image);
+    return finish();
+  }
   // a render that went without an input or a pass is no reference, nor a pass, unless allowed
   const missing = image.notes.filter((n) => n.kind === 'missing').flatMap((n) => n.lines);
   result.missing = missing.map((line) => ({ line, allowed: allowedMissing(line, testCase.allowMissing) }));
@@ -159,6 +168,7 @@ export async function runCase(session, testCase, { update, out, thumbnails, rend
   }
   try {
     await runChecks(session, testCase, image, { update, result, keep, file });
+    failures.push(...(await judgeLoops(session, testCase.file, { mode: 'fail' })));
   } catch (error) {
     if (!(error instanceof CliError || error instanceof UsageError)) throw error;
     failures.push(error.message);

@@ -14,8 +14,9 @@
 /**
  * What the limit cut in one pass: in how many pixel draws in all (a pixel of every frame it was
  * cut in counts), in how many frames, and the first: its frame (iFrame; for the Sound tab the
- * block) and its pixel (x, y from the bottom left of the pass's target, or of a Cube A face).
- * @typedef {{pass: string, pixels: number, frames: number, first: {frame: number, x: number, y: number}}} LoopCut
+ * block), its pixel (x, y from the bottom left of the pass's target, or of a Cube A face), and
+ * for the Sound tab its sample.
+ * @typedef {{pass: string, pixels: number, frames: number, first: {frame: number, x: number, y: number, sample?: number}}} LoopCut
  */
 
 /**
@@ -24,7 +25,13 @@
  * @typedef {{pass: string, reason: string}} UncheckedPass
  */
 
-/** The region of the last guarded draw, not yet read. @typedef {{x: number, y: number, width: number, height: number, pass: string, frame: number}} Pending */
+/**
+ * The region of the last guarded draw, not yet read; `samples`: a Sound block's first sample
+ * (its pixels are samples, row by row).
+ * @typedef {{x: number, y: number, width: number, height: number, pass: string, frame: number, samples?: number}} Pending
+ */
+
+import { LLVMPIPE_LOOP_LIMIT } from '../../shadertoy/loop-guard.js';
 
 export class LoopCuts {
   /** @param {WebGL2RenderingContext} gl */
@@ -53,7 +60,7 @@ export class LoopCuts {
    * guarded pass (material.userData.loopGuard, set by pass-compiler.js): the rows [y, y + height)
    * and columns [x, x + width) of `pass`'s target, for frame `frame`.
    * @param {{userData: Record<string, any>}} material
-   * @param {{x: number, y: number, width: number, height: number, targetWidth: number, targetHeight: number, pass: string, frame: number}} region
+   * @param {Pending & {targetWidth: number, targetHeight: number}} region
    * @param {() => void} draw
    */
   around(material, region, draw) {
@@ -76,8 +83,8 @@ export class LoopCuts {
     }
     // a draw of no pixel (a program's first, which compiles it) is guarded too: llvmpipe compiles
     // a program for the targets it draws into, and the bands after it draw into two
-    const { x, y, width, height, pass, frame } = region;
-    if (width > 0 && height > 0) this.pending = { x, y, width, height, pass, frame };
+    const { x, y, width, height, pass, frame, samples } = region;
+    if (width > 0 && height > 0) this.pending = { x, y, width, height, pass, frame, samples };
   }
 
   /**
@@ -89,7 +96,7 @@ export class LoopCuts {
     this.pending = null;
     if (!pending || !this.framebuffer) return false;
     const gl = this.gl;
-    const { x, y, width, height, pass, frame } = pending;
+    const { x, y, width, height, pass, frame, samples } = pending;
     const pixels = new Uint8Array(width * height * 4);
     const bound = gl.getParameter(gl.READ_FRAMEBUFFER_BINDING);
     gl.bindFramebuffer(gl.READ_FRAMEBUFFER, this.framebuffer);
@@ -104,13 +111,10 @@ export class LoopCuts {
       }
     if (count === 0) return false;
     this._clear();
-    const cut = this.cuts.get(pass) ?? {
-      pass,
-      pixels: 0,
-      frames: 0,
-      frameSet: new Set(),
-      first: { frame, x: x + (first % width), y: y + Math.floor(first / width) },
-    };
+    /** @type {LoopCut['first']} */
+    const at = { frame, x: x + (first % width), y: y + Math.floor(first / width) };
+    if (samples !== undefined) at.sample = samples + at.y * width + at.x;
+    const cut = this.cuts.get(pass) ?? { pass, pixels: 0, frames: 0, frameSet: new Set(), first: at };
     cut.pixels += count;
     cut.frameSet.add(frame);
     cut.frames = cut.frameSet.size;
@@ -132,12 +136,12 @@ export class LoopCuts {
    * The log: what was cut since the last reset, and the passes drawn unchecked (of the shader
    * compiled last).
    * @param {boolean} reset start a new log (the cuts; the unchecked passes stay with their shader)
-   * @returns {{enabled: boolean, cuts: LoopCut[], unchecked: UncheckedPass[]}}
+   * @returns {import('./protocol.js').LoopReport}
    */
   report(reset) {
     const cuts = [...this.cuts.values()].map(({ frameSet, ...cut }) => ({ ...cut, first: { ...cut.first } }));
     if (reset) this.cuts.clear();
-    return { enabled: this.enabled, cuts, unchecked: [...this.unchecked.values()] };
+    return { enabled: this.enabled, limit: LLVMPIPE_LOOP_LIMIT, cuts, unchecked: [...this.unchecked.values()] };
   }
 
   /** The context was lost: its texture and framebuffer with it. */

@@ -96,7 +96,10 @@ import { ShaderCompileError, WebGL2UnavailableError } from './errors.js';
  *   guarded at all (on llvmpipe only)
  */
 
-/** @typedef {{enabled: boolean, cuts: import('./loop-cuts.js').LoopCut[], unchecked: import('./loop-cuts.js').UncheckedPass[]}} LoopReport */
+/**
+ * @typedef {{enabled: boolean, limit: number, cuts: import('./loop-cuts.js').LoopCut[],
+ *   unchecked: import('./loop-cuts.js').UncheckedPass[]}} LoopReport `limit`: llvmpipe's trips a pixel
+ */
 
 /**
  * Commands: name → what the page sends.

@@ -303,7 +303,9 @@ export class ShaderRenderer {
     try {
       const region = { x, y, width, height, targetWidth: target.width, targetHeight: target.height };
       const drawing = { pass: this._passName, frame: this.uniforms.iFrame.value };
-      this.loopCuts.around(/** @type {THREE.Material} */ (this.mesh.material), { ...region, ...drawing }, () => this.three.render(this.scene, this.camera));
+      this.loopCuts.around(/** @type {THREE.Material} */ (this.mesh.material), { ...region, ...drawing }, () =>
+        this.three.render(this.scene, this.camera),
+      );
     } finally {
       this.samplers.unbind(); // a sampler left on a unit would override every texture drawn there later
       this.three.setRenderTarget(null);

@@ -154,7 +154,7 @@ export class SoundPass {
     three.setRenderTarget(this.target);
     const whole = { x: 0, y: 0, width: BLOCK_SIDE, height: BLOCK_SIDE, targetWidth: BLOCK_SIDE, targetHeight: BLOCK_SIDE };
     try {
-      this.renderer.loopCuts.around(material, { ...whole, pass: 'Sound', frame: index }, () =>
+      this.renderer.loopCuts.around(material, { ...whole, pass: 'Sound', frame: index, samples: offset }, () =>
         three.render(this.scene, this.renderer.camera),
       );
     } finally {
