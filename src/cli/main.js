@@ -60,7 +60,10 @@ ${MEDIA_HELP}`;
 
 const COMMON_HELP = `  --renderer R          what draws: llvmpipe (Mesa, on the CPU: the default where Mesa is
                         installed), swiftshader (Chromium's own, on the CPU: the default
-                        elsewhere) or gpu (this machine's GPU); $SHADERPROOF_RENDERER too
+                        elsewhere) or gpu (this machine's GPU); $SHADERPROOF_RENDERER too.
+                        llvmpipe ends each pixel's loops after 65,535 trips in all: by
+                        default a shader it would cut is drawn with swiftshader; asked
+                        for, it draws and warns (--strict: an error)
   --gpu                 the same as --renderer gpu
   --watchdog S          a band of a frame unfinished after S seconds fails (default 5 s,
                         and for a program's first draw, which compiles it, 30 s on

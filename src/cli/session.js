@@ -127,7 +127,9 @@ export async function startSession({
     } catch (error) {
       throw new CliError(error.message);
     }
-    if (loopLimit !== 'warn') await client.stopOnLoopCut(true);
+    // SHADERPROOF_LOOP_GUARD=off: no pass guarded, so no cut seen (the benchmark's, to time the guard)
+    const guard = process.env.SHADERPROOF_LOOP_GUARD !== 'off';
+    if (loopLimit !== 'warn' || !guard) await client.setLoopGuard({ stopOnCut: loopLimit !== 'warn', guard });
     mark('page loaded, first frame, WebGL2 checked');
     return client;
   }

@@ -156,10 +156,11 @@ export function engineClient(page) {
     loopCuts: (reset = false) => page.evaluate((r) => /** @type {HookedWindow} */ (window).shaderEngine.loopCuts(r), reset),
     /**
      * Whether a frame with a loop cut stops at that band (the default renderer then draws the
-     * shader with SwiftShader) rather than being drawn whole.
-     * @param {boolean} on
+     * shader with SwiftShader) rather than being drawn whole; `guard` false: passes are not
+     * guarded at all (the benchmark's, to time the guard).
+     * @param {{stopOnCut: boolean, guard: boolean}} setting
      */
-    stopOnLoopCut: (on) => page.evaluate((o) => /** @type {HookedWindow} */ (window).shaderEngine.stopOnLoopCut(o), on),
+    setLoopGuard: (setting) => page.evaluate((s) => /** @type {HookedWindow} */ (window).shaderEngine.setLoopGuard(s), setting),
     /** Answers at once if the page's thread is free: a heartbeat. */
     ping: () => page.evaluate(() => 0),
 

@@ -10,6 +10,10 @@
 //   compiling on llvmpipe, a heavy one gains several times"): a light shader of the kind the site
 //   is full of (LIGHT below, written here) and the raytracer at its defaults.
 //
+// - What llvmpipe's loop guard costs (src/shadertoy/loop-guard.js: on llvmpipe a pass with loops
+//   is compiled and drawn in a guarded form): the light shader (its fbm loop) and the raytracer,
+//   each also drawn with the guard off (SHADERPROOF_LOOP_GUARD=off), interleaved with the rest.
+//
 // Every run of every shader on every renderer is interleaved with the others, so that a machine
 // whose load comes and goes moves them alike. Prints and writes tests/bench/cli-start.md.
 //
@@ -99,6 +103,20 @@ const render = (shader, renderer) => [
 
 /** @type {Record<string, {floor: number[], [key: string]: any}>} renderer -> the floor's times and each shader's runs */
 const samples = Object.fromEntries(renderers.map((r) => [r, { floor: [], ...Object.fromEntries(SHADERS.map((s) => [s.key, []])) }]));
+/** The shaders with loops, drawn on llvmpipe with the loop guard off too: key -> runs. @type {Record<string, {wall: number, marks: any}[]>} */
+const unguarded = { light: [], heavy: [] };
+/** One timed render: its wall time and its phases' marks. */
+async function timed(shader, renderer, env = {}) {
+  const started = performance.now();
+  const { stderr } = await run(process.execPath, render(shader, renderer), {
+    cwd: dir,
+    env: { ...process.env, SHADERPROOF_TIMINGS: '1', ...env },
+  });
+  const wall = performance.now() - started;
+  const marks = JSON.parse(/timings: (\{.*\})/.exec(stderr)?.[1] ?? 'null');
+  if (!marks) throw new Error(`no timings in the output of shaderproof ${render(shader, renderer).slice(1).join(' ')}:\n${stderr}`);
+  return { wall, marks };
+}
 const loadAverage = [os.loadavg()[0]];
 try {
   // once each to build the page if it is stale (a clone's first run) and warm the disk, not timed
@@ -109,15 +127,9 @@ try {
       await run(process.execPath, [BASELINE, renderer], { cwd: dir });
       samples[renderer].floor.push(performance.now() - floorStarted);
       for (const shader of SHADERS) {
-        const started = performance.now();
-        const { stderr } = await run(process.execPath, render(shader, renderer), {
-          cwd: dir,
-          env: { ...process.env, SHADERPROOF_TIMINGS: '1' },
-        });
-        const wall = performance.now() - started;
-        const marks = JSON.parse(/timings: (\{.*\})/.exec(stderr)?.[1] ?? 'null');
-        if (!marks) throw new Error(`no timings in the output of shaderproof ${render(shader, renderer).slice(1).join(' ')}:\n${stderr}`);
-        samples[renderer][shader.key].push({ wall, marks });
+        samples[renderer][shader.key].push(await timed(shader, renderer));
+        if (renderer === 'llvmpipe' && shader.key in unguarded)
+          unguarded[shader.key].push(await timed(shader, renderer, { SHADERPROOF_LOOP_GUARD: 'off' }));
       }
       process.stdout.write(`${i + 1}:${renderer} `);
     }
@@ -172,7 +184,27 @@ const lines = [
   '',
   '*Drawing the view*: the phase from the page ready to the frame read back, which holds the compile of the shader and its first frame; the whole command holds the browser start and the page besides, alike for both.',
   '',
+  ...(renderers.includes('llvmpipe') ? guardLines() : []),
 ];
+
+/** The loop guard's section: llvmpipe with the guard against without, drawing the view. */
+function guardLines() {
+  const drawn = (runs) => runs.map(({ marks }) => marks['view drawn'] - marks['page loaded, first frame, WebGL2 checked']);
+  return [
+    "### What llvmpipe's loop guard costs",
+    '',
+    '| shader | drawing the view, guarded | without the guard | the guard costs |',
+    '|---|---:|---:|---:|',
+    ...SHADERS.filter((shader) => shader.key in unguarded).map((shader) => {
+      const [on, off] = [drawn(samples.llvmpipe[shader.key]), drawn(unguarded[shader.key])];
+      const cost = median(on) - median(off);
+      return `| ${shader.label} | ${cell(on)} | ${cell(off)} | ${ms(cost)} ms (${((100 * cost) / median(off)).toFixed(0)}%) |`;
+    }),
+    '',
+    'Guarded, a pass with loops compiles twice (as written, for its errors; guarded, to draw) and draws a second output; the guard is off only here (`SHADERPROOF_LOOP_GUARD=off`).',
+    '',
+  ];
+}
 const text = lines.join('\n');
 console.log(text);
 fs.writeFileSync(path.join(REPO_ROOT, 'tests', 'bench', 'cli-start.md'), text);

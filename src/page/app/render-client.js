@@ -79,13 +79,13 @@ export class RenderClient extends Emitter {
     /** ImageBitmaps received from this worker, in all (its 'settled' command counts them). */
     this._bitmaps = 0;
     /** What the loop guard does with a cut (protocol.js 'loopGuard'): told to every worker started. */
-    this._loopGuard = { stopOnCut: false };
+    this._loopGuard = { stopOnCut: false, guard: true };
   }
 
   /**
    * Whether a frame in which llvmpipe's loop limit cut a loop stops there (the command line
    * draws it again with SwiftShader) or is drawn whole; kept for the workers started after.
-   * @param {{stopOnCut: boolean}} setting
+   * @param {{stopOnCut: boolean, guard: boolean}} setting
    */
   setLoopGuard(setting) {
     this._loopGuard = { ...setting };

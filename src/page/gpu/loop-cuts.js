@@ -37,8 +37,10 @@ export class LoopCuts {
   /** @param {WebGL2RenderingContext} gl */
   constructor(gl) {
     this.gl = gl;
-    /** Whether passes are drawn guarded: on llvmpipe, the only renderer with the limit. */
-    this.enabled = /llvmpipe/i.test(rendererName(gl));
+    /** Whether this is llvmpipe, the only renderer with the limit. */
+    this.onLlvmpipe = /llvmpipe/i.test(rendererName(gl));
+    /** Whether passes compiled from now on are guarded: on llvmpipe (off only to time the guard). */
+    this.enabled = this.onLlvmpipe;
     /** Whether a frame stops at its first band with a cut (its picture is not kept then). */
     this.stopOnCut = false;
     /** @type {WebGLTexture | null} */

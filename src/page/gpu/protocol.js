@@ -118,9 +118,11 @@ import { ShaderCompileError, WebGL2UnavailableError } from './errors.js';
  *   (FrameInputs.passMedia)
  * @property {{bitmaps: number}} settled the answer to `awaitingPaint`: the page has shown (or
  *   closed) and painted the first `bitmaps` ImageBitmaps the worker sent it
- * @property {{stopOnCut: boolean}} loopGuard whether a frame in which llvmpipe's loop limit cut a
- *   loop stops at that band (its picture is thrown away: the command line draws it again with
- *   SwiftShader) or is drawn whole (the cut is said, the picture kept)
+ * @property {{stopOnCut: boolean, guard: boolean}} loopGuard whether a frame in which llvmpipe's loop
+ *   limit cut a loop stops at that band (its picture is thrown away: the command line draws it
+ *   again with SwiftShader) or is drawn whole (the cut is said, the picture kept); `guard`: whether
+ *   the passes compiled from now on are guarded on llvmpipe (false only to time the guard: the
+ *   benchmark's SHADERPROOF_LOOP_GUARD=off)
  * @property {{}} loseContext WEBGL_lose_context, for tests of a lost context
  * @property {{}} restoreContext
  */

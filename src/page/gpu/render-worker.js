@@ -164,8 +164,10 @@ const tell = serve(
       bands.changed();
     },
 
-    loopGuard({ stopOnCut }) {
-      renderer().loopCuts.stopOnCut = stopOnCut;
+    loopGuard({ stopOnCut, guard }) {
+      const cuts = renderer().loopCuts;
+      cuts.stopOnCut = stopOnCut;
+      cuts.enabled = guard && cuts.onLlvmpipe;
     },
 
     settled({ bitmaps: count }) {

@@ -74,8 +74,9 @@
 //   loopCuts(reset?)      Promise<{enabled, cuts, unchecked}>: what llvmpipe's loop limit cut short
 //                         since the last reset, pass by pass (gpu/loop-cuts.js), and the passes
 //                         drawn unchecked; enabled: whether passes are guarded (on llvmpipe).
-//   stopOnLoopCut(on)     whether a frame with a cut stops at that band (the command line's
-//                         default renderer then draws it again with SwiftShader).
+//   setLoopGuard({stopOnCut, guard})  whether a frame with a cut stops at that band (the
+//                         command line's default renderer then draws it again with SwiftShader);
+//                         guard false: passes compiled after are not guarded (to time the guard).
 //   cancelRecording()     stops the recording under way (this one or the Record button's).
 //   recording()           {busy, done, total}: whether a recording is under way, and how many
 //                         frames of the last record() or frameAt() are done, of how many.
@@ -361,9 +362,13 @@ export class EngineHook {
     return this.#app.gpu.ask('loopCuts', { reset });
   }
 
-  /** @param {boolean} on whether a frame with a loop cut stops at that band (its picture thrown away) */
-  stopOnLoopCut(on) {
-    this.#app.gpu.setLoopGuard({ stopOnCut: on });
+  /**
+   * @param {{stopOnCut: boolean, guard?: boolean}} setting stopOnCut: whether a frame with a loop
+   *   cut stops at that band (its picture thrown away); guard: whether passes compiled from now
+   *   on are guarded on llvmpipe (false only to time the guard)
+   */
+  setLoopGuard({ stopOnCut, guard = true }) {
+    this.#app.gpu.setLoopGuard({ stopOnCut, guard });
   }
 
   cancelRecording() {
