@@ -97,10 +97,10 @@ export function sessionOptions(values, fallback) {
   }
   const seconds = values.watchdog === undefined ? null : readNumber(values.watchdog, '--watchdog', { min: 0.1 });
   // llvmpipe by default gives way to SwiftShader where its loop limit would cut a loop; asked
-  // for, it draws, and says what it cut (loop-limit.js)
+  // for, it fails there (loop-limit.js)
   const asked = Boolean(values.gpu || values.renderer || process.env[RENDERER_ENV]) || fallback !== 'auto';
   /** @type {import('./loop-limit.js').LoopLimitMode} */
-  const loopLimit = asked ? 'warn' : 'fallback';
+  const loopLimit = asked ? 'fail' : 'fallback';
   return { renderer, loopLimit, ...watchdogFor(renderer, seconds) };
 }
 

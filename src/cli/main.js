@@ -13,7 +13,7 @@ import { runOpen } from './open.js';
 import { runRecord } from './record.js';
 import { outputFormat, renderShader, renderTiled, writeFloatImage, writeImage } from './render.js';
 import { CliError, shaderKind, startSession } from './session.js';
-import { LoopLimitFallback, judgeLoops } from './loop-limit.js';
+import { LoopLimitFallback, refuseCutLoops } from './loop-limit.js';
 import { DEFAULT_JOBS, runTest } from './test/corpus.js';
 import { DEFAULT_SIZE as TEST_SIZE } from './test/manifest.js';
 import { UsageError, VIEW_FLAGS, dateLabel, readNumber, readViewOptions } from './view-options.js';
@@ -63,7 +63,7 @@ const COMMON_HELP = `  --renderer R          what draws: llvmpipe (Mesa, on the 
                         elsewhere) or gpu (this machine's GPU); $SHADERPROOF_RENDERER too.
                         llvmpipe ends each pixel's loops after 65,535 trips in all: by
                         default a shader it would cut is drawn with swiftshader; asked
-                        for, it draws and warns (--strict: an error)
+                        for, it fails there, and writes nothing
   --gpu                 the same as --renderer gpu
   --watchdog S          a band of a frame unfinished after S seconds fails (default 5 s,
                         and for a program's first draw, which compiles it, 30 s on
@@ -248,7 +248,7 @@ async function runRender({ values, positionals }) {
       );
     sayNotes(file, image.notes, { strict: values.strict });
     const floats = format === 'pfm' ? await session.drawFloat() : null;
-    await judgeLoops(session, file, { mode: session.loopLimit, strict: values.strict, warn: io.err });
+    await refuseCutLoops(session, file);
     if (floats) writeFloatImage(values.output, floats);
     else writeImage(values.output, image);
     const { label: renderer } = await session.environment();
@@ -278,7 +278,7 @@ async function runRenderWav({ values, positionals }) {
   try {
     const sound = await renderSound(session, file, view, { time, duration });
     sayNotes(file, sound.notes, { strict: values.strict });
-    await judgeLoops(session, file, { mode: session.loopLimit, strict: values.strict, warn: io.err });
+    await refuseCutLoops(session, file);
     writeWav(values.output, sound);
     const { label: renderer } = await session.environment();
     io.out(`${values.output}: ${wavSummary(sound)}, from ${time} s, ${renderer}, ${((Date.now() - started) / 1000).toFixed(1)} s`);

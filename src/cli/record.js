@@ -10,7 +10,7 @@ import { renderShader } from './render.js';
 import { CliError, shaderKind, startSession } from './session.js';
 import { UsageError, readNumber, readViewOptions } from './view-options.js';
 import { hasSoundTab } from './sound.js';
-import { judgeLoops } from './loop-limit.js';
+import { refuseCutLoops } from './loop-limit.js';
 
 /** The recorder's limits (src/page/io/recorder.js MAX_FRAMES, MAX_FPS): a recording past them is refused here. */
 const MAX_FRAMES = 36_000;
@@ -48,7 +48,7 @@ export async function runRecord({ values, positionals }) {
     } finally {
       bar.end();
     }
-    await judgeLoops(session, file, { mode: session.loopLimit, strict: values.strict, warn: io.err });
+    await refuseCutLoops(session, file);
     writeWhole(output, Buffer.from(result.data, 'base64'));
     // a WebM carries the Sound tab (the recorder's Opus track); a zip of PNGs has no place for it
     if (format === 'png' && hasSoundTab(file)) {

@@ -59,12 +59,11 @@ const START_VIEW = `${ENGINE_PAGE}?size=2x2&time=0`;
  *   say?: (line: string) => void, progress?: (state: import('../engine/view.js').ViewProgress | null) => void}} [options]
  *   hangMs: a band of a frame unfinished this long fails (the watchdog: watchdog.js);
  *   compileHangMs: the same for a program's first draw, which compiles it; loopLimit: what a
- *   loop cut by llvmpipe's limit does (loop-limit.js: 'warn' draws the frame whole, the others
- *   stop it at the cut); progress: hears how far each view has got, every 0.1 s while it draws
+ *   loop cut by llvmpipe's limit does (loop-limit.js); progress: hears how far each view has got, every 0.1 s while it draws
  */
 export async function startSession({
   renderer = 'swiftshader',
-  loopLimit = 'warn',
+  loopLimit = 'fail',
   hangMs = WATCHDOG_LIMITS[renderer].hangMs,
   compileHangMs = WATCHDOG_LIMITS[renderer].compileHangMs,
   say = () => {},
@@ -127,9 +126,10 @@ export async function startSession({
     } catch (error) {
       throw new CliError(error.message);
     }
-    // SHADERPROOF_LOOP_GUARD=off: no pass guarded, so no cut seen (the benchmark's, to time the guard)
-    const guard = process.env.SHADERPROOF_LOOP_GUARD !== 'off';
-    if (loopLimit !== 'warn' || !guard) await client.setLoopGuard({ stopOnCut: loopLimit !== 'warn', guard });
+    // a frame stops at its first cut (its picture is not the shader's, and an endless loop costs
+    // the limit's trips in every pixel); SHADERPROOF_LOOP_GUARD=off: no pass guarded, so no cut
+    // seen (the benchmark's, to time the guard)
+    await client.setLoopGuard({ stopOnCut: true, guard: process.env.SHADERPROOF_LOOP_GUARD !== 'off' });
     mark('page loaded, first frame, WebGL2 checked');
     return client;
   }

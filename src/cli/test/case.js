@@ -120,7 +120,7 @@ export async function runCase(session, testCase, { update, out, thumbnails, rend
   }
   result.size = { width: image.width, height: image.height };
   // a frame llvmpipe's loop limit cut short is not the shader's: no reference, nor a pass
-  const cut = await judgeLoops(session, testCase.file, { mode: 'fail' });
+  const cut = await judgeLoops(session, testCase.file, 'fail');
   if (cut.length) {
     failures.push(...cut);
     if (update) failures.push("no reference written from a render llvmpipe's loop limit cut short");
@@ -168,7 +168,7 @@ export async function runCase(session, testCase, { update, out, thumbnails, rend
   }
   try {
     await runChecks(session, testCase, image, { update, result, keep, file });
-    failures.push(...(await judgeLoops(session, testCase.file, { mode: 'fail' })));
+    failures.push(...(await judgeLoops(session, testCase.file, 'fail')));
   } catch (error) {
     if (!(error instanceof CliError || error instanceof UsageError)) throw error;
     failures.push(error.message);
