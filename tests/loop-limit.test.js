@@ -213,7 +213,7 @@ describe.runIf(findMesa().missing.length === 0)("llvmpipe's loop limit, in every
     const uncut = SHAPES.map(([, fate], k) => (fate === 'cut' ? -1 : k));
     // the cut shapes' columns count none: each shape of the others in its own column, as above
     const code = IMAGE.replace(`trips(${SHAPE_OF})`, `trips(int[${SHAPES.length}](${uncut.join(', ')})[${SHAPE_OF}])`);
-    fs.writeFileSync(path.join(folder, 'uncut.glsl'), code.replace(/\n  if \(k == 5\).*/, ''));
+    fs.writeFileSync(path.join(folder, 'uncut.glsl'), code.replace(/\n {2}if \(k == 5\).*/, ''));
     const run = await shaderproof('render', 'uncut.glsl', '-o', 'uncut.png', '--size', `${WIDTH}x${HEIGHT}`, '--renderer', 'llvmpipe');
     expect(run.code, run.stderr).toBe(0);
     expect(run.stderr).toBe('');
