@@ -110,7 +110,7 @@ describe('an endless shader fails within the watchdog at every size, and one cas
     expect(out.code).toBe(1);
     expect(out.stderr.trim().split('\n')).toEqual([
       expect.stringMatching(
-        /^shaderproof render: endless\.glsl: did not finish drawing a frame: one band of it took longer than the watchdog's 2 s;.*--watchdog S/,
+        /^shaderproof render: endless\.glsl: did not finish drawing a frame: one band of it used more than the watchdog's 2 s of the GPU process's CPU time;.*--watchdog S/,
       ),
     ]);
     expect(out.seconds).toBeLessThan(BOUND_S);
@@ -133,7 +133,7 @@ describe('an endless shader fails within the watchdog at every size, and one cas
     expect(out.code).toBe(1);
     expect(out.stderr.trim().split('\n')).toEqual([
       expect.stringMatching(
-        /^shaderproof record: later\.glsl: did not finish drawing a frame: one band of it took longer than the watchdog's 2 s;.*--watchdog S/,
+        /^shaderproof record: later\.glsl: did not finish drawing a frame: one band of it used more than the watchdog's 2 s of the GPU process's CPU time;.*--watchdog S/,
       ),
     ]);
     expect(out.stderr).not.toMatch(/editor|going back|Restart/i);

@@ -109,7 +109,7 @@ describe('no bad input touches an output file already there (issue 36, item 4)',
       'endless.glsl',
       ENDLESS,
       ['--watchdog', '2'],
-      /endless\.glsl: did not finish drawing a frame: one band of it took longer than the watchdog's 2 s; .*--watchdog S/,
+      /endless\.glsl: did not finish drawing a frame: one band of it used more than the watchdog's 2 s of the GPU process's CPU time; .*--watchdog S/,
     ],
     ['a float still of the same', 'endless.glsl', ENDLESS, ['--watchdog', '2', '-o', 'keep.pfm'], /did not finish drawing a frame/],
   ];

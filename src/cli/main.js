@@ -65,9 +65,12 @@ const COMMON_HELP = `  --renderer R          what draws: llvmpipe (Mesa, on the 
                         default a shader it would cut is drawn with swiftshader; asked
                         for, it fails there, and writes nothing
   --gpu                 the same as --renderer gpu
-  --watchdog S          a band of a frame unfinished after S seconds fails (default 5 s,
-                        and for a program's first draw, which compiles it, 30 s on
-                        swiftshader, 60 s on llvmpipe); a frame that finishes bands goes on
+  --watchdog S          a band of a frame that costs the GPU process S seconds of CPU time
+                        without ending fails (default 5 s, and for a program's first draw,
+                        which compiles it, 30 s on swiftshader, 60 s on llvmpipe); a busy
+                        machine or a stopped process does not count, and a frame that
+                        finishes bands goes on. On a GPU, and where /proc is missing, S
+                        seconds of the wall clock
   --verbose             an internal error's stack too
   -h, --help            this help`;
 

@@ -41,9 +41,16 @@ export async function runRecord({ values, positionals }) {
     const bar = progressBar('frames');
     let result;
     try {
-      result = await runLong(client, { method: 'record', request, total: frames, progress: bar.update, limits: session.limits });
+      result = await runLong(client, {
+        method: 'record',
+        request,
+        total: frames,
+        progress: bar.update,
+        limits: session.limits,
+        clock: session.clock(),
+      });
     } catch (error) {
-      const said = error.hung ? hungLine(session.limits) : error.message.split('\n')[0];
+      const said = error.hung ? hungLine(session.limits, session.clock().measure) : error.message.split('\n')[0];
       throw Object.assign(new CliError(`${file}: ${said}`), { hung: Boolean(error.hung) });
     } finally {
       bar.end();

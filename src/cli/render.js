@@ -2,7 +2,7 @@
 // goes into the page's URL (view-options.js) and is drawn by drawView, as the render tests' views
 // are; --frame N is frame N as the recorder draws it (iTime = N / fps, iFrame = N), every frame
 // before it drawn first for a shader with buffers; --converge N and --frame N are long work
-// (long-work.js: no limit but the page's watchdog, progress on a terminal).
+// (long-work.js: no limit but the watchdog, progress on a terminal).
 
 import fs from 'node:fs';
 import path from 'node:path';
@@ -73,12 +73,17 @@ export async function renderShader(session, file, view, { converge = null, progr
             request: { frame: view.frame, fps: view.fps, width: view.size.width, height: view.size.height },
             total: /** @type {number} */ (view.frame) + 1,
           };
-    const value = await runLong(client, { ...work, progress: progress ? bar.update : undefined, limits: session.limits });
+    const value = await runLong(client, {
+      ...work,
+      progress: progress ? bar.update : undefined,
+      limits: session.limits,
+      clock: session.clock(),
+    });
     const shot = converge !== null ? await client.capture() : value;
     return { width: shot.width, height: shot.height, data: fromBase64(shot.data), info: image.info, notes: image.notes };
   } catch (error) {
     const what = converge !== null ? `--converge ${converge}` : `--frame ${view.frame}`;
-    const said = error.hung ? hungLine(session.limits) : error.message.split('\n')[0];
+    const said = error.hung ? hungLine(session.limits, session.clock().measure) : error.message.split('\n')[0];
     throw Object.assign(new CliError(`${what}: ${file}: ${said}`), { hung: Boolean(error.hung) });
   } finally {
     bar.end();

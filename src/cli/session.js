@@ -1,9 +1,10 @@
 // What every verb of the command line starts with: the built page served on a loopback port
 // (src/engine/page-server.js), one headless Chromium (src/engine/browser.js: SwiftShader,
 // llvmpipe or the machine's GPU, src/engine/renderers.js), and a page on it brought to each view
-// through the same drawView as the render tests (src/engine/view.js). A shader that never
-// finishes holds the GPU process for good (tests/page-heavy.test.js): the session then kills that
-// browser and starts another for whatever comes next.
+// through the same drawView as the render tests (src/engine/view.js). The watchdog counts the
+// work of that browser's GPU process (src/engine/gpu-time.js), not the wall clock. A shader that
+// never finishes holds the GPU process for good (tests/page-heavy.test.js): the session then
+// kills that browser and starts another for whatever comes next.
 
 import fs from 'node:fs';
 import { rendererLabel, startBrowser } from '../engine/browser.js';
@@ -11,6 +12,7 @@ import { killBrowser } from '../engine/watch.js';
 import { findChrome } from '../engine/chrome-path.js';
 import { builtPage, startPageServer } from '../engine/page-server.js';
 import { drawView } from '../engine/view.js';
+import { WALL_CLOCK, gpuClock } from '../engine/gpu-time.js';
 import { engineClient } from '../engine/client.js';
 import { openPage } from '../engine/page-open.js';
 import { CLOSE_TIMEOUT_MS, withTimeout } from '../engine/watch.js';
@@ -57,9 +59,10 @@ const START_VIEW = `${ENGINE_PAGE}?size=2x2&time=0`;
  * @param {{renderer?: import('../engine/renderers.js').RendererName, hangMs?: number, compileHangMs?: number,
  *   loopLimit?: import('./loop-limit.js').LoopLimitMode,
  *   say?: (line: string) => void, progress?: (state: import('../engine/view.js').ViewProgress | null) => void}} [options]
- *   hangMs: a band of a frame unfinished this long fails (the watchdog: watchdog.js);
- *   compileHangMs: the same for a program's first draw, which compiles it; loopLimit: what a
- *   loop cut by llvmpipe's limit does (loop-limit.js); progress: hears how far each view has got, every 0.1 s while it draws
+ *   hangMs: a band of a frame that costs the GPU process this long in CPU time (the wall clock
+ *   where that cannot be read) fails (the watchdog: watchdog.js); compileHangMs: the same for a
+ *   program's first draw, which compiles it; loopLimit: what a loop cut by llvmpipe's limit does
+ *   (loop-limit.js); progress: hears how far each view has got, every 0.1 s while it draws
  */
 export async function startSession({
   renderer = 'swiftshader',
@@ -91,6 +94,12 @@ export async function startSession({
   let pageErrors = [];
   /** Set by kill(): this session starts no browser again. */
   let killed = false;
+  /**
+   * The watchdog's clock: the work of the current browser's GPU process (its CPU time on a CPU
+   * renderer; on a hardware GPU, whose work is not the CPU's, the wall clock).
+   * @type {import('../engine/gpu-time.js').WorkClock}
+   */
+  let clock = WALL_CLOCK;
 
   async function browser() {
     if (chromium) return chromium;
@@ -104,6 +113,7 @@ export async function startSession({
       throw new CliError('this session was given up: its browser stopped answering');
     }
     chromium = launched;
+    clock = renderer === 'gpu' ? WALL_CLOCK : gpuClock(launched.browser.process()?.pid);
     mark('chromium launched');
     return chromium;
   }
@@ -118,6 +128,7 @@ export async function startSession({
       query: START_VIEW,
       fresh: true,
       limits,
+      clock,
     });
     if (started.error !== undefined) throw new CliError(`the page did not start: ${started.error}`);
     try {
@@ -157,6 +168,8 @@ export async function startSession({
     async loopReport() {
       return page && !page.isClosed() ? page.loopCuts() : null;
     },
+    /** The watchdog's clock (the current browser's, or the last one's): what the limits are counted on. */
+    clock: () => clock,
     /**
      * What draws: Chromium's version, the renderer's name (`rendererName`) and its WebGL2 string
      * (`label`: without its device id).
@@ -177,7 +190,7 @@ export async function startSession({
       const current = /** @type {import('../engine/client.js').EngineClient} */ (page);
       let result;
       try {
-        result = await drawView(current, { baseUrl: server.baseUrl, query, fresh: false, limits, progress });
+        result = await drawView(current, { baseUrl: server.baseUrl, query, fresh: false, limits, clock, progress });
         progress(null);
       } catch (error) {
         progress(null);
@@ -193,7 +206,7 @@ export async function startSession({
           await current.close().catch(() => {});
           page = null;
         }
-        const error = new CliError(failed.hung ? hungLine(limits) : failed.error);
+        const error = new CliError(failed.hung ? hungLine(limits, clock.measure) : failed.error);
         Object.assign(error, { hung: Boolean(failed.hung), compile: Boolean(failed.compile) });
         throw error;
       }

@@ -1,9 +1,14 @@
-// The command line's watchdog: how long a shader may go without finishing a band of a frame
-// before it is taken never to finish, per renderer, and what a person reads when it gives up.
-// A band is sized to take about 0.1 s (src/page/gpu/bands/band-planner.js), so a frame that is still
-// making progress finishes a band every fraction of a second and is never stopped, however long
-// the whole frame takes; only a band that does not end is. A program's first draw is where it is
-// compiled, and gets longer.
+// The command line's watchdog: how much work a shader may cost without finishing a band of a
+// frame before it is taken never to finish, per renderer, and what a person reads when it gives
+// up. The work is the CPU time of the browser's GPU process (src/engine/gpu-time.js: where it
+// cannot be read, and on a hardware GPU, the wall clock), counted from the band's start
+// (src/engine/band-watch.js): a busy machine, a stopped process or a suspended laptop does not
+// count. A band is sized to take about 0.1 s (src/page/gpu/bands/band-planner.js), so a frame
+// that is still making progress finishes a band every fraction of a second and is never
+// stopped, however long the whole frame takes; only a band that does not end is. A program's
+// first draw is where it is compiled, and gets longer. SwiftShader and llvmpipe draw on every
+// core, so an endless band reaches its limit sooner than its seconds on the wall clock (on 2
+// cores, in half of them); a compile runs on one.
 
 import { PRODUCTION_TIMEOUTS } from '../shared/timeouts.js';
 
@@ -22,7 +27,8 @@ export const WATCHDOG_LIMITS = Object.freeze({
 });
 
 /**
- * The limits a session runs with: `seconds` (--watchdog S) for every band, else the renderer's.
+ * The limits a session runs with: `seconds` (--watchdog S, of the GPU process's CPU time) for
+ * every band, else the renderer's.
  * @param {import('../engine/renderers.js').RendererName} renderer
  * @param {number | null} seconds
  */
@@ -32,14 +38,18 @@ export function watchdogFor(renderer, seconds) {
 }
 
 /**
- * The one line said when the watchdog gives up on a shader.
+ * The one line said when the watchdog gives up on a shader: `measure`, what its limits were
+ * counted on (the GPU process's CPU time, or the wall clock: gpu-time.js).
  * @param {{hangMs: number, compileHangMs: number}} limits
+ * @param {import('../engine/gpu-time.js').ClockMeasure} measure
  */
-export function hungLine({ hangMs, compileHangMs }) {
+export function hungLine({ hangMs, compileHangMs }, measure) {
   const s = (/** @type {number} */ ms) => `${ms / 1000} s`;
-  const limits = hangMs === compileHangMs ? s(hangMs) : `${s(hangMs)} (${s(compileHangMs)} for a program's first draw, which compiles it)`;
+  const cpu = measure === 'cpu' ? " of the GPU process's CPU time" : '';
+  const compile = hangMs === compileHangMs ? '' : ` (${s(compileHangMs)} for a program's first draw, which compiles it)`;
+  const cost = measure === 'cpu' ? 'used more than' : 'took longer than';
   return (
-    `did not finish drawing a frame: one band of it took longer than the watchdog's ${limits}; ` +
-    `it may never finish (an endless loop, or far too much work per pixel): --watchdog S gives each band S seconds`
+    `did not finish drawing a frame: one band of it ${cost} the watchdog's ${s(hangMs)}${cpu}${compile}; ` +
+    `it may never finish (an endless loop, or far too much work per pixel): --watchdog S gives each band S seconds${cpu ? ' of CPU time' : ''}`
   );
 }

@@ -14,19 +14,25 @@
 // not answer was doing, and so must read a page that may have no hook yet.
 
 /**
- * How a view started on the page (startView) stands: drawn, failed (`compile` when the shader did
- * not compile), hung (the page's watchdog gave up on it: the message it shows), or still running
- * (`rows` of `height` drawn of the pass under way, `bands` so far, the band the GPU is on).
- * @typedef {{state: 'drawn'} | {state: 'failed', error: string, compile: boolean}
- *   | {state: 'hung', message: string}
- *   | {state: 'running', rows: number, height: number, bands: number, band: {seconds: number, compiling: boolean} | null}} ViewPoll
+ * The band the GPU is on (null: none): how long the page has seen it drawn, whether it is a
+ * program's first draw, its serial number; `bands` of the frame drawn so far; and `hang`, the
+ * message of the page's own watchdog when it has given up on the band (a hang the page shows; the
+ * command line judges for itself: band-watch.js).
+ * @typedef {{band: {seconds: number, compiling: boolean, serial: number} | null, bands: number, hang: string | null}} BandReport
  */
 
 /**
- * How long work started by startLong stands: `done` with its value, failed, hung (the page's
- * watchdog), `started` (a converge whose samples have not begun), or how far it has got.
- * @typedef {{state: 'done', value: any} | {state: 'failed', error: string} | {state: 'started'}
- *   | {state: 'hung', message: string} | {state: 'running', done: number, total: number}} LongPoll
+ * How a view started on the page (startView) stands: drawn, failed (`compile` when the shader did
+ * not compile), or still running (`rows` of `height` drawn of the pass under way, and its band).
+ * @typedef {{state: 'drawn'} | {state: 'failed', error: string, compile: boolean}
+ *   | ({state: 'running', rows: number, height: number} & BandReport)} ViewPoll
+ */
+
+/**
+ * How long work started by startLong stands: `done` with its value, failed, or how far it has
+ * got (`done` of `total`, and its band).
+ * @typedef {{state: 'done', value: any} | {state: 'failed', error: string}
+ *   | ({state: 'running', done: number, total: number} & BandReport)} LongPoll
  */
 
 /** @typedef {'record' | 'frameAt' | 'converge'} LongMethod */
@@ -104,10 +110,10 @@ export function engineClient(page) {
       return page.evaluate(() => {
         const settled = /** @type {any} */ (window).__view?.settled;
         if (settled) return settled;
-        const hang = /** @type {HookedWindow} */ (window).shaderEngine.hang();
-        if (hang?.phase === 'drawing') return { state: 'hung', message: hang.message };
+        const said = /** @type {HookedWindow} */ (window).shaderEngine.hang();
+        const hang = said?.phase === 'drawing' ? said.message : null;
         const { progress, band } = /** @type {HookedWindow} */ (window).shaderEngine.info();
-        return { state: 'running', rows: progress?.y ?? 0, height: progress?.height ?? 0, bands: progress?.bands ?? 0, band };
+        return { state: 'running', rows: progress?.y ?? 0, height: progress?.height ?? 0, bands: progress?.bands ?? 0, band, hang };
       });
     },
 
@@ -212,19 +218,19 @@ export function engineClient(page) {
     pollLong(method, total) {
       return page.evaluate(
         (m, t) => {
-          const hook = /** @type {any} */ (/** @type {HookedWindow} */ (window).shaderEngine);
+          const hook = /** @type {HookedWindow} */ (window).shaderEngine;
           const settled = /** @type {any} */ (window).__longWork.settled;
-          const hang = hook.hang();
-          if (hang?.phase === 'drawing') return { state: 'hung', message: hang.message };
+          const said = hook.hang();
+          const { progress, band, stillFrames } = hook.info();
+          const report = { band, bands: progress?.bands ?? 0, hang: said?.phase === 'drawing' ? said.message : null };
           if (m === 'converge') {
             if (settled?.state === 'failed') return settled;
-            const { stillFrames } = hook.info();
             if (settled && stillFrames >= t) return { state: 'done', value: null };
-            return { state: 'running', done: settled ? Math.min(stillFrames, t) : 0, total: t };
+            return { state: 'running', done: settled ? Math.min(stillFrames, t) : 0, total: t, ...report };
           }
           if (settled) return settled;
           const { done, total: all } = hook.recording();
-          return { state: 'running', done, total: all || t };
+          return { state: 'running', done, total: all || t, ...report };
         },
         method,
         total,

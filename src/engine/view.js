@@ -22,13 +22,16 @@
  */
 
 /**
- * The command line's watchdog (src/cli/watchdog.js), for a page that stops answering: a page whose
+ * The command line's watchdog (src/cli/watchdog.js), judged here (band-watch.js): a band that has
+ * cost the GPU process more than the limit in work (`compileHangMs` for a program's first draw,
+ * `hangMs` else) without ending has hung, whether or not the page still answers. A page whose
  * own thread is held by the GPU (a canvas waiting on a GPU process stuck in an endless draw) can
- * no longer run its own watchdog (the hang it shows), nor answer. A page unanswered for longer
- * than the band it was last on may take (`compileHangMs` for a program's first draw, `hangMs`
- * else) has hung all the same.
- * @typedef {{hangMs: number, compileHangMs: number}} ProgressLimits
+ * no longer run its own watchdog, nor answer; this one counts on.
+ * @typedef {import('./band-watch.js').ProgressLimits} ProgressLimits
  */
+
+import { BandWatch, answerUnlessOverdue } from './band-watch.js';
+import { WALL_CLOCK } from './gpu-time.js';
 
 /** How often the page is asked how far the view has got. */
 const POLL_MS = 100;
@@ -36,63 +39,58 @@ const POLL_MS = 100;
 /**
  * How far a view has got: `rows` of `height` drawn of the pass under way, `bands` so far, and the
  * band the GPU is on (its `seconds`, and whether it is a program's first draw: `compiling`).
- * @typedef {{rows: number, height: number, bands: number, band: {seconds: number, compiling: boolean} | null}} ViewProgress
+ * @typedef {{rows: number, height: number, bands: number, band: {seconds: number, compiling: boolean, serial?: number} | null}} ViewProgress
  */
 
 /**
  * Brings the page of `client` to the view `query` and reads one frame. `fresh`: the page is
- * loaded at baseUrl + query (else it is a loaded page, and open() brings it there). With
- * `limits`, the page is asked how far it has got every POLL_MS, and a page that shows no progress
- * for longer than they allow is a hang (`hung`), whether or not it still answers; `progress`
- * hears each answer.
+ * loaded at baseUrl + query (else it is a loaded page, and open() brings it there). The page is
+ * asked how far it has got every POLL_MS. With `limits`, a band that costs more than they allow
+ * on `clock` (the GPU process's work: gpu-time.js; the wall clock by default) is a hang (`hung`),
+ * whether or not the page still answers, and the page's own watchdog is not heeded; without,
+ * the page's is. `progress` hears each answer.
  * @param {import('./client.js').EngineClient} client
  * @param {{baseUrl: string, query: string, fresh: boolean, limits?: ProgressLimits | null,
- *   progress?: (state: ViewProgress) => void}} view
+ *   clock?: import('./gpu-time.js').WorkClock, progress?: (state: ViewProgress) => void}} view
  * @returns {Promise<DrawnView>}
  */
-export async function drawView(client, { baseUrl, query, fresh, limits = null, progress = () => {} }) {
+export async function drawView(client, { baseUrl, query, fresh, limits = null, clock = WALL_CLOCK, progress = () => {} }) {
   if (fresh) {
     const failed = await client.load(baseUrl + query);
     if (failed !== null) return { error: failed };
   }
   const started = await client.startView(fresh ? null : query);
   if (started !== null) return { error: started };
-  const outcome = await waitForView(client, limits, progress);
+  const outcome = await waitForView(client, limits ? new BandWatch(limits, clock) : null, progress);
   if (outcome.state === 'failed') return { error: outcome.error, compile: outcome.compile };
   if (outcome.state === 'hung') return { error: outcome.error, hung: true };
   return client.readView();
 }
 
 /**
- * Asks the page after the view drawView started until it is drawn, failed, or hung: the page's
- * own watchdog gave up on it, or, with `limits`, the page left a question unanswered for longer
- * than they allow.
+ * Asks the page after the view drawView started until it is drawn, failed, or hung: with a
+ * `watch`, its band cost more than the limit (answered or not); without, the page's own watchdog
+ * gave up on it.
  * @param {import('./client.js').EngineClient} client
- * @param {ProgressLimits | null} limits
+ * @param {BandWatch | null} watch
  * @param {(state: ViewProgress) => void} progress
  * @returns {Promise<{state: 'drawn'} | {state: 'failed', error: string, compile: boolean} | {state: 'hung', error: string}>}
  */
-async function waitForView(client, limits, progress) {
+async function waitForView(client, watch, progress) {
   const hung = (/** @type {string} */ said) => ({
     state: /** @type {const} */ ('hung'),
     error: `the shader did not finish drawing a frame: the watchdog gave up on it${said ? ` ("${said}")` : ''}`,
   });
-  /** Whether the band last heard of is a first draw (or none has been heard of yet). */
-  let compiling = true;
   for (;;) {
     const asked = client.pollView();
     asked.catch(() => {}); // a question given up on below fails when the page is closed
-    const limit = limits ? (compiling ? limits.compileHangMs : limits.hangMs) : null;
-    let timer;
-    /** @type {import('./client.js').ViewPoll | null} */
-    const answer = await (limit === null
-      ? asked
-      : Promise.race([asked, new Promise((resolve) => (timer = setTimeout(resolve, limit + POLL_MS, null)))]));
-    clearTimeout(timer);
+    const answer = watch ? await answerUnlessOverdue(asked, watch, POLL_MS) : await asked;
     if (answer === null) return hung('');
     if (answer.state === 'drawn' || answer.state === 'failed') return answer;
-    if (answer.state === 'hung') return hung(answer.message);
-    compiling = answer.band ? answer.band.compiling : answer.bands === 0;
+    if (watch) {
+      watch.heard(answer);
+      if (watch.overdue()) return hung('');
+    } else if (answer.hang !== null) return hung(answer.hang);
     progress({ rows: answer.rows, height: answer.height, bands: answer.bands, band: answer.band });
     await new Promise((resolve) => setTimeout(resolve, POLL_MS));
   }

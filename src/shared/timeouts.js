@@ -11,7 +11,9 @@
  *   second; 15 s leaves room for a slow network or a server waking up, and ends what would
  *   otherwise be a black page, with no message, for as long as the server keeps the request open
  * @property {number} hangMs a band of a frame unfinished for this long: the shader may never
- *   finish (app/render-client.js). A band is sized to take ~0.1 s (gpu/bands/band-planner.js)
+ *   finish (app/render-client.js). A band is sized to take ~0.1 s (gpu/bands/band-planner.js).
+ *   The page's watchdog counts the wall clock; the command line's counts the same limits in the
+ *   GPU process's CPU time (src/engine/band-watch.js), and does not fail on the page's word
  * @property {number} compileHangMs a program's first draw, in which SwiftShader compiles it,
  *   unfinished for this long: it may never finish (the raytracer's heaviest scene compiles in
  *   3.5 s; a large shader from Shadertoy took ~15 s on this machine)

@@ -71,6 +71,8 @@ export class RenderClient extends Emitter {
     this._bandSince = null;
     /** Whether the band the GPU is drawing is a program's first draw (it compiles). */
     this._bandCompiling = false;
+    /** Bands handed to the GPU since the page started: which band it is on, for a watchdog outside the page. */
+    this._bandSerial = 0;
     /** What the last 'hang' said (null: no band has gone long unfinished). @type {HangPhase | null} */
     this._hung = null;
     this._watch = 0;
@@ -196,6 +198,7 @@ export class RenderClient extends Emitter {
     } else if (type === 'bandStarted') {
       this._bandSince = performance.now();
       this._bandCompiling = params.compiling;
+      this._bandSerial++;
     } else if (type === 'band') {
       this._bandEnded();
       this.emit('band', params);
@@ -258,13 +261,15 @@ export class RenderClient extends Emitter {
   }
 
   /**
-   * The band the GPU is on now: how long it has been on it, and whether it is a program's first
-   * draw (a compile); null when it is on none, or the context is lost.
-   * @returns {{seconds: number, compiling: boolean} | null}
+   * The band the GPU is on now: how long it has been on it, whether it is a program's first draw
+   * (a compile), and its serial number (the command line's watchdog counts the GPU process's work
+   * from the moment it changes: src/engine/band-watch.js); null when it is on none, or the context
+   * is lost.
+   * @returns {{seconds: number, compiling: boolean, serial: number} | null}
    */
   get band() {
     if (this._bandSince === null || this.contextLost) return null;
-    return { seconds: (performance.now() - this._bandSince) / 1000, compiling: this._bandCompiling };
+    return { seconds: (performance.now() - this._bandSince) / 1000, compiling: this._bandCompiling, serial: this._bandSerial };
   }
 
   /** Whether a band has gone TIMEOUTS.hangMs unfinished, and what it is doing then (null: none has). */

@@ -5,10 +5,24 @@
 // Drawn as bands of full-width rows, each its own draw, the render worker (render-worker.js)
 // looks at its messages between two bands, so a change applies after the band in flight.
 //
-// The planner learns the shader's cost per pixel from the bands it has timed and sizes the next
-// band to the budget. A shader it has not timed yet (a new program, a new size) starts with a
-// thin band, so that even a very heavy shader shows its first cost quickly. A cheap frame ends up
-// as one band: the whole frame in one draw, as before.
+// The planner learns each pass's cost from the bands of it it has timed, row by row, and sizes
+// the next band of that pass to the budget:
+//
+// - Each pass has its own cost. A frame's cheap Buffer A says nothing of its heavy Image pass
+//   (which, sized from Buffer A's cost, was once drawn whole in one band of a minute, and the
+//   watchdog took it for endless).
+// - Each row has its own: what its band cost when it was last drawn. A picture's rows differ
+//   (a sky that costs nothing above a floor that costs much): the next frame's first band, at
+//   the bottom, is sized by the bottom rows' cost, not by the top rows' that the last band of
+//   the frame before drew. A row not drawn yet is taken to cost what the band before it did.
+// - A pass not timed yet (a new program, a new size, a change) starts with a thin band of about
+//   FIRST_BAND_PIXELS, and a band has at most GROWTH times the rows of the largest before it. So
+//   even a very heavy shader shows its cost quickly; a cheap frame takes a few bands, then one.
+//
+// The watchdog (src/cli/watchdog.js) gives a band 5 s of the GPU process's CPU time: 50 times
+// this budget on one core, 25 times on two. What can still pass it: a band of two rows (the
+// least) that costs more; and, on a pass's first frame, a band that climbs from cheap rows into
+// rows over 25 times dearer, which no row drawn so far could foretell.
 //
 // Bands start on even rows and (but for the last) have an even number of rows: the GPU shades
 // 2×2 quads, and the shader's screen-space derivatives (adaptive anti-aliasing reads them) pair
@@ -16,45 +30,80 @@
 
 /** A band's draw should take about this long: the longest a change waits for the band in flight. */
 const BAND_BUDGET_MS = 100;
-/** The first band of a shader not timed yet: thin, so that a very heavy one shows its cost soon. */
-const FIRST_BAND_ROWS = 8;
+/**
+ * The first band of a pass not timed yet: about this many pixels (two rows at 320 wide, ten at
+ * 64), so that a shader of a few ms a pixel shows its cost within seconds.
+ */
+const FIRST_BAND_PIXELS = 640;
+/** How many times the rows of the largest band of its pass so far a band may have. */
+const GROWTH = 8;
+
+/**
+ * What is known of a pass's cost: ms per pixel of each row drawn (an upper bound: a band's time
+ * includes the wait for the GPU's signal), of the last band drawn (for rows not drawn yet), and
+ * the most rows a band of it has had.
+ * @typedef {{byRow: number[], last: number, rows: number}} PassCost
+ */
+
+/** An even number of rows, at least two; all that remain when at most one would be left. @param {number} wanted @param {number} remaining */
+function band(wanted, remaining) {
+  const even = Math.max(2, wanted - (wanted % 2));
+  return even >= remaining - 1 ? remaining : even;
+}
 
 export class BandPlanner {
   /** @param {number} [budgetMs] */
   constructor(budgetMs = BAND_BUDGET_MS) {
     this.budgetMs = budgetMs;
-    /** Estimated milliseconds per pixel; null until a band has been timed. @type {number | null} */
-    this.msPerPixel = null;
+    /** Each pass's cost, by the pass (its step). @type {Map<object, PassCost>} */
+    this._costs = new Map();
   }
 
-  /** A new program or size: what was learnt no longer holds. */
+  /** A new program or size, or a change: what was learnt no longer holds. */
   forget() {
-    this.msPerPixel = null;
+    this._costs.clear();
   }
 
   /**
-   * The rows of the next band.
+   * The rows of the next band of `pass`, from row `y`.
+   * @param {object} pass the pass drawn (its step: each has its own cost)
    * @param {number} width the frame's width
+   * @param {number} y the band's first row
    * @param {number} remaining rows left to draw in this frame
    */
-  rows(width, remaining) {
-    const wanted = this.msPerPixel === null ? FIRST_BAND_ROWS : Math.floor(this.budgetMs / (this.msPerPixel * width));
-    const even = Math.max(2, wanted - (wanted % 2));
-    // a remainder of one row (an odd height) goes with the band before it
-    return even >= remaining - 1 ? remaining : even;
+  rows(pass, width, y, remaining) {
+    const cost = this._costs.get(pass);
+    if (!cost) return band(Math.floor(FIRST_BAND_PIXELS / width), remaining);
+    const most = Math.min(remaining, cost.rows * GROWTH);
+    let ms = 0;
+    let rows = 0;
+    while (rows < most) {
+      const next = ms + (cost.byRow[y + rows] ?? cost.last) * width;
+      if (next > this.budgetMs && rows >= 2) break;
+      ms = next;
+      rows++;
+    }
+    return band(rows, remaining);
   }
 
   /**
-   * A band has been drawn: `ms` from its draw call to the GPU's signal that it finished (an
-   * upper bound on its cost: it includes the wait for the signal).
+   * A band of `pass` has been drawn: `ms` from its draw call to the GPU's signal that it
+   * finished (an upper bound on its cost: it includes the wait for the signal).
+   * @param {object} pass
    * @param {number} width
+   * @param {number} y its first row
    * @param {number} rows
    * @param {number} ms
    */
-  measured(width, rows, ms) {
+  measured(pass, width, y, rows, ms) {
     const sample = ms / Math.max(1, width * rows);
-    // half the weight on the latest band: follows a change of cost within a few bands, while one
-    // band slowed down by something else (a compile, the page) moves the estimate only half way
-    this.msPerPixel = this.msPerPixel === null ? sample : 0.5 * (this.msPerPixel + sample);
+    const known = this._costs.get(pass);
+    const cost = known ?? { byRow: [], last: sample, rows };
+    for (let row = y; row < y + rows; row++) cost.byRow[row] = sample;
+    cost.last = sample;
+    // the last band of a frame is what rows are left, and may be few: the next frame does not
+    // start small again for it
+    cost.rows = Math.max(cost.rows, rows);
+    this._costs.set(pass, cost);
   }
 }

@@ -52,6 +52,8 @@ const PRESENT_EVERY_MS = 250;
  * @property {(error: Error) => void} reject
  */
 
+/** A band of rows: the step it draws (the band planner learns each one's cost) and its first row. @typedef {{step: object, y: number}} BandPass */
+
 /** The fields a job is queued with; the scheduler adds its progress and its promise's ends. @typedef {Omit<JobState, 'step' | 'y' | 'redo' | 'resolve' | 'reject'> & JobKind} JobFields */
 
 export class BandScheduler {
@@ -69,7 +71,7 @@ export class BandScheduler {
     this._probeWarming = false;
     /** Jobs waiting for the one under way. @type {Job[]} */
     this._waiting = [];
-    /** The band the GPU is drawing (`warmUp`: a new program's first draw, see pump). @type {{sync: WebGLSync, rows: number, started: number, warmUp: boolean} | null} */
+    /** The band the GPU is drawing (`warmUp`: a new program's first draw, see pump; `pass`: what the planner learns its cost for). @type {{sync: WebGLSync, rows: number, started: number, warmUp: boolean, pass: BandPass | null} | null} */
     this._band = null;
     /** The programs (materials) drawn at least once since they compiled. @type {WeakSet<object>} */
     this._drawnPrograms = new WeakSet();
@@ -243,24 +245,24 @@ export class BandScheduler {
     }
     // the Cube A pass is its six faces stacked, and a band stops at a face's top (renderer.js)
     const extent = CubeBuffer.extent(drawn, job.width, job.height);
-    const rows = renderer.drawRows(job.y, job.y + this._planner.rows(extent.width, extent.height - job.y), target);
+    const rows = renderer.drawRows(job.y, job.y + this._planner.rows(drawn, extent.width, job.y, extent.height - job.y), target);
     if (last && job.y + rows >= job.height && job.kind === 'frame') renderer.gpuTimer.end();
-    this._startBand(rows);
+    this._startBand(rows, { pass: { step: drawn, y: job.y } });
   }
 
   /**
    * The GPU has the band's draws: watch for its end.
    * @param {number} rows rows of the job it draws (0 for a warm-up)
-   * @param {{warmUp?: boolean, compiling?: boolean}} [options] warmUp: a new program's first
-   *   draw, of no pixel (pump); compiling: the band includes a program's first draw (the
-   *   watchdog is told so)
+   * @param {{warmUp?: boolean, compiling?: boolean, pass?: BandPass}} [options] warmUp: a new
+   *   program's first draw, of no pixel (pump); compiling: the band includes a program's first
+   *   draw (the watchdog is told so); pass: the step a band of rows draws and its first row
    */
-  _startBand(rows, { warmUp = false, compiling = false } = {}) {
+  _startBand(rows, { warmUp = false, compiling = false, pass } = {}) {
     const gl = this._renderer.gl;
     const sync = gl.fenceSync(gl.SYNC_GPU_COMMANDS_COMPLETE, 0);
     if (!sync) return; // the context is lost: webglcontextlost rejects the jobs
     gl.flush();
-    this._band = { sync, rows, started: performance.now(), warmUp };
+    this._band = { sync, rows, started: performance.now(), warmUp, pass: pass ?? null };
     this._tell('bandStarted', { compiling });
     setTimeout(() => this._poll(), POLL_MS);
   }
@@ -304,18 +306,18 @@ export class BandScheduler {
       return;
     }
     gl.deleteSync(band.sync);
-    const { rows, started, warmUp } = band;
+    const { rows, started, warmUp, pass } = band;
     this._band = null;
     const job = this._job;
     if (warmUp) {
       if (job) job.redo = false; // it drew no rows: a change meanwhile has nothing to undo
       this._tell('band', { kind: 'compile', y: job?.y ?? 0, height: job?.height ?? 0, bitmap: null });
-    } else this._bandDone(rows, performance.now() - started);
+    } else this._bandDone(rows, performance.now() - started, pass);
     this.pump();
   }
 
-  /** @param {number} rows @param {number} ms */
-  _bandDone(rows, ms) {
+  /** @param {number} rows @param {number} ms @param {BandPass | null} pass */
+  _bandDone(rows, ms, pass) {
     const job = this._job;
     const renderer = this._made();
     if (!job || !renderer) return;
@@ -330,7 +332,7 @@ export class BandScheduler {
       return;
     }
     const extent = CubeBuffer.extent(renderer.steps[job.step], job.width, job.height);
-    this._planner.measured(extent.width, rows, ms);
+    if (pass) this._planner.measured(pass.step, extent.width, pass.y, rows, ms);
     // what llvmpipe's loop limit cut in the band (loop-cuts.js); told to, a frame with a cut goes
     // no further: its picture is not the shader's, and a loop that never ends costs the limit in
     // every pixel
