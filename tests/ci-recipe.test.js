@@ -65,4 +65,20 @@ describe('docs/ci.md, the CI recipe', () => {
     expect(workflow).toMatch(/SHADERPROOF_MEDIA_CACHE: (\S+)[\s\S]*uses: actions\/cache@v\d[\s\S]*path: \1\n/);
     expect(workflow).toMatch(/if: always\(\)\n\s+uses: actions\/upload-artifact@v\d\n[\s\S]*path: shaderproof-output\//);
   });
+
+  test('says where the package comes from (it is private) and what `test` draws with without --renderer', () => {
+    const pkg = JSON.parse(fs.readFileSync(path.join(REPO_ROOT, 'package.json'), 'utf8'));
+    expect(pkg.private).toBe(true);
+    const words = recipe.replace(/\s+/g, ' ');
+    expect(words).toMatch(/It is private: it is not on npm's registry/);
+    expect(words).toContain('npm install --save-dev git+https://');
+    // the tarball npm pack writes: its name and version are package.json's
+    expect(words).toContain(`npm pack\` writes \`${pkg.name}-${pkg.version}.tgz\``);
+    expect(words).toContain(`npm install --save-dev ./${pkg.name}-${pkg.version}.tgz`);
+    // cli/test/corpus.js and drawn-by.js: the references' renderer; --update and a new folder as render
+    expect(words).toMatch(/Without `--renderer` \(or `\$SHADERPROOF_RENDERER`\), `test` draws with the renderer that drew the references/);
+    expect(words).toContain('`shaders/__references__/drawn-by.json`');
+    expect(words).toMatch(/no references yet, draw with llvmpipe where Mesa is installed, else SwiftShader/);
+    expect(words).not.toMatch(/Without the flag `test` draws with SwiftShader/);
+  });
 });

@@ -2,7 +2,8 @@
 // in a folder of its own. llvmpipe draws the raytracer as SwiftShader does (within the tolerance
 // below) and the same bytes run to run; `render` defaults to llvmpipe where Mesa is; `test`
 // records what drew its references and draws with it, and says when a run is asked to draw with
-// another; an endless shader fails within the watchdog at every size.
+// another; a Buffer A and a Cube A that read themselves draw the same bytes three times on each
+// (issue 50); an endless shader fails within the watchdog at every size.
 
 import { execFile } from 'node:child_process';
 import fs from 'node:fs';
@@ -94,6 +95,101 @@ describe.runIf(mesa)('llvmpipe', () => {
     const other = await shaderproof('test', 'cases', '--renderer', 'swiftshader', '--out', 'out');
     expect(other.stderr).toMatch(/^note: the references were drawn by llvmpipe, and this run draws with swiftshader as asked/m);
   });
+});
+
+/** A channel of the site's JSON reading Cube A or Buffer A, with the nearest filter: a texel as stored. */
+const channel = (type, channel) => {
+  const [id, filepath] = type === 'cubemap' ? ['4dX3Rr', '/media/previz/cubemap00.png'] : ['4dXGR8', '/media/previz/buffer00.png'];
+  const sampler = { filter: 'nearest', wrap: 'clamp', vflip: 'false', srgb: 'false', internal: 'byte' };
+  return { id, filepath, previewfilepath: filepath, type, channel, sampler, published: 1 };
+};
+
+/**
+ * Two counters of 1/255 a frame, each texel its own: Buffer A, and Cube A, whose texels cost
+ * enough (a loop of sines, of no effect on the count) that its pass is drawn in many bands on
+ * either renderer. Image shows at every pixel Buffer A's count there (red), Cube A's along the
+ * pixel's direction, over the whole sphere (green), and iFrame (blue).
+ */
+const COUNTERS = {
+  Shader: {
+    ver: '0.1',
+    info: { id: 'counters', name: 'counters', description: 'written here' },
+    renderpass: [
+      {
+        inputs: [channel('cubemap', 0), channel('buffer', 1)],
+        outputs: [{ id: '4dfGRr', channel: 0 }],
+        code: `void mainImage(out vec4 c, in vec2 f) {
+    vec2 uv = f / iResolution.xy;
+    float phi = uv.x * 6.2831853, th = uv.y * 3.1415926;
+    vec3 d = vec3(sin(th) * cos(phi), cos(th), sin(th) * sin(phi));
+    c = vec4(texelFetch(iChannel1, ivec2(f), 0).x, texture(iChannel0, d).x, float(iFrame) / 255.0, 1.0);
+}`,
+        name: 'Image',
+        description: '',
+        type: 'image',
+      },
+      {
+        inputs: [channel('buffer', 0)],
+        outputs: [{ id: '4dXGR8', channel: 0 }],
+        code: 'void mainImage(out vec4 c, in vec2 f) { c = vec4(texelFetch(iChannel0, ivec2(f), 0).x + 1.0 / 255.0, 0.0, 0.0, 1.0); }',
+        name: 'Buffer A',
+        description: '',
+        type: 'buffer',
+      },
+      {
+        inputs: [channel('cubemap', 0)],
+        outputs: [{ id: '4dX3Rr', channel: 0 }],
+        code: `void mainCubemap(out vec4 c, in vec2 f, in vec3 ro, in vec3 rd) {
+    float w = 0.0;
+    for (int i = 0; i < 96; i++) w += sin(rd.x * float(i) + iTime);
+    c = vec4(texture(iChannel0, rd).x + 1.0 / 255.0 + w * 1e-30, 0.0, 0.0, 1.0);
+}`,
+        name: 'Cube A',
+        description: '',
+        type: 'cubemap',
+      },
+    ],
+  },
+};
+
+describe('a Buffer A and a Cube A that read themselves: --frame N, three times, the same bytes on each renderer', () => {
+  // Issue 50, part 4: SwiftShader drew a public Cube A shader with other bytes run to run, and
+  // llvmpipe did not. The cause was a clear through a band's scissor (renderer.js drawRegion
+  // leaves it on the target, and three.js clears within it): --frame's clear of the buffers and
+  // the cube maps kept the still's count outside the rows of each pass's last band, and those rows
+  // moved with the bands' timing. SwiftShader, slower, drew the cube in bands; llvmpipe drew the
+  // whole face. With that clear back (cube-buffer.js clear, pass-buffers.js _clear: either one),
+  // both renderers here drew Cube A counts of 3 and 5 where 2 belongs, and Buffer A's rows of its
+  // first band (8 rows) kept their count: other pixels on each run.
+  const FRAME = 1;
+  const renderers = mesa ? ['swiftshader', 'llvmpipe'] : ['swiftshader'];
+  test.each(renderers)(
+    '%s: every pixel counts frames 0 to N in both, as computed here',
+    async (renderer) => {
+      write('counters.json', JSON.stringify(COUNTERS));
+      const view = ['--size', '64x36', '--frame', String(FRAME), '--renderer', renderer];
+      const renders = [];
+      for (let run = 1; run <= 3; run++) {
+        const out = await shaderproof('render', 'counters.json', '-o', `counters-${run}.png`, ...view);
+        expect(out.code, out.stderr).toBe(0);
+        renders.push(png(`counters-${run}.png`));
+      }
+      // each render's pixels by their (red, green, blue): how many of each
+      const counts = renders.map(({ data }) => {
+        const seen = new Map();
+        for (let i = 0; i < data.length; i += 4) {
+          const key = `${data[i]},${data[i + 1]},${data[i + 2]}`;
+          seen.set(key, (seen.get(key) ?? 0) + 1);
+        }
+        return Object.fromEntries(seen);
+      });
+      const want = { [[FRAME + 1, FRAME + 1, FRAME].join(',')]: 64 * 36 };
+      expect(counts).toEqual([want, want, want]);
+      expect(Buffer.compare(renders[0].data, renders[1].data), 'runs 1 and 2').toBe(0);
+      expect(Buffer.compare(renders[0].data, renders[2].data), 'runs 1 and 3').toBe(0);
+    },
+    300_000,
+  );
 });
 
 describe('an endless shader fails within the watchdog at every size, and one case never takes a run down', () => {

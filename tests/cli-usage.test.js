@@ -15,6 +15,8 @@ import { commandLineWords, mediaFolders } from '../src/cli/media.js';
 import { DEFAULT_SIZE as TEST_SIZE } from '../src/cli/test/manifest.js';
 import { MEDIA_WORDS } from '../src/shadertoy/media.js';
 import { jsonSyntaxError } from '../src/shared/json-syntax.js';
+import { chooseRenderer } from '../src/engine/renderers.js';
+import { referenceRenderer } from '../src/cli/test/drawn-by.js';
 import { REPO_ROOT } from './harness/config.js';
 
 let folder = '';
@@ -285,6 +287,32 @@ describe('one line in our words (issue 45, item 6)', () => {
     expect(code).toBe(0);
     expect(out.join('\n')).toContain(`drawn at ${size} and iTime 0`);
     expect(fs.readFileSync(path.join(REPO_ROOT, 'README.md'), 'utf8')).toMatch(new RegExp(`\\| \`test DIR\` \\| [^|]*drawn at ${size}`));
+  });
+
+  test("--help opens with what draws by default, as the verbs choose it: llvmpipe where Mesa is, test its references' renderer", async () => {
+    // the rule its words say (engine/renderers.js chooseRenderer, cli/test/drawn-by.js)
+    const mesa = { vendorFile: '', egl: '', driver: '' };
+    expect(chooseRenderer({}, 'auto', () => ({ ...mesa, missing: [] }))).toBe('llvmpipe');
+    expect(chooseRenderer({}, 'auto', () => ({ ...mesa, missing: ['libEGL_mesa.so.0'] }))).toBe('swiftshader');
+    const drawnBy = {
+      renderer: /** @type {const} */ ('llvmpipe'),
+      webgl: '',
+      chromium: '',
+      mesa: null,
+      cpu: '',
+      cpuFeatures: [],
+      platform: '',
+    };
+    expect(referenceRenderer(drawnBy, true)).toBe('llvmpipe');
+    expect(referenceRenderer(null, true)).toBe('swiftshader');
+    const { code, out } = await shaderproof(['--help']);
+    expect(code).toBe(0);
+    const opening = out.slice(0, out.indexOf('')).join(' ');
+    expect(opening).toMatch(/llvmpipe draws where Mesa is installed, else SwiftShader/);
+    expect(opening).toMatch(/test draws with the renderer its references were drawn with/);
+    const test = (await shaderproof(['test', '--help'])).out.join(' ');
+    expect(test).toMatch(/else the renderer that drew the references \(--update records it in DIR\/__references__\/drawn-by\.json;/);
+    expect(test).toMatch(/references written before that record are SwiftShader's/);
   });
 });
 

@@ -40,6 +40,65 @@ describe('errors', () => {
     });
   });
 
+  test('a Sound tab beside an Image tab that fails on load: the error, not "Drawing the first frame"; paused; no sound note', async () => {
+    /** A Shadertoy export: this Image tab and a Sound tab that compiles. */
+    const withSound = (image) =>
+      JSON.stringify({
+        Shader: {
+          ver: '0.1',
+          info: { name: 'sound' },
+          renderpass: [
+            { inputs: [], outputs: [{ id: '4dfGRr', channel: 0 }], code: image, name: 'Image', description: '', type: 'image' },
+            {
+              inputs: [],
+              outputs: [],
+              code: 'vec2 mainSound(int s, float t) { return vec2(0.1 * sin(6.2831 * 440.0 * t)); }',
+              name: 'Sound',
+              description: '',
+              type: 'sound',
+            },
+          ],
+        },
+      });
+    const page = (/** @type {import('puppeteer-core').Page} */ p) =>
+      p.evaluate(() => ({
+        readout: document.querySelector('#toolbar .fps')?.textContent,
+        button: document.querySelector('#toolbar .play')?.getAttribute('aria-label'),
+        note: document.getElementById('sound-note')?.textContent ?? null,
+        playing: window.shaderEngine.info().playing,
+        sound: window.shaderEngine.soundState().available,
+      }));
+    await withServedDir('test-broken-sound', async (dir, base) => {
+      fs.writeFileSync(path.join(dir, 'broken.json'), withSound('void mainImage(out vec4 c, in vec2 f) {\n    c = vec3(1.0);\n}'));
+      await withPage(async ({ page: p, goto }) => {
+        await goto(`?shader=${base}/broken.json&${SIZE}`, { expectReady: false }); // no time=: it would play
+        await p.waitForFunction(() => document.documentElement.dataset.error === 'shader-compile');
+        expect(await overlayText(p)).toMatch(/broken\.json did not compile[\s\S]*Image:2:/);
+        // the readout refreshes four times a second
+        await p.waitForFunction(() => document.querySelector('#toolbar .fps')?.textContent !== 'Drawing the first frame', {
+          timeout: 5000,
+        });
+        expect(await page(p)).toEqual({
+          readout: 'Not running · did not compile',
+          button: 'Play',
+          note: null,
+          playing: false,
+          sound: false,
+        });
+
+        // once a shader compiles it plays, as a fresh load of it would, and its Sound tab waits for a key
+        const outcome = await p.evaluate((j) => window.shaderEngine.setProject(j), withSound(solid(0, 255, 0)));
+        expect(outcome.ok, outcome.error).toBe(true);
+        expect(await page(p)).toMatchObject({
+          button: 'Pause',
+          note: expect.stringMatching(/plays once you click or press a key/),
+          playing: true,
+          sound: true,
+        });
+      });
+    });
+  });
+
   test('a lost WebGL context shows an alert and comes back with the same picture', async () => {
     await withPage(async ({ page, goto }) => {
       await goto(PATTERN);

@@ -260,6 +260,7 @@ const PLAYING_LINES = [
   'GPU 1915.6 ms · 0.4 fps',
   '1508.5 ms between frames · 0.6 fps',
   'Drawing the first frame · 40%',
+  'Not running · did not compile',
   'No frame for 12 s · may never finish',
 ];
 

@@ -1,10 +1,10 @@
 // shaderproof: the page's engine from the command line (bin/shaderproof.js). Each verb parses its
 // flags (node:util parseArgs, strict: an unknown flag is a usage error), starts a session
-// (session.js: the built page, a loopback server, headless Chromium on SwiftShader) and says in
-// one line what it made and which renderer drew it. Exit codes: 0 done, 1 a case or a shader
-// failed, 2 a bad flag or value. Every error is one line in the project's words (a stack only
-// with --verbose), and an output file is written whole after a render that succeeded, or not at
-// all (png.js writeWhole).
+// (session.js: the built page, a loopback server, headless Chromium on llvmpipe or SwiftShader,
+// as MAIN_USAGE says) and says in one line what it made and which renderer drew it. Exit codes:
+// 0 done, 1 a case or a shader failed, 2 a bad flag or value. Every error is one line in the
+// project's words (a stack only with --verbose), and an output file is written whole after a
+// render that succeeded, or not at all (png.js writeWhole).
 
 import fs from 'node:fs';
 import path from 'node:path';
@@ -182,6 +182,10 @@ DIR/__references__/<case>.wav (RMS of the difference, and the spectrum). A faili
 actual, reference and diff PNGs in the output folder, and the run its reports there; it exits 1
 when a case fails. A case whose browser stops answering fails, and the run goes on in another.
 
+What draws: --renderer R, else the renderer that drew the references (--update records it in
+DIR/__references__/drawn-by.json; references written before that record are SwiftShader's).
+--update, and a folder with no references yet, draw as render does.
+
   --update              write the references (and pass)
   --shard i/n           run the i-th of n shares of the cases (1-based)
   --jobs N              cases drawn at once, each worker its own Chromium (default ${DEFAULT_JOBS} here)
@@ -207,8 +211,9 @@ ${COMMON_HELP}`,
   },
 };
 
-const MAIN_USAGE = `${NAME}: run, render, record and test Shadertoy shaders in headless Chromium
-(SwiftShader: no GPU needed)
+const MAIN_USAGE = `${NAME}: run, render, record and test Shadertoy shaders in headless Chromium,
+on the CPU (no GPU needed): llvmpipe draws where Mesa is installed, else SwiftShader; test
+draws with the renderer its references were drawn with; --renderer R chooses
 
 Usage: ${NAME} VERB [options]   (${NAME} VERB --help for each)
 

@@ -135,6 +135,8 @@ export class ShaderApp extends Emitter {
       emitCompile: (error, fileName) => this.emit('compile', error, fileName),
       requestFrame: () => this.frames.request(),
       startClock: () => this.startClock(),
+      playing: () => this.inputs.playing,
+      setPlaying: (play) => (play ? this.play() : this.pause()),
     });
     /** "Converge when still". */
     this.converge = new Converge({
@@ -309,6 +311,7 @@ export class ShaderApp extends Emitter {
   // ---- time ------------------------------------------------------------------------------------
 
   play() {
+    this.compiles.held = false;
     this.inputs.play();
     this.frames.restartInterval();
     this.emit('state');
@@ -316,6 +319,7 @@ export class ShaderApp extends Emitter {
   }
 
   pause() {
+    this.compiles.held = false;
     this.inputs.pause();
     this.channels.silence();
     this.media.silence();

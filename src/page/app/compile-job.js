@@ -23,6 +23,8 @@ import { controlDefaults, projectControls } from '../../shadertoy/controls.js';
  * @property {(...args: import('./events.js').AppEvents['compile']) => void} emitCompile the app's 'compile' event
  * @property {() => void} requestFrame a frame drawn (FrameLoop.request)
  * @property {() => void} startClock a newly loaded shader starts at iFrame 0 (ShaderApp.startClock)
+ * @property {() => boolean} playing whether the clock runs
+ * @property {(play: boolean) => void} setPlaying plays or pauses the clock (ShaderApp.play, .pause)
  */
 
 export class CompileJob {
@@ -37,6 +39,10 @@ export class CompileJob {
     this.count = 0;
     /** The messages of the last failed compile, [] after a success. @type {Array<{line: number | null, message: string}>} */
     this.errors = [];
+    /** Whether the last compile to report failed (with no shader running, nothing is drawn). */
+    this.failed = false;
+    /** The clock was paused because a compile failed with no shader running: the next success plays it. */
+    this.held = false;
     this._started = 0;
     /** Which compile `running` is: one that finishes after a newer one is not drawn (gpu/renderer.js). */
     this._runningSerial = 0;
@@ -95,7 +101,9 @@ export class CompileJob {
         if (serial > this._runningSerial) this._onScreen(version, serial);
         if (job !== this.latest) return;
         this.errors = [];
+        this.failed = false;
         this.count++;
+        if (this.held) host.setPlaying(true);
         host.emitCompile(null, fileName);
         host.requestFrame();
       },
@@ -105,6 +113,12 @@ export class CompileJob {
         if (orElse && !this.running) await this._standIn(orElse).catch(() => {});
         if (job === this.latest) {
           this.errors = error.messages ?? [];
+          this.failed = true;
+          // nothing runs, so nothing plays: the clock says so (Play shown, the Sound tab silent)
+          if (!this.running && host.playing()) {
+            host.setPlaying(false);
+            this.held = true;
+          }
           console.warn(error.message);
           host.emitCompile(error, fileName);
         }

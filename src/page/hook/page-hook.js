@@ -17,11 +17,12 @@
 //   comparison()          {running, error, stale, shown}: the comparison's state on the page.
 //   shareUrl()            Promise<string>: the link "Copy link" copies (reproduces this view).
 //   editorSource()        the text of the editor's current tab (what it holds, compiled or not).
-//   soundState()          {available (a Sound tab), context (the AudioContext's state, null
-//                         before the first click or key), muted, plan ({sample, when, rate,
-//                         time}: sample `sample` plays at audio-clock time `when`, planned at
-//                         iTime `time`: sound/schedule.js; null when silent), now (the audio
-//                         clock), sources (blocks playing or scheduled), level (RMS)}
+//   soundState()          {available (the shader that runs has a Sound tab), context (the
+//                         AudioContext's state, null before the first click or key), muted,
+//                         plan ({sample, when, rate, time}: sample `sample` plays at
+//                         audio-clock time `when`, planned at iTime `time`: sound/schedule.js;
+//                         null when silent), now (the audio clock), sources (blocks playing or
+//                         scheduled), level (RMS)}
 //   setMuted(on)          the Sound tab's mute button
 
 import { EngineHook, hookOnWindow } from './engine-hook.js';

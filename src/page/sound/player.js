@@ -9,7 +9,7 @@
 // so (ui/notices.js soundNote). A gain node mutes; an analyser feeds the level meter.
 
 import { BLOCK_SAMPLES, SAMPLE_RATE, toPlayed } from '../../shadertoy/sound.js';
-import { hasSound, soundSamples } from './samples.js';
+import { runsSound, soundSamples } from './samples.js';
 import { DRIFT_SECONDS, PLAY_SAMPLES, blocksToPlay, driftAt, planPlayback } from './schedule.js';
 
 /** How far ahead of the audio clock blocks are scheduled, in seconds. */
@@ -65,9 +65,9 @@ export class SoundPlayer {
     return this._sources.size;
   }
 
-  /** Whether the shader has a Sound tab. */
+  /** Whether the shader that runs has a Sound tab (one that did not compile plays nothing). */
   get available() {
-    return hasSound(this.app);
+    return runsSound(this.app);
   }
 
   /** Whether it has one the browser will not let play yet (no interaction so far). */

@@ -11,6 +11,13 @@ import { SAMPLE_RATE } from '../../shadertoy/sound.js';
 export const hasSound = (app) => soundPass(app.project) !== null;
 
 /**
+ * Whether the shader that runs (the last one that compiled) has a Sound tab: a shader that did
+ * not compile plays nothing, and the one before it, if any, plays on.
+ * @param {ShaderApp} app
+ */
+export const runsSound = (app) => app.compiles.running !== null && soundPass(app.compiles.running.project) !== null;
+
+/**
  * Samples [first, first + count) of the Sound tab: two 16-bit words a sample (sound.js).
  * @param {ShaderApp} app
  * @param {number} first

@@ -37,6 +37,8 @@ function activity(app) {
   const band = app.gpu.band;
   if (band && app.gpu.hung === 'drawing') return { phase: 'stalled', seconds: band.seconds };
   if (band && band.compiling && band.seconds >= COMPILE_SAID_AFTER_S) return { phase: 'compiling', seconds: band.seconds };
+  // no shader runs: its compile failed (the overlay says why), and nothing is drawn
+  if (!app.compiles.hasProgram && app.compiles.failed) return { phase: 'failed' };
   if (count === 0) return { phase: 'first', progress: fraction };
   if (app.converge.on) return { phase: 'converging', samples: stillFrames, of: app.converge.frames };
   // a frame drawn while paused is said only when it takes more than a band (a heavy one): a

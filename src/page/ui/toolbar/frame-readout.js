@@ -34,7 +34,8 @@ const LATE_MS = 500;
  *   | {phase: 'paused', progress: number | null}
  *   | {phase: 'converging', samples: number, of: number}
  *   | {phase: 'compiling', seconds: number}
- *   | {phase: 'stalled', seconds: number}} Activity
+ *   | {phase: 'stalled', seconds: number}
+ *   | {phase: 'failed'}} Activity
  */
 
 /** Frames drawn per second of the page's clock, over the last RATE_WINDOW_MS. */
@@ -139,6 +140,7 @@ export class FrameReadout {
     const s = (/** @type {number} */ seconds) => `${Math.floor(seconds)} s`;
     if (now.phase === 'compiling') line = `Compiling · ${s(now.seconds)}`;
     else if (now.phase === 'stalled') line = `No frame for ${s(now.seconds)} · may never finish`;
+    else if (now.phase === 'failed') line = 'Not running · did not compile';
     else if (now.phase === 'first') line = `Drawing the first frame${percent(now.progress)}`;
     else if (now.phase === 'paused') line = now.progress === null ? 'Paused' : `Paused · drawing a frame${percent(now.progress)}`;
     else if (now.phase === 'still') line = 'Speed 0× · time stands still';
