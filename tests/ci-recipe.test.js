@@ -71,7 +71,7 @@ describe('docs/ci.md, the CI recipe', () => {
     expect(pkg.private).toBe(true);
     const words = recipe.replace(/\s+/g, ' ');
     expect(words).toMatch(/It is private: it is not on npm's registry/);
-    expect(words).toContain('npm install --save-dev git+https://');
+    expect(words).toContain('npm install --save-dev git+URL#COMMIT');
     // the tarball npm pack writes: its name and version are package.json's
     expect(words).toContain(`npm pack\` writes \`${pkg.name}-${pkg.version}.tgz\``);
     expect(words).toContain(`npm install --save-dev ./${pkg.name}-${pkg.version}.tgz`);
