@@ -66,6 +66,8 @@ function fakeSession(rendererName = undefined) {
       return { width: 4, height: 4, data, info: { controls: {} }, notes: [] };
     },
     drawFloat: async () => ({ width: 0, height: 0, data: new Float32Array() }),
+    // no renderer with a loop limit: nothing is ever cut (src/cli/loop-limit.js)
+    loopReport: async () => null,
     client: () => null,
     takeLogged: () => [],
     async kill() {
