@@ -165,7 +165,8 @@ const tell = serve(
     },
 
     loopGuard({ stopOnCut, guard }) {
-      const cuts = renderer().loopCuts;
+      if (!made) return; // no WebGL2 (init said 'failed'): nothing is drawn, nor guarded
+      const cuts = made.loopCuts;
       cuts.stopOnCut = stopOnCut;
       cuts.enabled = guard && cuts.onLlvmpipe;
     },
