@@ -1,44 +1,43 @@
-// ESLint (flat config): the recommended rules, with the globals each part of the tree runs with.
+// ESLint (flat config): the recommended rules, the globals each room runs with, and what each
+// room may import (docs/architecture.md, "The rooms"). The rules are by folder: a new module in
+// a room is under its room's rule without being listed (tests/lint-rooms.test.js crosses each).
 import js from '@eslint/js';
 import globals from 'globals';
 
-const REFERENCE_RULE = {
-  group: ['**/reference/*'],
-  message: 'The page does not load the float64 reference up front: import() it lazily where a feature needs it.',
-};
+/** A room that a pattern keeps out: its import specifiers from anywhere below src/. */
+const room = (/** @type {string} */ name) => [`**/${name}/**`, `../${name}`, `../../${name}`];
 
-/**
- * The engine page (engine-main.js) and the engine's modules load no widget of the interactive
- * page (src/page/ui/) and nothing of the built-in raytracer (src/raytracer/, shaders/*.glsl).
- */
-const ENGINE_RULE = {
-  group: ['**/ui/**', '**/raytracer/**', '**/*.glsl', '**/*.glsl?raw'],
-  message:
-    "The engine page loads no widget (ui/) and nothing of the built-in raytracer (src/raytracer/, shaders/): the interactive page plugs them in (main.js; docs/architecture.md, 'The engine page').",
+/** What a room may not import, and the line that says why and what to do. */
+const KEEP_OUT = {
+  studio: { group: room('studio'), message: 'The studio (src/studio/) is the page around the player: nothing below it imports it.' },
+  raytracer: {
+    group: [...room('raytracer'), '**/*.glsl', '**/*.glsl?raw'],
+    message:
+      'The built-in raytracer (src/raytracer/, shaders/) is one shader among others: only the studio plugs it in (docs/architecture.md).',
+  },
+  reference: {
+    group: room('reference'),
+    message: 'The float64 reference is not loaded up front: import() it lazily where a feature needs it.',
+  },
+  player: {
+    group: room('player'),
+    message: "The player runs in the browser: Node's side talks to it through src/headless/client.js (types may be imported in JSDoc).",
+  },
+  headless: { group: room('headless'), message: 'src/headless/ drives Chromium from Node: the browser-side rooms never import it.' },
+  node: {
+    group: ['**/api/**', '../api', '**/runner/**', '../runner', '**/cli/**', '../cli'],
+    message: 'The API, the runner and the command line sit above this room: it may not import them.',
+  },
+  cli: { group: ['**/cli/**', '../cli'], message: 'The command line is built on the API and the runner, never the other way.' },
+  runner: { group: ['**/runner/**', '../runner'], message: 'The test runner is built on the API, never the other way.' },
 };
-
-/** The engine's modules on the page: the engine entry and what it runs. */
-const ENGINE_FILES = [
-  'src/page/engine-main.js',
-  'src/page/engine-status.js',
-  'src/page/open-view.js',
-  'src/page/start-page.js',
-  'src/page/page-marks.js',
-  'src/page/words.js',
-  'src/page/hook/engine-*.js',
-  'src/page/hook/failed-hook.js',
-  'src/page/hook/hook-window.js',
-  'src/page/app/**/*.js',
-  'src/page/gpu/**/*.js',
-  'src/page/io/**/*.js',
-  'src/page/inputs/**/*.js',
-  'src/page/sound/**/*.js',
-];
-/** Widgets among them: the Sound tab's buttons (the interactive page's). */
-const NOT_ENGINE = ['src/page/sound/sound-controls.js'];
 
 /** The no-restricted-imports rule with `patterns` (a file gets the last config's that matches it, so each lists all of its own). */
 const restricted = (/** @type {object[]} */ ...patterns) => ({ 'no-restricted-imports': /** @type {const} */ (['error', { patterns }]) });
+
+const BROWSER_ROOMS = ['src/player/**/*.js', 'src/studio/**/*.js', 'src/raytracer/**/*.js'];
+const NODE_ROOMS = ['src/headless/**/*.js', 'src/api/**/*.js', 'src/runner/**/*.js', 'src/cli/**/*.js', 'bin/**/*.js'];
+const BOTH = ['src/shadertoy/**/*.js', 'src/shared/**/*.js', 'src/reference/**/*.js'];
 
 export default [
   { ignores: ['dist/', 'node_modules/', 'tests/output/', 'public/'] },
@@ -53,49 +52,76 @@ export default [
       'prefer-const': 'error',
     },
   },
-  // The page runs in the browser.
-  { files: ['src/page/**/*.js'], languageOptions: { globals: globals.browser } },
-  // What may import what (docs/architecture.md, Layout). The page never loads the float64 reference up front:
-  // a feature that needs it imports it with import(), when it is asked for.
-  { files: ['src/page/**/*.js'], rules: restricted(REFERENCE_RULE) },
-  // The engine page and what it runs load no widget and nothing of the built-in raytracer: the
-  // engine entry and every module its imports reach (tests/engine-boundaries.test.js checks that
-  // these lists cover them), and the command line.
-  { files: ENGINE_FILES, ignores: NOT_ENGINE, rules: restricted(REFERENCE_RULE, ENGINE_RULE) },
+  { files: BROWSER_ROOMS, languageOptions: { globals: globals.browser } },
+  // Node's rooms: the functions they pass to page.evaluate() run in the page.
+  { files: NODE_ROOMS, languageOptions: { globals: { ...globals.node, ...globals.browser } } },
+  { files: BOTH, languageOptions: { globals: { ...globals.browser, ...globals.node } } },
+
+  // ---- what each room may import --------------------------------------------------------
+  // The player: the engine that draws any shader (engine.html). No studio, no raytracer, no
+  // reference up front, nothing of Node's side.
   {
-    files: ['src/engine/**/*.js', 'src/cli/**/*.js', 'bin/**/*.js', 'src/shared/**/*.js', 'src/shadertoy/**/*.js'],
-    rules: restricted(ENGINE_RULE),
+    files: ['src/player/**/*.js'],
+    rules: restricted(KEEP_OUT.studio, KEEP_OUT.raytracer, KEEP_OUT.reference, KEEP_OUT.headless, KEEP_OUT.node),
   },
-  // The render worker (gpu/) runs on a thread of its own: it imports its own modules, the
-  // Shadertoy contract and src/shared/, never the page's state (app/), widgets (ui/) or files (io/).
+  // Its render worker runs on a thread of its own: never the page's state (app/), files (io/) or hook.
   {
-    files: ['src/page/gpu/**/*.js'],
-    rules: restricted(REFERENCE_RULE, ENGINE_RULE, {
-      // from gpu/ and from its rooms (bands/, channels/)
-      group: ['../app/*', '../ui/*', '../io/*', '../main.js', '../hook/*', '../../app/*', '../../ui/*', '../../io/*', '../../hook/*'],
-      message: "gpu/ is the render worker's side: the page's state, widgets and files stay on the page (talk through gpu/protocol.js).",
+    files: ['src/player/gpu/**/*.js'],
+    rules: restricted(KEEP_OUT.studio, KEEP_OUT.raytracer, KEEP_OUT.reference, KEEP_OUT.headless, KEEP_OUT.node, {
+      group: [
+        '**/player/app/**',
+        '**/player/io/**',
+        '**/player/hook/**',
+        '../app/*',
+        '../io/*',
+        '../hook/*',
+        '../../app/*',
+        '../../io/*',
+        '../../hook/*',
+      ],
+      message: "gpu/ is the render worker's side: the page's state and files stay on the page (talk through gpu/protocol.js).",
     }),
   },
-  // The page's state (app/) is below its widgets and its edge: ui/, io/ and inspect/ import app/,
-  // never the other way (what app/ needs from io/, a loader, is given to it: main.js).
+  // The app is the state the rest uses: it is given what it needs, never imports its users.
   {
-    files: ['src/page/app/**/*.js'],
-    rules: restricted(REFERENCE_RULE, ENGINE_RULE, {
-      group: ['../ui/*', '../io/*', '../inspect/*', '../main.js', '../hook/*', '../open-view.js'],
-      message: 'app/ is the state the rest of the page uses: it emits events and is given what it needs, never imports them.',
+    files: ['src/player/app/**/*.js'],
+    rules: restricted(KEEP_OUT.studio, KEEP_OUT.raytracer, KEEP_OUT.reference, KEEP_OUT.headless, KEEP_OUT.node, {
+      group: ['../io/*', '../hook/*', '../open-view.js'],
+      message: 'app/ is the state the rest of the player uses: it emits events and is given what it needs, never imports them.',
     }),
   },
-  // The Shadertoy contract, the reference and the shared helpers run in both.
+  // The studio: the page around the player. It plugs the raytracer in; the reference only lazily.
+  { files: ['src/studio/**/*.js'], rules: restricted(KEEP_OUT.reference, KEEP_OUT.headless, KEEP_OUT.node) },
+  // The raytracer's plug-ins: the studio's, never the player's modules at run time.
+  { files: ['src/raytracer/**/*.js'], rules: restricted(KEEP_OUT.studio, KEEP_OUT.player, KEEP_OUT.headless, KEEP_OUT.node) },
+  // What every room shares: the Shadertoy contract, the shared helpers, the float64 reference.
   {
-    files: ['src/shadertoy/**/*.js', 'src/reference/**/*.js', 'src/shared/**/*.js'],
-    languageOptions: { globals: { ...globals.browser, ...globals.node } },
+    files: ['src/shadertoy/**/*.js', 'src/shared/**/*.js'],
+    rules: restricted(KEEP_OUT.player, KEEP_OUT.studio, KEEP_OUT.raytracer, KEEP_OUT.reference, KEEP_OUT.headless, KEEP_OUT.node),
   },
-  // The engine (headless Chromium, the page's server) and the command line run in Node; the
-  // functions they pass to page.evaluate() run in the page.
   {
-    files: ['src/engine/**/*.js', 'src/cli/**/*.js', 'bin/**/*.js'],
-    languageOptions: { globals: { ...globals.node, ...globals.browser } },
+    files: ['src/reference/**/*.js'],
+    rules: restricted(KEEP_OUT.player, KEEP_OUT.studio, KEEP_OUT.headless, KEEP_OUT.node),
   },
+  // Node's side, bottom up: headless (Chromium driven) → api (render, record, test's case) →
+  // runner (the test verb) → cli. Each imports the player's types only (JSDoc), never its code.
+  {
+    files: ['src/headless/**/*.js'],
+    rules: restricted(KEEP_OUT.player, KEEP_OUT.studio, KEEP_OUT.raytracer, KEEP_OUT.reference, KEEP_OUT.node),
+  },
+  {
+    files: ['src/api/**/*.js'],
+    rules: restricted(KEEP_OUT.player, KEEP_OUT.studio, KEEP_OUT.raytracer, KEEP_OUT.reference, KEEP_OUT.runner, KEEP_OUT.cli),
+  },
+  {
+    files: ['src/runner/**/*.js'],
+    rules: restricted(KEEP_OUT.player, KEEP_OUT.studio, KEEP_OUT.raytracer, KEEP_OUT.reference, KEEP_OUT.cli),
+  },
+  {
+    files: ['src/cli/**/*.js', 'bin/**/*.js'],
+    rules: restricted(KEEP_OUT.player, KEEP_OUT.studio, KEEP_OUT.raytracer, KEEP_OUT.reference),
+  },
+
   // Tests, scripts, the benchmark and configs run in Node; functions passed to page.evaluate()
   // run in the page, so the browser's globals are known there too.
   { files: ['tests/**/*.js', '*.js'], languageOptions: { globals: { ...globals.node, ...globals.browser } } },

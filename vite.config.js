@@ -1,4 +1,5 @@
-// Vite serves the page from src/page/ (index.html lives there). The page imports the Shadertoy
+// Vite serves two pages from src/: the studio (src/studio/index.html, at /) and the player that
+// the command line drives (src/player/engine.html, at /engine.html). They import the Shadertoy
 // contract from src/shadertoy/ and never the float64 reference (src/reference/); the shader
 // comes from shaders/ with `?raw`, static files from public/ (examples/*.glsl among them), and
 // the build goes to dist/.
@@ -62,7 +63,7 @@ function glslFiles() {
 }
 
 /**
- * ogv.js in the build (the Theora decoder, src/page/inputs/theora-video.js). Its Emscripten modules
+ * ogv.js in the build (the Theora decoder, src/player/inputs/theora-video.js). Its Emscripten modules
  * require Node's `fs` and `path` in a branch that runs only under Node: for the page they are an
  * empty module, so that the build neither warns about them nor ships Vite's stand-in. Its
  * WebAssembly is a binary form of libogg and libtheora, whose BSD licences (and ogv.js's MIT one)
@@ -92,7 +93,7 @@ function ogvInBuild() {
   };
 }
 
-/** What the built page lists of its sources (src/engine/page-server.js reads it to tell a stale build). */
+/** What the built page lists of its sources (src/headless/page-server.js reads it to tell a stale build). */
 const SOURCES_FILE = 'page-sources.json';
 
 /**
@@ -120,21 +121,53 @@ function pageSources(seen, { emit }) {
   };
 }
 
+/** Each page's file in its room, and the URL it is served at, in development and in the build. */
+const PAGES = {
+  '/index.html': 'studio/index.html',
+  '/engine.html': 'player/engine.html',
+};
+
+/**
+ * The pages at the site's root, as their URLs have always been (a shared link, the command
+ * line's engine page), while their files live in their rooms: the development server reads a
+ * page's URL as its file, and the build writes each page at its URL (base is '/', so the
+ * assets' URLs do not depend on where a page's file lies).
+ */
+function pagesAtSiteRoot() {
+  return {
+    name: 'pages-at-site-root',
+    enforce: /** @type {const} */ ('post'),
+    configureServer(server) {
+      server.middlewares.use((req, res, next) => {
+        const [pathname, query = ''] = (req.url ?? '').split(/(?=\?)/);
+        const file = PAGES[pathname === '/' ? '/index.html' : pathname];
+        if (file) req.url = `/${file}${query}`;
+        next();
+      });
+    },
+    generateBundle(_options, bundle) {
+      for (const [url, file] of Object.entries(PAGES)) {
+        if (bundle[file]) bundle[file].fileName = url.slice(1);
+      }
+    },
+  };
+}
+
 const sourcesSeen = new Set();
 
 export default defineConfig({
-  root: `${repo}src/page`,
+  root: `${repo}src`,
   publicDir,
-  plugins: [ogvInBuild(), glslFiles(), pageSources(sourcesSeen, { emit: true })],
+  plugins: [ogvInBuild(), glslFiles(), pagesAtSiteRoot(), pageSources(sourcesSeen, { emit: true })],
   worker: { plugins: () => [pageSources(sourcesSeen, { emit: false })] },
   server: {
     host: '127.0.0.1',
-    // the page imports ../shaders/*.glsl, outside the root: allow the whole repository
+    // the studio imports ../shaders/*.glsl, outside the root: allow the whole repository
     fs: { allow: [repo] },
   },
   build: {
-    // two pages: the interactive one, and the engine page the command line drives (only what draws)
-    rollupOptions: { input: { main: `${repo}src/page/index.html`, engine: `${repo}src/page/engine.html` } },
+    // two pages: the studio, and the player's engine page the command line drives (only what draws)
+    rollupOptions: { input: { main: `${repo}src/studio/index.html`, engine: `${repo}src/player/engine.html` } },
     outDir: `${repo}dist`,
     emptyOutDir: true,
     chunkSizeWarningLimit: 800, // three.js's WebGLRenderer is most of the bundle (~600 kB)

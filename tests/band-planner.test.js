@@ -1,4 +1,4 @@
-// How a frame is cut into bands (src/page/gpu/bands/band-planner.js), drawn here on paper: each
+// How a frame is cut into bands (src/player/gpu/bands/band-planner.js), drawn here on paper: each
 // pass a cost per pixel the test chooses, row by row, each band timed as that cost. No band of a
 // heavy but finite frame may come near the watchdog's limit (5 s of the GPU process's CPU time)
 // whatever the passes before it cost, or the rows drawn last (issue 50: a shader of two buffers
@@ -6,7 +6,7 @@
 // frame whose floor is dear and sky cheap, sized at its floor from its sky).
 
 import { describe, expect, test } from 'vitest';
-import { BandPlanner } from '../src/page/gpu/bands/band-planner.js';
+import { BandPlanner } from '../src/player/gpu/bands/band-planner.js';
 
 /**
  * Draws a frame of `passes` (each `{cost(row): ms a pixel}`) at width × height: every band, its

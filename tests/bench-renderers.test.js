@@ -3,7 +3,7 @@
 // and the timer drawing the same shaders on SwiftShader and llvmpipe in one run.
 import { afterAll, describe, expect, test } from 'vitest';
 import { composeImageShader } from '../src/shadertoy/header.js';
-import { disconnect, harnessContext } from './harness/page.js';
+import { disconnect, harnessContext } from './support/page.js';
 import { withRenderers, renderersAsked } from './bench/renderer-set.js';
 import { byRenderer, mergeResults } from './bench/results-file.js';
 import { benchMarkdown, comparisonTable, rendererOrder, sideBySideTable, sizesOf } from './bench/report.js';

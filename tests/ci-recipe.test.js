@@ -5,9 +5,9 @@
 import fs from 'node:fs';
 import path from 'node:path';
 import { describe, expect, test } from 'vitest';
-import { io } from '../src/cli/io.js';
+import { io } from '../src/api/io.js';
 import { main } from '../src/cli/main.js';
-import { REPO_ROOT } from './harness/config.js';
+import { REPO_ROOT } from './support/config.js';
 
 const recipe = fs.readFileSync(path.join(REPO_ROOT, 'docs', 'ci.md'), 'utf8');
 const workflow = /```yaml\n([\s\S]*?)```/.exec(recipe)?.[1] ?? '';
@@ -75,7 +75,7 @@ describe('docs/ci.md, the CI recipe', () => {
     // the tarball npm pack writes: its name and version are package.json's
     expect(words).toContain(`npm pack\` writes \`${pkg.name}-${pkg.version}.tgz\``);
     expect(words).toContain(`npm install --save-dev ./${pkg.name}-${pkg.version}.tgz`);
-    // cli/test/corpus.js and drawn-by.js: the references' renderer; --update and a new folder as render
+    // runner/corpus.js and drawn-by.js: the references' renderer; --update and a new folder as render
     expect(words).toMatch(/Without `--renderer` \(or `\$SHADERPROOF_RENDERER`\), `test` draws with the renderer that drew the references/);
     expect(words).toContain('`shaders/__references__/drawn-by.json`');
     expect(words).toMatch(/no references yet, draw with llvmpipe where Mesa is installed, else SwiftShader/);

@@ -11,10 +11,10 @@ import os from 'node:os';
 import path from 'node:path';
 import { promisify } from 'node:util';
 import { afterAll, beforeAll, describe, expect, test } from 'vitest';
-import { builtPage } from '../src/engine/page-server.js';
-import { findMesa } from '../src/engine/renderers.js';
-import { REPO_ROOT, SHADER_FILE } from './harness/config.js';
-import { readPng } from './harness/images.js';
+import { builtPage } from '../src/headless/page-server.js';
+import { findMesa } from '../src/headless/renderers.js';
+import { REPO_ROOT, SHADER_FILE } from './support/config.js';
+import { readPng } from './support/images.js';
 
 const run = promisify(execFile);
 const BIN = path.join(REPO_ROOT, 'bin', 'shaderproof.js');

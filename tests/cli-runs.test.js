@@ -10,10 +10,10 @@ import path from 'node:path';
 import { unzipSync } from 'fflate';
 import { PNG } from 'pngjs';
 import { afterAll, beforeAll, describe, expect, test } from 'vitest';
-import { DEFAULT_DATE } from '../src/cli/view-options.js';
-import { builtPage } from '../src/engine/page-server.js';
-import { runShaderproof } from './helpers/shaderproof-child.js';
-import { readPng } from './harness/images.js';
+import { DEFAULT_DATE } from '../src/api/view-options.js';
+import { builtPage } from '../src/headless/page-server.js';
+import { runShaderproof } from './support/shaderproof-child.js';
+import { readPng } from './support/images.js';
 
 let folder = '';
 beforeAll(async () => {

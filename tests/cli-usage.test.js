@@ -9,15 +9,15 @@ import os from 'node:os';
 import path from 'node:path';
 import { afterAll, beforeAll, describe, expect, test } from 'vitest';
 import { main } from '../src/cli/main.js';
-import { io, progressBar, sayNotes } from '../src/cli/io.js';
+import { io, progressBar, sayNotes } from '../src/api/io.js';
 import { sayOnce } from '../src/shared/said-once.js';
-import { commandLineWords, mediaFolders } from '../src/cli/media.js';
-import { DEFAULT_SIZE as TEST_SIZE } from '../src/cli/test/manifest.js';
+import { commandLineWords, mediaFolders } from '../src/api/media.js';
+import { DEFAULT_SIZE as TEST_SIZE } from '../src/runner/manifest.js';
 import { MEDIA_WORDS } from '../src/shadertoy/media.js';
 import { jsonSyntaxError } from '../src/shared/json-syntax.js';
-import { chooseRenderer } from '../src/engine/renderers.js';
-import { referenceRenderer } from '../src/cli/test/drawn-by.js';
-import { REPO_ROOT } from './harness/config.js';
+import { chooseRenderer } from '../src/headless/renderers.js';
+import { referenceRenderer } from '../src/runner/drawn-by.js';
+import { REPO_ROOT } from './support/config.js';
 
 let folder = '';
 let shader = '';
@@ -161,7 +161,7 @@ test('long work shows its progress on a terminal, in place, and nothing in a log
 });
 
 // Issue 45, item 6: what a new user read, each now one line in the project's words. The page's
-// note lines are written here as the page writes them (src/page/inputs/media-library.js, with
+// note lines are written here as the page writes them (src/player/inputs/media-library.js, with
 // the words it shares with the command line: MEDIA_WORDS); cli-runs.test.js reads the same lines
 // from a real run.
 describe('one line in our words (issue 45, item 6)', () => {
@@ -169,7 +169,7 @@ describe('one line in our words (issue 45, item 6)', () => {
   /** A "went without" line as the page writes it. @param {string} pass @param {number} channel @param {string} why */
   const pageLine = (pass, channel, why) => `${pass}, iChannel${channel}: ${why}; the channel is black`;
   const noFolder = (pass) => pageLine(pass, 0, `${TEXTURE} ${MEDIA_WORDS.noFolder}`);
-  /** @returns {import('../src/engine/view.js').PageNote} */
+  /** @returns {import('../src/headless/view.js').PageNote} */
   const missingNote = (/** @type {string[]} */ lines) => ({
     kind: 'missing',
     title: 'wave.json runs without some of what it asks for',
@@ -290,7 +290,7 @@ describe('one line in our words (issue 45, item 6)', () => {
   });
 
   test("--help opens with what draws by default, as the verbs choose it: llvmpipe where Mesa is, test its references' renderer", async () => {
-    // the rule its words say (engine/renderers.js chooseRenderer, cli/test/drawn-by.js)
+    // the rule its words say (headless/renderers.js chooseRenderer, runner/drawn-by.js)
     const mesa = { vendorFile: '', egl: '', driver: '' };
     expect(chooseRenderer({}, 'auto', () => ({ ...mesa, missing: [] }))).toBe('llvmpipe');
     expect(chooseRenderer({}, 'auto', () => ({ ...mesa, missing: ['libEGL_mesa.so.0'] }))).toBe('swiftshader');

@@ -1,5 +1,5 @@
 // The command line's watchdog counts the work of the browser's GPU process, not the wall clock
-// (issue 50, part 3; src/engine/gpu-time.js, band-watch.js): a finite frame whose GPU process is
+// (issue 50, part 3; src/headless/watchdog/gpu-time.js, band-watch.js): a finite frame whose GPU process is
 // stopped (SIGSTOP) for seconds in its middle finishes, with the same bytes as without the stop,
 // on each CPU renderer; a shader that never finishes fails `render` within the default watchdog
 // at 320×180 and at 1280×720.
@@ -10,13 +10,13 @@ import os from 'node:os';
 import path from 'node:path';
 import { promisify } from 'node:util';
 import { afterAll, beforeAll, describe, expect, test } from 'vitest';
-import { renderShader } from '../src/cli/render.js';
-import { startSession } from '../src/cli/session.js';
-import { readViewOptions } from '../src/cli/view-options.js';
-import { cpuMs, findGpuProcess } from '../src/engine/gpu-time.js';
-import { builtPage } from '../src/engine/page-server.js';
-import { findMesa } from '../src/engine/renderers.js';
-import { REPO_ROOT } from './harness/config.js';
+import { renderShader } from '../src/api/render.js';
+import { startSession } from '../src/headless/session.js';
+import { readViewOptions } from '../src/api/view-options.js';
+import { cpuMs, findGpuProcess } from '../src/headless/watchdog/gpu-time.js';
+import { builtPage } from '../src/headless/page-server.js';
+import { findMesa } from '../src/headless/renderers.js';
+import { REPO_ROOT } from './support/config.js';
 
 const run = promisify(execFile);
 const BIN = path.join(REPO_ROOT, 'bin', 'shaderproof.js');
@@ -74,7 +74,7 @@ describe('a finite frame whose GPU process is stopped in its middle', () => {
         // gone
       }
     };
-    /** @param {import('../src/engine/view.js').ViewProgress | null} state */
+    /** @param {import('../src/headless/view.js').ViewProgress | null} state */
     const progress = (state) => {
       if (!armed || stop || !state || state.bands < 1 || state.rows >= state.height) return;
       const pid = findGpuProcess(process.pid);

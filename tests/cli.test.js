@@ -15,12 +15,12 @@ import { afterAll, beforeAll, describe, expect, test } from 'vitest';
 import { formatImageError, imageError } from '../src/reference/error.js';
 import { renderReference } from '../src/reference/render.js';
 import { composeImageShader } from '../src/shadertoy/header.js';
-import { builtPage } from '../src/engine/page-server.js';
-import { GOLDEN_DIR, REPO_ROOT, SHADER_FILE } from './harness/config.js';
-import { runShaderproof } from './helpers/shaderproof-child.js';
-import { readPng, sameImage } from './harness/images.js';
-import { disconnect, openPage } from './harness/page.js';
-import { renderRawShader } from './harness/raw-webgl.js';
+import { builtPage } from '../src/headless/page-server.js';
+import { GOLDEN_DIR, REPO_ROOT, SHADER_FILE } from './support/config.js';
+import { runShaderproof } from './support/shaderproof-child.js';
+import { readPng, sameImage } from './support/images.js';
+import { disconnect, openPage } from './support/page.js';
+import { renderRawShader } from './support/raw-webgl/raw-webgl.js';
 
 const run = promisify(execFile);
 

@@ -1,7 +1,7 @@
 // The page's clock under a fixed schedule (ShadertoyInputs.setSchedule: ?date=, ?fps=, the command
 // line's defaults), without a browser: nothing the page measures reaches a frame's inputs.
 import { describe, expect, test } from 'vitest';
-import { ShadertoyInputs, shadertoyDate } from '../src/page/app/shadertoy-inputs.js';
+import { ShadertoyInputs, shadertoyDate } from '../src/player/app/shadertoy-inputs.js';
 
 const NOON = Date.UTC(2024, 0, 15, 12);
 

@@ -19,9 +19,9 @@ import { fromShadertoyJson } from '../src/shadertoy/multipass-json.js';
 import { formatCompileMessages, passCheck, passMessages } from '../src/shadertoy/pass-errors.js';
 import { userLineOffset } from '../src/shadertoy/shader-errors.js';
 import { composeSoundShader } from '../src/shadertoy/sound.js';
-import { builtPage } from '../src/engine/page-server.js';
-import { REPO_ROOT } from './harness/config.js';
-import { sharePageAcrossTests, withPage } from './helpers/page-helpers.js';
+import { builtPage } from '../src/headless/page-server.js';
+import { REPO_ROOT } from './support/config.js';
+import { sharePageAcrossTests, withPage } from './support/page-helpers.js';
 
 sharePageAcrossTests();
 

@@ -1,8 +1,8 @@
 import { describe, expect, test } from 'vitest';
 import fs from 'node:fs';
-import { SHADER_FILE } from './harness/config.js';
+import { SHADER_FILE } from './support/config.js';
 import { ControlBlockError, coerceControlValue, controlApplies, controlDefaults, parseControls } from '../src/shadertoy/controls.js';
-import { linkValues, readControlChanges } from '../src/page/app/control-values.js';
+import { linkValues, readControlChanges } from '../src/player/app/control-values.js';
 
 const BLOCK = `// a shader
 #define HELPER 2

@@ -14,13 +14,13 @@ import { CUBE_A_SIZE, faceDirection } from '../src/shadertoy/cube-a.js';
 import { composePassShader } from '../src/shadertoy/header.js';
 import { frameSchedule } from '../src/shadertoy/multipass.js';
 import { fromShadertoyJson, toShadertoyJson } from '../src/shadertoy/multipass-json.js';
-import { builtPage } from '../src/engine/page-server.js';
-import { deserializeProject } from '../src/page/io/project-files.js';
-import { REPO_ROOT } from './harness/config.js';
-import { readPng } from './harness/images.js';
-import { editorTabs, exportJsonFile } from './helpers/page-multipass-helpers.js';
-import { pixel, readPixels, sharePageAcrossTests, withPage } from './helpers/page-helpers.js';
-import { cubeLookup } from './helpers/cube-lookup.js';
+import { builtPage } from '../src/headless/page-server.js';
+import { deserializeProject } from '../src/player/io/project-files.js';
+import { REPO_ROOT } from './support/config.js';
+import { readPng } from './support/images.js';
+import { editorTabs, exportJsonFile } from './support/page-multipass-helpers.js';
+import { pixel, readPixels, sharePageAcrossTests, withPage } from './support/page-helpers.js';
+import { cubeLookup } from './support/tables/cube-lookup.js';
 
 sharePageAcrossTests();
 

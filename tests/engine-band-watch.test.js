@@ -1,14 +1,14 @@
 // The command line's watchdog, in milliseconds and without a browser: its clock (the GPU
-// process's CPU time read from a /proc the test writes: src/engine/gpu-time.js) and its
-// judgement of a band (src/engine/band-watch.js) on a clock the test moves. Chromium's own,
+// process's CPU time read from a /proc the test writes: src/headless/watchdog/gpu-time.js) and its
+// judgement of a band (src/headless/watchdog/band-watch.js) on a clock the test moves. Chromium's own,
 // stopped for seconds in a frame, is tests/cli-watchdog.test.js.
 
 import fs from 'node:fs';
 import os from 'node:os';
 import path from 'node:path';
 import { afterEach, beforeEach, describe, expect, test } from 'vitest';
-import { BandWatch, answerUnlessOverdue } from '../src/engine/band-watch.js';
-import { cpuMs, findGpuProcess, gpuClock } from '../src/engine/gpu-time.js';
+import { BandWatch, answerUnlessOverdue } from '../src/headless/watchdog/band-watch.js';
+import { cpuMs, findGpuProcess, gpuClock } from '../src/headless/watchdog/gpu-time.js';
 
 let proc = '';
 beforeEach(() => {

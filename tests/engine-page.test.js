@@ -1,13 +1,13 @@
-// The engine page (engine.html, src/page/engine-main.js) on its own, as the command line loads it:
+// The engine page (engine.html, src/player/engine-main.js) on its own, as the command line loads it:
 // no widget and no raytracer (issue 46). With no ?shader= it runs its own start shader; a shader
 // it cannot have rejects `ready`, never another drawn in its place; what stands in the way of its
 // picture is one line on the page; and the raytracer's "Converge when still" (--converge) is a
-// chunk it fetches only when a converge is asked for. tests/engine-boundaries.test.js checks its
+// chunk it fetches only when a converge is asked for. tests/lint-rooms.test.js checks its
 // imports; this checks what the built page loads and does.
 
 import { afterAll, describe, expect, test } from 'vitest';
-import { disconnect } from './harness/page.js';
-import { info, readPixels, withPage } from './helpers/page-helpers.js';
+import { disconnect } from './support/page.js';
+import { info, readPixels, withPage } from './support/page-helpers.js';
 
 afterAll(disconnect);
 

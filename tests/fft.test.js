@@ -1,5 +1,5 @@
-// The one FFT (src/shared/fft.js), which the page's spectrum texture (src/page/inputs/spectrum.js)
-// and `test`'s sound outline (src/cli/test/sound-compare.js) share: checked against the DFT's
+// The one FFT (src/shared/fft.js), which the page's spectrum texture (src/player/inputs/spectrum.js)
+// and `test`'s sound outline (src/runner/sound-compare.js) share: checked against the DFT's
 // definition on signals whose transform is known, and defined once under src/.
 
 import fs from 'node:fs';

@@ -1,18 +1,18 @@
 // Types for `npm run typecheck` only (nothing imports this file at run time): the globals that
 // the pages under test define on `window`, which the tests reach through page.evaluate(), and
-// what vitest's globalSetup (tests/harness/setup.js) provides to the test files. It is a .ts
+// what vitest's globalSetup (tests/support/setup.js) provides to the test files. It is a .ts
 // file, not a .d.ts, so that skipLibCheck (jsconfig.json) does not skip it: a broken import()
 // here is an error. JSDoc reaches its types as import('./globals.js').
 
-/** window.shaderEngine.info(): see src/page/hook/engine-state.js. */
+/** window.shaderEngine.info(): see src/player/hook/engine-state.js. */
 export type HookInfo = ReturnType<WindowHook['info']>;
 
 /**
  * window.shaderEngine: the page's hook, its type the hook's class, in src/ (the engine's,
- * src/page/hook/engine-hook.js, with the interactive page's methods: page-hook.js). The tests
- * drive both pages; the command line reads the engine's alone (src/engine/client.js, HookedWindow).
+ * src/player/hook/engine-hook.js, with the interactive page's methods: page-hook.js). The tests
+ * drive both pages; the command line reads the engine's alone (src/headless/client.js, HookedWindow).
  */
-type WindowHook = import('../src/page/hook/page-hook.js').PageHook;
+type WindowHook = import('../src/studio/page-hook.js').PageHook;
 
 /** Whether T is `any` (what an untyped parameter of a JavaScript function is). */
 type IsAny<T> = 0 extends 1 & T ? true : false;
@@ -30,7 +30,7 @@ type Typed<Untyped extends never> = Untyped;
 type HookParametersTyped = Typed<UntypedMethods<WindowHook>>;
 
 /** What the pixel inspector read at a pixel. */
-export type Readout = import('../src/page/inspect/inspector.js').Readout;
+export type Readout = import('../src/studio/inspect/inspector.js').Readout;
 
 /** window.__benchmark: the benchmark's programs, set up in its raw WebGL2 page (tests/bench/timer.js). */
 interface BenchmarkPage {
@@ -40,7 +40,7 @@ interface BenchmarkPage {
   pixels(i: number): string;
 }
 
-/** What tests/harness/setup.js starts and hands to the test files (inject('harness')) and to scripts. */
+/** What tests/support/setup.js starts and hands to the test files (inject('harness')) and to scripts. */
 export interface HarnessContext {
   /** the browser's DevTools WebSocket endpoint */
   wsEndpoint: string;
@@ -52,13 +52,13 @@ export interface HarnessContext {
 declare global {
   // Each of these exists only on its own page (or after the test sets it): read them there.
   interface Window {
-    /** The page's hook (src/page/hook/: engine-hook.js, and page-hook.js on the interactive page). */
+    /** The page's hook (src/player/hook/: engine-hook.js, and page-hook.js on the interactive page). */
     shaderEngine: WindowHook;
     /** The longest gap between 10 ms timer ticks (tests/page-heavy.test.js). */
     __longestGap: number;
-    /** The raw WebGL2 page's functions (tests/harness/raw-webgl-page.js). */
-    __rawWebGL: import('./harness/raw-webgl-page.js').RawWebGL;
-    /** Set by the deterministic injection (tests/harness/deterministic-injection.js). */
+    /** The raw WebGL2 page's functions (tests/support/raw-webgl/raw-webgl-page.js). */
+    __rawWebGL: import('./support/raw-webgl/raw-webgl-page.js').RawWebGL;
+    /** Set by the deterministic injection (tests/support/deterministic-injection.js). */
     __deterministic: Readonly<{ fixedTime: number; frameMs: number }>;
     /** Set by the benchmark's timer (tests/bench/timer.js). */
     __benchmark: BenchmarkPage;

@@ -1,6 +1,6 @@
-// The note that keeps the page from coming back with a shader that hung (src/page/io/hang-guard.js).
+// The note that keeps the page from coming back with a shader that hung (src/player/io/hang-guard.js).
 import { describe, expect, test } from 'vitest';
-import { HangGuard, projectKey } from '../src/page/io/hang-guard.js';
+import { HangGuard, projectKey } from '../src/player/io/hang-guard.js';
 import { singlePass } from '../src/shadertoy/multipass.js';
 
 /** A Storage with only what the guard uses. */

@@ -1,16 +1,16 @@
-// Hard views (tests/helpers/hard-views.js): the page's float32 image against the float64 reference
+// Hard views (tests/support/tables/hard-views.js): the page's float32 image against the float64 reference
 // with the same rays. Free of NaN, of shadow acne and of speckle means: almost no pixel is off
 // by more than 2/255 (acne or speckle would put whole areas there).
 import fs from 'node:fs';
 import { afterAll, describe, expect, test } from 'vitest';
 import { parseControls } from '../src/shadertoy/controls.js';
 import { formatImageError } from '../src/reference/error.js';
-import { SHADER_FILE } from './harness/config.js';
-import { assertNotBlank } from './harness/images.js';
-import { disconnect } from './harness/page.js';
-import { measureSameRay } from './harness/same-ray.js';
-import { viewControlProblems } from './helpers/views.js';
-import { HARD_VIEWS, MAX_OVER_2 } from './helpers/hard-views.js';
+import { SHADER_FILE } from './support/config.js';
+import { assertNotBlank } from './support/images.js';
+import { disconnect } from './support/page.js';
+import { measureSameRay } from './support/reference/same-ray.js';
+import { viewControlProblems } from './support/tables/views.js';
+import { HARD_VIEWS, MAX_OVER_2 } from './support/tables/hard-views.js';
 
 afterAll(disconnect);
 

@@ -1,14 +1,14 @@
 // The harness fails fast and says why (issue 12): no Chromium is said before anything else; a
 // wait on a page that gets no answer fails after its own timeout, well before the test's, with
 // what the page was doing; a crashed page or browser fails the wait at once, saying "crashed";
-// and the next test still gets a fresh page (src/engine/watch.js, tests/harness/page.js).
+// and the next test still gets a fresh page (src/headless/watch.js, tests/support/page.js).
 import { spawn } from 'node:child_process';
 import puppeteer from 'puppeteer-core';
 import { afterAll, describe, expect, test } from 'vitest';
-import { REPO_ROOT } from './harness/config.js';
-import { INSTALL_HINT, findChrome } from '../src/engine/chrome-path.js';
-import { disconnect, harnessContext, openPage, useHarness } from './harness/page.js';
-import { CHROME_ARGS } from '../src/engine/browser.js';
+import { REPO_ROOT } from './support/config.js';
+import { INSTALL_HINT, findChrome } from '../src/headless/chrome-path.js';
+import { disconnect, harnessContext, openPage, useHarness } from './support/page.js';
+import { CHROME_ARGS } from '../src/headless/browser.js';
 
 afterAll(disconnect);
 

@@ -1,8 +1,8 @@
 // The harness checks itself: the deterministic injection freezes what it promises and leaves the
 // animation loop running, and the page under test is the real one, drawn by SwiftShader.
 import { afterAll, describe, expect, test } from 'vitest';
-import { disconnect, harnessContext, openPage } from './harness/page.js';
-import { CHROME_ARGS, GPU_CHROME_ARGS, rendererKind } from '../src/engine/browser.js';
+import { disconnect, harnessContext, openPage } from './support/page.js';
+import { CHROME_ARGS, GPU_CHROME_ARGS, rendererKind } from '../src/headless/browser.js';
 
 afterAll(disconnect);
 

@@ -5,8 +5,8 @@ import os from 'node:os';
 import path from 'node:path';
 import { describe, expect, test } from 'vitest';
 import { composeImageShader } from '../src/shadertoy/header.js';
-import { findChrome } from '../src/engine/chrome-path.js';
-import { OUTPUT_DIR } from './harness/config.js';
+import { findChrome } from '../src/headless/chrome-path.js';
+import { OUTPUT_DIR } from './support/config.js';
 import {
   allowedDiffPixels,
   blankReason,
@@ -15,9 +15,9 @@ import {
   makeImage as image,
   readPng,
   writePng,
-} from './harness/images.js';
-import { mapShaderLog } from './harness/raw-webgl.js';
-import { MAX_DIFF_FRACTION, PIXEL_THRESHOLD } from './helpers/views.js';
+} from './support/images.js';
+import { mapShaderLog } from './support/raw-webgl/raw-webgl.js';
+import { MAX_DIFF_FRACTION, PIXEL_THRESHOLD } from './support/tables/views.js';
 const gradient = (x, y) => [(x * 2) % 200, (y * 2) % 200, 128];
 
 describe('blankReason', () => {

@@ -20,10 +20,10 @@
 import { afterAll, describe, expect, it } from 'vitest';
 import { SHADERTOY_HEADER } from '../src/shadertoy/header.js';
 import { add, dot, length, normalize, scale, sub } from '../src/reference/vec3.js';
-import { disconnect } from './harness/page.js';
-import { evaluateFloatShader } from './harness/raw-webgl.js';
+import { disconnect } from './support/page.js';
+import { evaluateFloatShader } from './support/raw-webgl/raw-webgl.js';
 import { sequence } from './intersector-cases/rays.js';
-import { GLSL_CALLS, KINDS, f32, judge, reference, shaderSource } from './helpers/intersector-kinds.js';
+import { GLSL_CALLS, KINDS, f32, judge, reference, shaderSource } from './support/tables/intersector-kinds.js';
 
 const PROPERTY_MAIN = `${GLSL_CALLS}
 uniform highp sampler2D rayTable;  // 5 texels a ray: (ro, kind), (rd, inward), params 0-3, params 4-7, (cos, azimuth)

@@ -4,13 +4,13 @@
 // The shader file is compiled inside Shadertoy's header with a test `main` instead of
 // Shadertoy's: it reads one ray per pixel from an RGBA32F table and writes vec4(t, n) to an
 // RGBA32F target (EXT_color_buffer_float), which is read back as floats. The tolerance model
-// (K u S, the tangent tolerance, the rounding band) is in tests/helpers/intersector-kinds.js.
+// (K u S, the tangent tolerance, the rounding band) is in tests/support/tables/intersector-kinds.js.
 
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import { FAR_SPHERE_FAMILY, INTERSECTOR_CASES, NAIVE_TORUS_FAMILIES } from './intersector-cases/index.js';
-import { disconnect } from './harness/page.js';
-import { K, U, caseScale, f32, judge, reference, runCases, shaderSource } from './helpers/intersector-kinds.js';
-import { NAIVE_TORUS, TEXTBOOK_SPHERE, replaceFunction } from './helpers/intersector-naive.js';
+import { disconnect } from './support/page.js';
+import { K, U, caseScale, f32, judge, reference, runCases, shaderSource } from './support/tables/intersector-kinds.js';
+import { NAIVE_TORUS, TEXTBOOK_SPHERE, replaceFunction } from './support/tables/intersector-naive.js';
 import { addScaled, dot, normalize, sub } from '../src/reference/vec3.js';
 
 /** The float64 signed distance of p to the torus of a case (params: centre, axis, R, r). */

@@ -1,4 +1,4 @@
-// llvmpipe's loop limit (src/shadertoy/loop-guard.js, src/cli/loop-limit.js), run as a person runs
+// llvmpipe's loop limit (src/shadertoy/loop-guard.js, src/api/loop-limit.js), run as a person runs
 // the command line: each pass kind (Image, Buffer A, Cube A, Sound) counts the trips of ten loop
 // shapes, one shape to a column of 8 pixels (8 samples for the Sound tab), so that the pixels that
 // llvmpipe shades together (8 lanes) share a shape. Each count is written exactly into the colour
@@ -11,10 +11,10 @@ import fs from 'node:fs';
 import os from 'node:os';
 import path from 'node:path';
 import { afterAll, beforeAll, describe, expect, test } from 'vitest';
-import { builtPage } from '../src/engine/page-server.js';
-import { findMesa } from '../src/engine/renderers.js';
-import { readPng } from './harness/images.js';
-import { runShaderproof } from './helpers/shaderproof-child.js';
+import { builtPage } from '../src/headless/page-server.js';
+import { findMesa } from '../src/headless/renderers.js';
+import { readPng } from './support/images.js';
+import { runShaderproof } from './support/shaderproof-child.js';
 
 /**
  * The shapes, by column: [trips counted, what llvmpipe's 65,535 does to it, what it is]: 'cut'

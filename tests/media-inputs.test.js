@@ -12,12 +12,12 @@ import path from 'node:path';
 import { unzipSync } from 'fflate';
 import { PNG } from 'pngjs';
 import { describe, expect, test } from 'vitest';
-import { runShaderproof } from './helpers/shaderproof-child.js';
-import { readPng } from './harness/images.js';
-import { CHROME_ARGS, launchBrowser } from '../src/engine/browser.js';
-import { spectrumTexture } from '../src/page/inputs/spectrum.js';
-import { pixel, readPixels, withPage, withServedDir } from './helpers/page-helpers.js';
-import { MUSIC_READER, RATE, checkMusic, toneSamples, wav } from './helpers/music-fixture.js';
+import { runShaderproof } from './support/shaderproof-child.js';
+import { readPng } from './support/images.js';
+import { CHROME_ARGS, launchBrowser } from '../src/headless/browser.js';
+import { spectrumTexture } from '../src/player/inputs/spectrum.js';
+import { pixel, readPixels, withPage, withServedDir } from './support/page-helpers.js';
+import { MUSIC_READER, RATE, checkMusic, toneSamples, wav } from './support/fixtures/music-fixture.js';
 
 // ---- the video: 6 frames at 10 fps, frame i all grey i·40 -----------------------------------
 const VIDEO = { frames: 6, fps: 10, step: 40 };

@@ -11,10 +11,10 @@ import path from 'node:path';
 import { promisify } from 'node:util';
 import { PNG } from 'pngjs';
 import { describe, expect, test } from 'vitest';
-import { REPO_ROOT } from './harness/config.js';
+import { REPO_ROOT } from './support/config.js';
 import { decodeWav } from '../src/shared/wav.js';
 import { mediaFiles, writeVolume } from '../src/shadertoy/media.js';
-import { pixel } from './helpers/page-helpers.js';
+import { pixel } from './support/page-helpers.js';
 import {
   CORNERS,
   CUBE_DIRECTIONS,
@@ -30,7 +30,7 @@ import {
   probeCode,
   shaderJson,
   writeMedia,
-} from './helpers/media-fixture.js';
+} from './support/fixtures/media-fixture.js';
 
 const BIN = path.join(REPO_ROOT, 'bin', 'shaderproof.js');
 const run = promisify(execFile);

@@ -16,10 +16,10 @@ import fs from 'node:fs';
 import path from 'node:path';
 import { describe, expect, test } from 'vitest';
 import { cubeFaceOrder, mediaFiles, mediaPath, parseVolume, writeVolume } from '../src/shadertoy/media.js';
-import { readPixels, sharePageAcrossTests, withPage, withServedDir } from './helpers/page-helpers.js';
-import { checkMusic, toneSamples, wav } from './helpers/music-fixture.js';
-import { loadNotes } from './helpers/page-multipass-helpers.js';
-import { MUSIC_SHADER, MUSIC_TIME, SHADERS, checkRow, input, shaderJson, writeMedia } from './helpers/media-fixture.js';
+import { readPixels, sharePageAcrossTests, withPage, withServedDir } from './support/page-helpers.js';
+import { checkMusic, toneSamples, wav } from './support/fixtures/music-fixture.js';
+import { loadNotes } from './support/page-multipass-helpers.js';
+import { MUSIC_SHADER, MUSIC_TIME, SHADERS, checkRow, input, shaderJson, writeMedia } from './support/fixtures/media-fixture.js';
 
 // ---- the data, without a browser ---------------------------------------------------------------
 

@@ -12,11 +12,11 @@ import path from 'node:path';
 import { unzipSync } from 'fflate';
 import { PNG } from 'pngjs';
 import { describe, expect, test } from 'vitest';
-import { runShaderproof } from './helpers/shaderproof-child.js';
-import { readPixels, solid, withPage, withServedDir } from './helpers/page-helpers.js';
-import { checkRow } from './helpers/media-fixture.js';
-import { loadNotes } from './helpers/page-multipass-helpers.js';
-import { THEORA_FILE, THEORA_READER, expectedProbes, theoraJson } from './helpers/theora-fixture.js';
+import { runShaderproof } from './support/shaderproof-child.js';
+import { readPixels, solid, withPage, withServedDir } from './support/page-helpers.js';
+import { checkRow } from './support/fixtures/media-fixture.js';
+import { loadNotes } from './support/page-multipass-helpers.js';
+import { THEORA_FILE, THEORA_READER, expectedProbes, theoraJson } from './support/fixtures/theora-fixture.js';
 
 /** The site names a video by a hash of it: so does the test. */
 const HASHED = `${crypto.createHash('sha256').update(fs.readFileSync(THEORA_FILE)).digest('hex')}.ogv`;

@@ -1,15 +1,15 @@
 // Multipass Shadertoy shaders (issue 13), the renderer-independent half: the schedule
 // (src/shadertoy/multipass.js), one pass composed in Shadertoy's header with its compile errors
 // named by tab (header.js, pass-errors.js), and both run on SwiftShader through the raw WebGL2
-// page (tests/helpers/multipass-runner.js). The JSON format: multipass-json.test.js; the keyboard
+// page (tests/support/multipass-runner.js). The JSON format: multipass-json.test.js; the keyboard
 // texture: keyboard.test.js.
 import { afterAll, describe, expect, test } from 'vitest';
 import { TILE_OFFSET_UNIFORM, composeImageShader, composePassShader, countNewlines, locatePassLine } from '../src/shadertoy/header.js';
 import { buffersNeedingMipmaps, frameSchedule, renderOrder, singlePass } from '../src/shadertoy/multipass.js';
 import { formatPassMessages, parsePassShaderLog } from '../src/shadertoy/pass-errors.js';
 import { userLineOffset } from '../src/shadertoy/shader-errors.js';
-import { disconnect } from './harness/page.js';
-import { composeModel, runPasses } from './helpers/multipass-runner.js';
+import { disconnect } from './support/page.js';
+import { composeModel, runPasses } from './support/multipass-runner.js';
 
 afterAll(disconnect);
 

@@ -10,8 +10,8 @@ import fs from 'node:fs';
 import path from 'node:path';
 import { promisify } from 'node:util';
 import { expect, test } from 'vitest';
-import { builtPage } from '../src/engine/page-server.js';
-import { REPO_ROOT } from './harness/config.js';
+import { builtPage } from '../src/headless/page-server.js';
+import { REPO_ROOT } from './support/config.js';
 
 const run = promisify(execFile);
 
@@ -78,6 +78,6 @@ test('npm pack ships the command line, the built page and its example shaders, a
     ...filesUnder('dist/examples', (name) => name.endsWith('.glsl')),
     ...filesUnder('dist/shaders', (name) => name.endsWith('.glsl')),
   ];
-  expect(expected).toContain('src/engine/page-server.js'); // the graph was followed
+  expect(expected).toContain('src/headless/page-server.js'); // the graph was followed
   expect(packed.sort()).toEqual([...new Set(expected)].sort());
 });

@@ -10,9 +10,9 @@
 // when the frame-0 was lost: the frame under way landed after the rewind and counted as frame 0.
 
 import { afterAll, describe, expect, test } from 'vitest';
-import { allowClipboard, button, pasteIntoEditor, pixel, readPixels, withPage } from './helpers/page-helpers.js';
-import { dropFile, exportOf } from './helpers/page-multipass-helpers.js';
-import { disconnect } from './harness/page.js';
+import { allowClipboard, button, pasteIntoEditor, pixel, readPixels, withPage } from './support/page-helpers.js';
+import { dropFile, exportOf } from './support/page-multipass-helpers.js';
+import { disconnect } from './support/page.js';
 
 afterAll(disconnect);
 

@@ -1,7 +1,7 @@
-// "Compare with float64" (src/page/inspect/compare.js), in the real page: its figures for a view
+// "Compare with float64" (src/studio/inspect/compare.js), in the real page: its figures for a view
 // are the ones `npm run accuracy` computes for it (tests/scripts/accuracy-report.js: the page's
 // 8-bit frame against renderReference with the same rays, the extra samples where the shader's
-// "Extra samples" view puts them: tests/harness/same-ray.js), computed here in Node; the page answers while the reference
+// "Extra samples" view puts them: tests/support/reference/same-ray.js), computed here in Node; the page answers while the reference
 // renders and says how far it has got; Cancel stops it; a click on the heat map pins that pixel in
 // the inspector; a shader that is not the raytracer, a multipass one and a debug view are told
 // so in a box that offers no map controls; a comparison under way is not started again.
@@ -9,12 +9,12 @@
 import fs from 'node:fs';
 import { afterAll, describe, expect, test } from 'vitest';
 import { formatImageError } from '../src/reference/error.js';
-import { SHADER_FILE } from './harness/config.js';
-import { disconnect } from './harness/page.js';
-import { measureSameRay } from './harness/same-ray.js';
-import { viewQuery } from './helpers/views.js';
-import { button, canvasBox, withPage, sharePageAcrossTests } from './helpers/page-helpers.js';
-import { exportOf } from './helpers/page-multipass-helpers.js';
+import { SHADER_FILE } from './support/config.js';
+import { disconnect } from './support/page.js';
+import { measureSameRay } from './support/reference/same-ray.js';
+import { viewQuery } from './support/tables/views.js';
+import { button, canvasBox, withPage, sharePageAcrossTests } from './support/page-helpers.js';
+import { exportOf } from './support/page-multipass-helpers.js';
 
 // not a test of loading the page: the tests share one, brought to each view by open()
 sharePageAcrossTests();

@@ -3,9 +3,9 @@
 // size cap, window resizes and devicePixelRatio changes; and URLs full of bad values, which must
 // be clamped or ignored with a console warning, never break the page.
 import { afterAll, describe, expect, test } from 'vitest';
-import { assertNotBlank, differingPixels, sameImage } from './harness/images.js';
-import { disconnect } from './harness/page.js';
-import { button, editorText, info, overlayText, readPixels, typeInEditor, withPage } from './helpers/page-helpers.js';
+import { assertNotBlank, differingPixels, sameImage } from './support/images.js';
+import { disconnect } from './support/page.js';
+import { button, editorText, info, overlayText, readPixels, typeInEditor, withPage } from './support/page-helpers.js';
 
 afterAll(disconnect);
 
@@ -194,7 +194,7 @@ describe('the URL', () => {
   });
 
   // A live (`const`) control is a uniform while it moves and a constant once it rests, so the
-  // still page runs the shader as it pastes (src/page/app/live-controls.js, SPECIALIZE_AFTER_MS): both forms show
+  // still page runs the shader as it pastes (src/player/app/live-controls.js, SPECIALIZE_AFTER_MS): both forms show
   // the same picture, and a move back is drawn at once from the uniform form kept compiled.
   test('live controls: uniforms while they move, compiled in as constants when still', async () => {
     await withPage(async ({ page, goto }) => {

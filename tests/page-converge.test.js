@@ -7,9 +7,9 @@ import fs from 'node:fs';
 import { describe, expect, test } from 'vitest';
 import { formatImageError, imageError } from '../src/reference/error.js';
 import { renderReference } from '../src/reference/render.js';
-import { SHADER_FILE } from './harness/config.js';
-import { decodeRgba } from './harness/page.js';
-import { info, withPage, sharePageAcrossTests } from './helpers/page-helpers.js';
+import { SHADER_FILE } from './support/config.js';
+import { decodeRgba } from './support/page.js';
+import { info, withPage, sharePageAcrossTests } from './support/page-helpers.js';
 
 // not a test of loading the page: the tests share one, brought to each view by open()
 sharePageAcrossTests();

@@ -3,7 +3,7 @@
 // wide and 390 wide); "Copy link" saying what it leaves out, pinning the size only when fixed,
 // and carrying an edited shader in its fragment; a refused ?shader= said on the page; Fullscreen.
 import { afterAll, describe, expect, test } from 'vitest';
-import { disconnect, openPage } from './harness/page.js';
+import { disconnect, openPage } from './support/page.js';
 import {
   button,
   editorText,
@@ -16,7 +16,7 @@ import {
   typeInEditor,
   withControl,
   withPage,
-} from './helpers/page-helpers.js';
+} from './support/page-helpers.js';
 
 afterAll(disconnect);
 

@@ -1,9 +1,9 @@
-// The page's editor (CodeMirror 6, src/page/ui/editor.js) in the real browser: highlighting, bracket
+// The page's editor (CodeMirror 6, src/studio/ui/editor.js) in the real browser: highlighting, bracket
 // matching, search, undo, Tab that indents (and Esc then Tab that leaves), compile errors at
 // their lines with a gutter marker and a link from the error box; edits kept across a reload
-// (src/page/io/kept-source.js); and the name an edited or pasted shader goes by.
+// (src/player/io/kept-source.js); and the name an edited or pasted shader goes by.
 import { afterAll, describe, expect, test } from 'vitest';
-import { disconnect } from './harness/page.js';
+import { disconnect } from './support/page.js';
 import {
   allowClipboard,
   button,
@@ -20,7 +20,7 @@ import {
   waitForCursorLine,
   withControl,
   withPage,
-} from './helpers/page-helpers.js';
+} from './support/page-helpers.js';
 
 afterAll(disconnect);
 

@@ -5,11 +5,11 @@
 
 import { describe, expect, test } from 'vitest';
 import puppeteer from 'puppeteer-core';
-import { CHROME_ARGS } from '../src/engine/browser.js';
-import { findChrome } from '../src/engine/chrome-path.js';
-import { harnessContext } from './harness/page.js';
-import { button, info, nextFrame, openEditor, pixel, typeInEditor, withControl, withPage, withServedDir } from './helpers/page-helpers.js';
-import { SHORT_TIMEOUTS } from './harness/config.js';
+import { CHROME_ARGS } from '../src/headless/browser.js';
+import { findChrome } from '../src/headless/chrome-path.js';
+import { harnessContext } from './support/page.js';
+import { button, info, nextFrame, openEditor, pixel, typeInEditor, withControl, withPage, withServedDir } from './support/page-helpers.js';
+import { SHORT_TIMEOUTS } from './support/config.js';
 import fs from 'node:fs';
 import path from 'node:path';
 
@@ -61,7 +61,7 @@ const HANG_AFTER_MS = SHORT_TIMEOUTS.hangMs;
  * pages keep the real clocks (the deterministic injection advances performance.now() per frame),
  * and the short timeouts. */
 const REAL_CLOCKS = { deterministic: false, timeouts: SHORT_TIMEOUTS };
-/** The hang note the page keeps in localStorage (src/page/io/hang-guard.js), or null. */
+/** The hang note the page keeps in localStorage (src/player/io/hang-guard.js), or null. */
 const hangNote = (page) => page.evaluate(() => JSON.parse(localStorage.getItem('shadertoy-runner.hung') ?? 'null'));
 /** The page's script answers a click within this (issue 12). */
 const CLICK_ANSWER_MS = 100;
@@ -287,7 +287,7 @@ describe('the page never comes back with the shader that hung', () => {
 describe('a shader that never finishes', () => {
   // The page's script froze for good here in 4 of 6 runs alone: heavy.glsl's last bitmap was
   // still being painted when endless.glsl's first draw took the GPU process. The worker waits for
-  // the page to say it has painted (src/page/gpu/bands/paint-gate.js), as long as it takes: its wait
+  // the page to say it has painted (src/player/gpu/bands/paint-gate.js), as long as it takes: its wait
   // once ended after 1 s, and a page whose animation frames came later (under load) froze 1 run
   // in 48 (tests/page-loop.test.js holds the wait).
   test('the page keeps answering and puts up the watchdog message (in a browser of its own: SwiftShader never gets over it)', async () => {

@@ -1,18 +1,18 @@
 // Issue 12's smaller holes, in the real page: a load that never gets an answer ends with a message
-// (src/page/io/shader-loader.js, after src/shared/timeouts.js's loadMs, shortened here), and an image or a shader from another origin is
+// (src/player/io/shader-loader.js, after src/shared/timeouts.js's loadMs, shortened here), and an image or a shader from another origin is
 // refused up front, whether asked for directly or reached through a redirect, without a console
-// error. The page's server gets its hanging and redirecting URLs from tests/harness/routes.js; the
+// error. The page's server gets its hanging and redirecting URLs from tests/support/routes.js; the
 // other origin is a small server of this file's own.
 import fs from 'node:fs';
 import http from 'node:http';
 import os from 'node:os';
 import path from 'node:path';
 import { afterAll, beforeAll, describe, expect, test } from 'vitest';
-import { SHORT_TIMEOUTS } from './harness/config.js';
-import { makeImage, writePng } from './harness/images.js';
-import { disconnect } from './harness/page.js';
-import { hangUrl, redirectUrl } from './harness/routes.js';
-import { info, overlayText, pixel, readPixels, solid, withPage, withServedDir } from './helpers/page-helpers.js';
+import { SHORT_TIMEOUTS } from './support/config.js';
+import { makeImage, writePng } from './support/images.js';
+import { disconnect } from './support/page.js';
+import { hangUrl, redirectUrl } from './support/routes.js';
+import { info, overlayText, pixel, readPixels, solid, withPage, withServedDir } from './support/page-helpers.js';
 
 afterAll(disconnect);
 

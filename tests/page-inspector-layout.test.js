@@ -1,4 +1,4 @@
-// Where the inspector's boxes lie (src/page/inspect/box-layout.js, loupe.js; issue 24, item 3):
+// Where the inspector's boxes lie (src/studio/inspect/box-layout.js, loupe.js; issue 24, item 3):
 // at 1280x800, 800x600 and on a phone (390x844), with a comparison's box and a pinned pixel in
 // each part of the canvas, the readout and the comparison's box stay inside the canvas, apart,
 // with their buttons in them, and off the pinned pixel; the magnifier lies on the stage (the
@@ -7,8 +7,8 @@
 // readout comes up where the magnifier was: the magnifier moves off it, or hides.
 
 import { afterAll, describe, expect, test } from 'vitest';
-import { disconnect } from './harness/page.js';
-import { withPage, sharePageAcrossTests } from './helpers/page-helpers.js';
+import { disconnect } from './support/page.js';
+import { withPage, sharePageAcrossTests } from './support/page-helpers.js';
 
 // not a test of loading the page: the tests share one, brought to each view by open()
 sharePageAcrossTests();

@@ -1,4 +1,4 @@
-// The pixel inspector (src/page/inspect/inspector.js), in the real page: a pinned pixel's colour
+// The pixel inspector (src/studio/inspect/inspector.js), in the real page: a pinned pixel's colour
 // in float agrees with the 8-bit pixel the frame has there, for a single-pass shader, a multipass
 // one (whose buffers it reads too) and the raytracer (at an edge pixel as well, where the
 // adaptive anti-aliasing reads the 2x2 quad's derivatives); it follows time and controls; a
@@ -8,10 +8,10 @@
 import fs from 'node:fs';
 import { afterAll, describe, expect, test } from 'vitest';
 import { referencePixel } from '../src/reference/render.js';
-import { SHADER_FILE } from './harness/config.js';
-import { disconnect } from './harness/page.js';
-import { button, canvasBox, info, readPixels, withPage } from './helpers/page-helpers.js';
-import { exportOf } from './helpers/page-multipass-helpers.js';
+import { SHADER_FILE } from './support/config.js';
+import { disconnect } from './support/page.js';
+import { button, canvasBox, info, readPixels, withPage } from './support/page-helpers.js';
+import { exportOf } from './support/page-multipass-helpers.js';
 
 afterAll(disconnect);
 

@@ -7,9 +7,9 @@ import os from 'node:os';
 import path from 'node:path';
 import { afterAll, describe, expect, test } from 'vitest';
 import { composeImageShader } from '../src/shadertoy/header.js';
-import { makeImage, readPng, sameImage, writePng } from './harness/images.js';
-import { disconnect } from './harness/page.js';
-import { renderRawShader } from './harness/raw-webgl.js';
+import { makeImage, readPng, sameImage, writePng } from './support/images.js';
+import { disconnect } from './support/page.js';
+import { renderRawShader } from './support/raw-webgl/raw-webgl.js';
 import {
   allowClipboard,
   button,
@@ -27,8 +27,8 @@ import {
   typeInEditor,
   withPage,
   withServedDir,
-} from './helpers/page-helpers.js';
-import { captureDownloads } from './harness/downloads.js';
+} from './support/page-helpers.js';
+import { captureDownloads } from './support/downloads.js';
 
 afterAll(disconnect);
 

@@ -4,11 +4,11 @@
 // from a playing page plays.
 
 import { describe, expect, test } from 'vitest';
-import { projectKey } from '../src/page/io/hang-guard.js';
+import { projectKey } from '../src/player/io/hang-guard.js';
 import { singlePass } from '../src/shadertoy/multipass.js';
-import { allowClipboard, button, editorText, info, pasteIntoEditor, solid, typeInEditor, withControl } from './helpers/page-helpers.js';
-import { withPage, withServedDir } from './helpers/page-helpers.js';
-import { writeFiles } from './helpers/page-multipass-helpers.js';
+import { allowClipboard, button, editorText, info, pasteIntoEditor, solid, typeInEditor, withControl } from './support/page-helpers.js';
+import { withPage, withServedDir } from './support/page-helpers.js';
+import { writeFiles } from './support/page-multipass-helpers.js';
 
 const SIZE = 'size=64x36&time=1';
 

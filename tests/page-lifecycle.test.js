@@ -4,11 +4,11 @@
 import fs from 'node:fs';
 import path from 'node:path';
 import { afterAll, describe, expect, test } from 'vitest';
-import { REPO_ROOT, SHADER_FILE } from './harness/config.js';
-import { sameImage } from './harness/images.js';
-import { disconnect } from './harness/page.js';
-import { startWatchingServer } from './harness/page-server.js';
-import { info, overlayText, pixel, readPixels, solid, withPage, withServedDir } from './helpers/page-helpers.js';
+import { REPO_ROOT, SHADER_FILE } from './support/config.js';
+import { sameImage } from './support/images.js';
+import { disconnect } from './support/page.js';
+import { startWatchingServer } from './support/page-server.js';
+import { info, overlayText, pixel, readPixels, solid, withPage, withServedDir } from './support/page-helpers.js';
 
 afterAll(disconnect);
 

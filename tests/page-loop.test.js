@@ -5,11 +5,11 @@
 
 import { afterAll, beforeAll, describe, expect, test } from 'vitest';
 import puppeteer from 'puppeteer-core';
-import { CHROME_ARGS } from '../src/engine/browser.js';
-import { findChrome } from '../src/engine/chrome-path.js';
-import { harnessContext } from './harness/page.js';
-import { pasteIntoEditor, withPage } from './helpers/page-helpers.js';
-import { SHORT_TIMEOUTS } from './harness/config.js';
+import { CHROME_ARGS } from '../src/headless/browser.js';
+import { findChrome } from '../src/headless/chrome-path.js';
+import { harnessContext } from './support/page.js';
+import { pasteIntoEditor, withPage } from './support/page-helpers.js';
+import { SHORT_TIMEOUTS } from './support/config.js';
 
 /** A shader that never finishes: the loop's exit depends on a sum that never gets there. */
 const ENDLESS_SHADER = `void mainImage(out vec4 fragColor, in vec2 fragCoord) {

@@ -4,13 +4,13 @@
 // multipass shader in #source= and the page opens it identically; an edit of a multipass shader
 // survives a reload (kept-source.js).
 import { afterAll, describe, expect, test } from 'vitest';
-import { disconnect } from './harness/page.js';
+import { disconnect } from './support/page.js';
 import { fromShadertoyJson } from '../src/shadertoy/multipass-json.js';
 import { sameModel } from '../src/shadertoy/multipass.js';
-import { allowClipboard, button, editorText, info } from './helpers/page-helpers.js';
-import { openEditor, typeInEditor, withControl, withPage, withServedDir } from './helpers/page-helpers.js';
-import { BUFFER_A, IMAGE, WITH_MEDIA, exportOf } from './helpers/page-multipass-helpers.js'; // the shaders
-import { dropFile, editorTabs, exportJsonFile, loadNotes, recordSaves, showTab, writeFiles } from './helpers/page-multipass-helpers.js'; // the steps
+import { allowClipboard, button, editorText, info } from './support/page-helpers.js';
+import { openEditor, typeInEditor, withControl, withPage, withServedDir } from './support/page-helpers.js';
+import { BUFFER_A, IMAGE, WITH_MEDIA, exportOf } from './support/page-multipass-helpers.js'; // the shaders
+import { dropFile, editorTabs, exportJsonFile, loadNotes, recordSaves, showTab, writeFiles } from './support/page-multipass-helpers.js'; // the steps
 
 afterAll(disconnect);
 

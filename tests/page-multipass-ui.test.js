@@ -4,9 +4,9 @@
 // ?shader=, by dropping the file and by pasting it, with a note (never a failure) for what the
 // page cannot have, and a clear message for a file that is not a shader.
 import { afterAll, describe, expect, test } from 'vitest';
-import { disconnect } from './harness/page.js';
+import { disconnect } from './support/page.js';
 import { fromShadertoyJson } from '../src/shadertoy/multipass-json.js';
-import { allowClipboard, button, EDITOR, editorText, errorMarkerLines, info, openEditor } from './helpers/page-helpers.js';
+import { allowClipboard, button, EDITOR, editorText, errorMarkerLines, info, openEditor } from './support/page-helpers.js';
 import {
   overlayText,
   pasteIntoEditor,
@@ -15,9 +15,9 @@ import {
   withControl,
   withPage,
   withServedDir,
-} from './helpers/page-helpers.js';
-import { BUFFER_A, COMMON, IMAGE, WITH_MEDIA, exportOf } from './helpers/page-multipass-helpers.js'; // the shaders
-import { dropFile, editorTabs, exportJsonFile, loadNotes, showTab, writeFiles } from './helpers/page-multipass-helpers.js'; // the steps
+} from './support/page-helpers.js';
+import { BUFFER_A, COMMON, IMAGE, WITH_MEDIA, exportOf } from './support/page-multipass-helpers.js'; // the shaders
+import { dropFile, editorTabs, exportJsonFile, loadNotes, showTab, writeFiles } from './support/page-multipass-helpers.js'; // the steps
 
 afterAll(disconnect);
 

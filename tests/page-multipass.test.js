@@ -8,7 +8,7 @@
 import { unzipSync } from 'fflate';
 import { PNG } from 'pngjs';
 import { describe, expect, test } from 'vitest';
-import { info, nextFrame, pixel, readPixels, withPage, sharePageAcrossTests } from './helpers/page-helpers.js';
+import { info, nextFrame, pixel, readPixels, withPage, sharePageAcrossTests } from './support/page-helpers.js';
 
 // not a test of loading the page: the tests share one, brought to each view by open()
 sharePageAcrossTests();

@@ -5,9 +5,9 @@
 
 import { afterAll, describe, expect, test } from 'vitest';
 import { sayOnce } from '../src/shared/said-once.js';
-import { disconnect } from './harness/page.js';
-import { withPage } from './helpers/page-helpers.js';
-import { loadNotes } from './helpers/page-multipass-helpers.js';
+import { disconnect } from './support/page.js';
+import { withPage } from './support/page-helpers.js';
+import { loadNotes } from './support/page-multipass-helpers.js';
 
 afterAll(disconnect);
 

@@ -1,4 +1,4 @@
-// window.shaderEngine.open(query) (src/page/open-view.js): the page put in the state a fresh load of
+// window.shaderEngine.open(query) (src/player/open-view.js): the page put in the state a fresh load of
 // a URL gives, without a reload. Each view below is rendered both ways: a fresh page loaded at
 // its URL, and one page that was first left in another state (another shader, a control moved,
 // the mouse and the clock elsewhere, a pixel pinned) and then given open() for each view in
@@ -10,10 +10,10 @@
 import fs from 'node:fs';
 import path from 'node:path';
 import { afterAll, describe, expect, test } from 'vitest';
-import { disconnect } from './harness/page.js';
-import { sameImage } from './harness/images.js';
-import { dataAt, info, readPixels, withPage, withServedDir } from './helpers/page-helpers.js';
-import { exportOf } from './helpers/page-multipass-helpers.js';
+import { disconnect } from './support/page.js';
+import { sameImage } from './support/images.js';
+import { dataAt, info, readPixels, withPage, withServedDir } from './support/page-helpers.js';
+import { exportOf } from './support/page-multipass-helpers.js';
 
 afterAll(disconnect);
 

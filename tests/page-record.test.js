@@ -1,4 +1,4 @@
-// Recording (src/page/io/recorder.js, src/page/ui/toolbar/record-dialog.js), end to end in the real browser: a
+// Recording (src/player/io/recorder.js, src/studio/ui/toolbar/record-dialog.js), end to end in the real browser: a
 // test shader that paints iFrame, iTime and iTimeDelta as colour is recorded frame by frame at a
 // fixed frame rate and size, through window.shaderEngine.record() and through the toolbar's
 // "Record" button; the WebM is read back in Node with mediabunny (frame count, size, times; its
@@ -9,9 +9,9 @@ import { unzipSync } from 'fflate';
 import { ALL_FORMATS, BufferSource, EncodedPacketSink, Input } from 'mediabunny';
 import { PNG } from 'pngjs';
 import { afterAll, describe, expect, test } from 'vitest';
-import { disconnect } from './harness/page.js';
-import { button, info, typeInEditor, withControl, withPage } from './helpers/page-helpers.js';
-import { captureDownloads } from './harness/downloads.js';
+import { disconnect } from './support/page.js';
+import { button, info, typeInEditor, withControl, withPage } from './support/page-helpers.js';
+import { captureDownloads } from './support/downloads.js';
 
 afterAll(disconnect);
 

@@ -4,10 +4,10 @@
 // that tells what is happening, and the small ones (a tab, wrapping lines, Reset view).
 
 import { describe, expect, test } from 'vitest';
-import { openPage } from './harness/page.js';
-import { sameImage } from './harness/images.js';
-import { button, info, openEditor, overlayText, readPixels, recordReadouts, withPage } from './helpers/page-helpers.js';
-import { dropFile, loadNotes } from './helpers/page-multipass-helpers.js';
+import { openPage } from './support/page.js';
+import { sameImage } from './support/images.js';
+import { button, info, openEditor, overlayText, readPixels, recordReadouts, withPage } from './support/page-helpers.js';
+import { dropFile, loadNotes } from './support/page-multipass-helpers.js';
 
 const SIZE = 'size=64x36&time=0';
 

@@ -4,7 +4,7 @@
 // and VIEW are read by their names and Copy link writes the names.
 
 import { expect, test } from 'vitest';
-import { info, withPage, sharePageAcrossTests } from './helpers/page-helpers.js';
+import { info, withPage, sharePageAcrossTests } from './support/page-helpers.js';
 
 // not a test of loading the page: the tests share one, brought to each view by open()
 sharePageAcrossTests();

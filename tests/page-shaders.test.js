@@ -5,9 +5,9 @@
 // each input's semantics against real pointer, touch and keyboard input.
 import { afterAll, describe, expect, test } from 'vitest';
 import { composeImageShader } from '../src/shadertoy/header.js';
-import { assertNotBlank, expectImagesMatch } from './harness/images.js';
-import { disconnect } from './harness/page.js';
-import { renderRawShader } from './harness/raw-webgl.js';
+import { assertNotBlank, expectImagesMatch } from './support/images.js';
+import { disconnect } from './support/page.js';
+import { renderRawShader } from './support/raw-webgl/raw-webgl.js';
 import {
   canvasBox,
   checkResults,
@@ -19,7 +19,7 @@ import {
   pixel,
   readPixels,
   withPage,
-} from './helpers/page-helpers.js';
+} from './support/page-helpers.js';
 
 afterAll(disconnect);
 

@@ -1,12 +1,12 @@
-// The stale-build check (src/engine/page-server.js staleSources) reads the build's own list of
+// The stale-build check (src/headless/page-server.js staleSources) reads the build's own list of
 // its sources, made from the page's and its workers' module graphs (vite.config.js
 // pageSources), not a hand-written list of folders, which missed src/raytracer and
 // src/reference (issue 39, item 3): a clone could render with a stale page.
 import fs from 'node:fs';
 import path from 'node:path';
 import { afterEach, expect, test } from 'vitest';
-import { builtPage, staleSources } from '../src/engine/page-server.js';
-import { REPO_ROOT } from './harness/config.js';
+import { builtPage, staleSources } from '../src/headless/page-server.js';
+import { REPO_ROOT } from './support/config.js';
 
 /** Files whose modification time a test moved, and the time to put back. */
 const moved = [];
@@ -27,8 +27,8 @@ test('the build lists what the page and its workers bundle, and no file the test
   const dist = await builtPage(); // the harness built dist/ for this run
   const listed = JSON.parse(fs.readFileSync(path.join(dist, 'page-sources.json'), 'utf8'));
   for (const file of [
-    'src/page/main.js',
-    'src/page/gpu/render-worker.js', // the render worker's own bundle
+    'src/studio/main.js',
+    'src/player/gpu/render-worker.js', // the render worker's own bundle
     'src/raytracer/progressive.js',
     'src/reference/render.js', // the float64 reference's worker threads
     'src/shadertoy/header.js',
@@ -47,7 +47,7 @@ test.each([
   ['src/reference/vec3.js'],
   ['src/raytracer/path-probe.js'],
   ['shaders/raytrace.glsl'],
-  ['src/page/gpu/protocol.js'],
+  ['src/player/gpu/protocol.js'],
   ['package-lock.json'],
   ['node_modules/.package-lock.json'],
 ])('an edit of %s after the build makes it stale', async (file) => {

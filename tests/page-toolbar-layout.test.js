@@ -8,9 +8,9 @@
 //   shader's name in the toolbar.
 
 import { afterAll, describe, expect, test } from 'vitest';
-import { disconnect } from './harness/page.js';
-import { sharePageAcrossTests, withPage } from './helpers/page-helpers.js';
-import { dropFile } from './helpers/page-multipass-helpers.js';
+import { disconnect } from './support/page.js';
+import { sharePageAcrossTests, withPage } from './support/page-helpers.js';
+import { dropFile } from './support/page-multipass-helpers.js';
 
 sharePageAcrossTests();
 afterAll(disconnect);

@@ -8,8 +8,8 @@
 
 import { describe, expect, test } from 'vitest';
 import { composePassShader, hostControlBlock } from '../src/shadertoy/header.js';
-import { pixel, readPixels, sharePageAcrossTests, withPage } from './helpers/page-helpers.js';
-import { exportOf } from './helpers/page-multipass-helpers.js';
+import { pixel, readPixels, sharePageAcrossTests, withPage } from './support/page-helpers.js';
+import { exportOf } from './support/page-multipass-helpers.js';
 
 sharePageAcrossTests();
 

@@ -4,7 +4,7 @@
 // 13), and nothing for the views that show what they mean.
 
 import { describe, expect, test } from 'vitest';
-import { withPage, sharePageAcrossTests } from './helpers/page-helpers.js';
+import { withPage, sharePageAcrossTests } from './support/page-helpers.js';
 
 // not a test of loading the page: the tests share one, brought to each view by open()
 sharePageAcrossTests();

@@ -1,4 +1,4 @@
-// A heavy frame is drawn in bands (src/page/gpu/bands/band-planner.js). A still frame, or the first
+// A heavy frame is drawn in bands (src/player/gpu/bands/band-planner.js). A still frame, or the first
 // frame of a shader, is shown as it builds up (there is nothing newer to show); frames that
 // follow one another while playing are shown only whole (issue 45, item 10): one shown as it
 // builds up lies half over the frame before it, a torn picture.
@@ -11,8 +11,8 @@
 import fs from 'node:fs';
 import path from 'node:path';
 import { afterAll, describe, expect, test } from 'vitest';
-import { disconnect } from './harness/page.js';
-import { info, withPage, withServedDir } from './helpers/page-helpers.js';
+import { disconnect } from './support/page.js';
+import { info, withPage, withServedDir } from './support/page-helpers.js';
 
 afterAll(disconnect);
 

@@ -6,8 +6,8 @@
 // textbook sphere get a large share wrong.
 
 import { afterAll, describe, expect, it } from 'vitest';
-import { disconnect } from './harness/page.js';
-import { caseScale, f32, reference, runCases, shaderSource } from './helpers/intersector-kinds.js';
+import { disconnect } from './support/page.js';
+import { caseScale, f32, reference, runCases, shaderSource } from './support/tables/intersector-kinds.js';
 import { PRIMITIVE_KINDS, judgeHardCases, withIqPeers } from './bench/primitive-peers.js';
 import { normalize } from '../src/reference/vec3.js';
 

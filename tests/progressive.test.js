@@ -16,9 +16,9 @@ import {
 } from '../src/raytracer/progressive.js';
 import { imageError, formatImageError } from '../src/reference/error.js';
 import { renderReference } from '../src/reference/render.js';
-import { SHADER_FILE } from './harness/config.js';
-import { disconnect, decodeRgba } from './harness/page.js';
-import { composeModel, runPasses } from './helpers/multipass-runner.js';
+import { SHADER_FILE } from './support/config.js';
+import { disconnect, decodeRgba } from './support/page.js';
+import { composeModel, runPasses } from './support/multipass-runner.js';
 
 afterAll(disconnect);
 

@@ -1,18 +1,18 @@
 // Render tests: the goldens of tests/golden/ (a `shaderproof test` folder: shaderproof.json and
 // __references__/), each case drawn on the engine page and compared by the runner of `shaderproof
-// test` (tests/harness/goldens.js), a test a case. Then what keeps the tolerance honest: each
+// test` (tests/support/goldens.js), a test a case. Then what keeps the tolerance honest: each
 // golden is a rendered scene, every pair of goldens differs by far more than the tolerance
 // allows, and so does each view that sets a control no other view contrasts with the same view
 // without it.
 import fs from 'node:fs';
 import { afterAll, describe, expect, test } from 'vitest';
 import { parseControls } from '../src/shadertoy/controls.js';
-import { renderShader } from '../src/cli/render.js';
-import { readPng } from '../src/engine/png.js';
-import { SHADER_FILE } from './harness/config.js';
-import { assertNotBlank, compareImages } from './harness/images.js';
-import { GOLDEN_CASES, closeGoldens, goldenSession, runGolden } from './harness/goldens.js';
-import { VIEWS, viewControlProblems } from './helpers/views.js';
+import { renderShader } from '../src/api/render.js';
+import { readPng } from '../src/headless/png.js';
+import { SHADER_FILE } from './support/config.js';
+import { assertNotBlank, compareImages } from './support/images.js';
+import { GOLDEN_CASES, closeGoldens, goldenSession, runGolden } from './support/goldens.js';
+import { VIEWS, viewControlProblems } from './support/tables/views.js';
 
 afterAll(closeGoldens);
 

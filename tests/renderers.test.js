@@ -1,11 +1,11 @@
-// What draws (src/engine/renderers.js, browser.js): which renderer a verb gets, how Mesa is
+// What draws (src/headless/renderers.js, browser.js): which renderer a verb gets, how Mesa is
 // found, and that each renderer asked for is the one that draws, never another in its place.
 import fs from 'node:fs';
 import path from 'node:path';
 import { describe, expect, test } from 'vitest';
-import { startBrowser } from '../src/engine/browser.js';
-import { killBrowser } from '../src/engine/watch.js';
-import { MESA_PACKAGES, chooseRenderer, drawnBy, findMesa, mesaMissingLine, suiteRenderer } from '../src/engine/renderers.js';
+import { startBrowser } from '../src/headless/browser.js';
+import { killBrowser } from '../src/headless/watch.js';
+import { MESA_PACKAGES, chooseRenderer, drawnBy, findMesa, mesaMissingLine, suiteRenderer } from '../src/headless/renderers.js';
 
 /** A machine's file system for findMesa: the files it has, and its folders' listings. */
 function machine(files) {

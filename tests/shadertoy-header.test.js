@@ -7,8 +7,8 @@
 
 import { describe, expect, test } from 'vitest';
 import { composeImageShader, SHADERTOY_HEADER } from '../src/shadertoy/header.js';
-import { renderRawShader } from './harness/raw-webgl.js';
-import { sharePageAcrossTests, withPage } from './helpers/page-helpers.js';
+import { renderRawShader } from './support/raw-webgl/raw-webgl.js';
+import { sharePageAcrossTests, withPage } from './support/page-helpers.js';
 
 sharePageAcrossTests();
 

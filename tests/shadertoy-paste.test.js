@@ -5,13 +5,13 @@
 // and draw the same scene as the page's `default` view: same defaults, same pixels.
 import fs from 'node:fs';
 import { afterAll, expect, test } from 'vitest';
-import { drawnBy, suiteRenderer } from '../src/engine/renderers.js';
+import { drawnBy, suiteRenderer } from '../src/headless/renderers.js';
 import { composeImageShader } from '../src/shadertoy/header.js';
-import { SHADER_FILE, rel } from './harness/config.js';
-import { assertNotBlank, expectImagesMatch } from './harness/images.js';
-import { disconnect, renderView } from './harness/page.js';
-import { mapShaderLog, renderRawShader } from './harness/raw-webgl.js';
-import { VIEWS, viewSize } from './helpers/views.js';
+import { SHADER_FILE, rel } from './support/config.js';
+import { assertNotBlank, expectImagesMatch } from './support/images.js';
+import { disconnect, renderView } from './support/page.js';
+import { mapShaderLog, renderRawShader } from './support/raw-webgl/raw-webgl.js';
+import { VIEWS, viewSize } from './support/tables/views.js';
 
 afterAll(disconnect);
 

@@ -5,8 +5,8 @@
 
 import fs from 'node:fs';
 import { describe, expect, test } from 'vitest';
-import { BUILTIN_BASE, MAX_LINK_LENGTH, encodeSource, sourceFromHash, textFragment } from '../src/page/io/share-link.js';
-import { SHADER_FILE } from './harness/config.js';
+import { BUILTIN_BASE, MAX_LINK_LENGTH, encodeSource, sourceFromHash, textFragment } from '../src/player/io/share-link.js';
+import { SHADER_FILE } from './support/config.js';
 
 const builtin = fs.readFileSync(SHADER_FILE, 'utf8');
 const shipped = { base: BUILTIN_BASE, source: builtin };

@@ -11,14 +11,14 @@ import path from 'node:path';
 import { promisify } from 'node:util';
 import { ALL_FORMATS, BufferSource, Input } from 'mediabunny';
 import { afterAll, beforeAll, describe, expect, test } from 'vitest';
-import { builtPage } from '../src/engine/page-server.js';
+import { builtPage } from '../src/headless/page-server.js';
 import { BLOCK_SAMPLES, SAMPLE_RATE, soundBlocks, toPcm16, toPlayed, unpackBlock } from '../src/shadertoy/sound.js';
 import { decodeWav, encodeWav } from '../src/shared/wav.js';
-import { rmsDifference, spectrumDifference } from '../src/cli/test/sound-compare.js';
-import { disconnect } from './harness/page.js';
-import { REPO_ROOT } from './harness/config.js';
-import { withPage } from './helpers/page-helpers.js';
-import { LEAD_SECONDS, PLAY_SAMPLES, blocksToPlay, driftAt, planPlayback, sampleAt } from '../src/page/sound/schedule.js';
+import { rmsDifference, spectrumDifference } from '../src/runner/sound-compare.js';
+import { disconnect } from './support/page.js';
+import { REPO_ROOT } from './support/config.js';
+import { withPage } from './support/page-helpers.js';
+import { LEAD_SECONDS, PLAY_SAMPLES, blocksToPlay, driftAt, planPlayback, sampleAt } from '../src/player/sound/schedule.js';
 
 afterAll(disconnect);
 

@@ -1,4 +1,4 @@
-// `shaderproof test`'s manifest (src/cli/test/manifest.js), without a browser: what a case may
+// `shaderproof test`'s manifest (src/runner/manifest.js), without a browser: what a case may
 // say (a view of a shader elsewhere, a renderer's own tolerance, a comment), and the one line,
 // exit 2, for each thing it cannot use, so that a typo never turns a check off in silence.
 
@@ -6,7 +6,7 @@ import fs from 'node:fs';
 import os from 'node:os';
 import path from 'node:path';
 import { afterAll, beforeAll, describe, expect, test } from 'vitest';
-import { findCases, readManifest, toleranceFor } from '../src/cli/test/manifest.js';
+import { findCases, readManifest, toleranceFor } from '../src/runner/manifest.js';
 
 let folder = '';
 const SHADER = 'void mainImage(out vec4 c, in vec2 f) { c = vec4(1.0); }\n';

@@ -11,11 +11,11 @@ import path from 'node:path';
 import { pathToFileURL } from 'node:url';
 import { afterAll, beforeAll, describe, expect, test } from 'vitest';
 import { main } from '../src/cli/main.js';
-import { io } from '../src/cli/io.js';
-import { htmlReport } from '../src/cli/test/report/html-report.js';
-import { writePng } from '../src/engine/png.js';
-import { builtPage } from '../src/engine/page-server.js';
-import { disconnect, openPage } from './harness/page.js';
+import { io } from '../src/api/io.js';
+import { htmlReport } from '../src/runner/report/html-report.js';
+import { writePng } from '../src/headless/png.js';
+import { builtPage } from '../src/headless/page-server.js';
+import { disconnect, openPage } from './support/page.js';
 
 let folder = '';
 beforeAll(async () => {

@@ -1,4 +1,4 @@
-// `shaderproof test`'s runner without a browser (src/cli/test/runner.js, guard.js, report/reporters.js):
+// `shaderproof test`'s runner without a browser (src/runner/runner.js, guard.js, report/reporters.js):
 // sessions made here draw a colour from the shader's name at once, or never answer, or throw,
 // so that what the runner does about a case that takes its browser down (issue 45, item 1), the
 // order of its reports with several workers (item 8), --reporter and the progress line (issue
@@ -9,10 +9,10 @@ import os from 'node:os';
 import path from 'node:path';
 import { afterAll, beforeAll, describe, expect, test } from 'vitest';
 import { main } from '../src/cli/main.js';
-import { io } from '../src/cli/io.js';
-import { runTest } from '../src/cli/test/corpus.js';
-import { silenceLimitMs } from '../src/cli/test/guard.js';
-import { readPng, writePng } from '../src/engine/png.js';
+import { io } from '../src/api/io.js';
+import { runTest } from '../src/runner/corpus.js';
+import { silenceLimitMs } from '../src/runner/guard.js';
+import { readPng, writePng } from '../src/headless/png.js';
 
 let folder = '';
 beforeAll(() => {
@@ -34,7 +34,7 @@ function cases(dir, names) {
  * A session as session.js makes one, without a browser: `draw` answers with a 4×4 image whose
  * colour comes from the shader's name, except for names that say otherwise: "hang" never
  * answers (and has no page to ask), "boom" throws what is not the shader's fault (a bug),
- * "late" throws what a wait of the session's that ran out throws (src/engine/watch.js), "slow"
+ * "late" throws what a wait of the session's that ran out throws (src/headless/watch.js), "slow"
  * answers after 200 ms (so that workers finish out of order).
  */
 function fakeSession(rendererName = undefined) {
@@ -66,7 +66,7 @@ function fakeSession(rendererName = undefined) {
       return { width: 4, height: 4, data, info: { controls: {} }, notes: [] };
     },
     drawFloat: async () => ({ width: 0, height: 0, data: new Float32Array() }),
-    // no renderer with a loop limit: nothing is ever cut (src/cli/loop-limit.js)
+    // no renderer with a loop limit: nothing is ever cut (src/api/loop-limit.js)
     loopReport: async () => null,
     client: () => null,
     takeLogged: () => [],

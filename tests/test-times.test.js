@@ -3,7 +3,7 @@ import fs from 'node:fs';
 import os from 'node:os';
 import path from 'node:path';
 import { describe, expect, test } from 'vitest';
-import { REPO_ROOT } from './harness/config.js';
+import { REPO_ROOT } from './support/config.js';
 import { tableOf, timesOf } from './scripts/test-times.js';
 
 const file = (name, startTime, endTime, tests) => ({

@@ -9,11 +9,11 @@ import fs from 'node:fs';
 import os from 'node:os';
 import path from 'node:path';
 import { afterAll, beforeAll, describe, expect, test } from 'vitest';
-import { io } from '../src/cli/io.js';
+import { io } from '../src/api/io.js';
 import { main } from '../src/cli/main.js';
-import { startSession } from '../src/cli/session.js';
-import { runTest } from '../src/cli/test/corpus.js';
-import { builtPage } from '../src/engine/page-server.js';
+import { startSession } from '../src/headless/session.js';
+import { runTest } from '../src/runner/corpus.js';
+import { builtPage } from '../src/headless/page-server.js';
 
 let folder = '';
 beforeAll(async () => {

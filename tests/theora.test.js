@@ -7,9 +7,9 @@
 import fs from 'node:fs';
 import { createRequire } from 'node:module';
 import { describe, expect, test } from 'vitest';
-import { theoraToRgba } from '../src/page/inputs/theora-colour.js';
-import { TheoraStream } from '../src/page/inputs/theora-stream.js';
-import { COLOUR_TOLERANCE, DURATION, THEORA_FILE, VIDEO, frameAt, pixelOf } from './helpers/theora-fixture.js';
+import { theoraToRgba } from '../src/player/inputs/theora-colour.js';
+import { TheoraStream } from '../src/player/inputs/theora-stream.js';
+import { COLOUR_TOLERANCE, DURATION, THEORA_FILE, VIDEO, frameAt, pixelOf } from './support/fixtures/theora-fixture.js';
 
 const require = createRequire(import.meta.url);
 const OGV = require.resolve('ogv/dist/ogv-demuxer-ogg-wasm.js').replace(/ogv-demuxer-ogg-wasm\.js$/, '');

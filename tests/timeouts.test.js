@@ -1,9 +1,9 @@
 // The page's production timeouts (src/shared/timeouts.js), held here: the page tests run with
-// shortened ones (tests/harness/config.js's SHORT_TIMEOUTS), so this is where a change of a
+// shortened ones (tests/support/config.js's SHORT_TIMEOUTS), so this is where a change of a
 // production value shows. And a harness's overrides take only known, positive, finite values.
 import { describe, expect, test } from 'vitest';
 import { PRODUCTION_TIMEOUTS, timeoutsWith } from '../src/shared/timeouts.js';
-import { SHORT_TIMEOUTS } from './harness/config.js';
+import { SHORT_TIMEOUTS } from './support/config.js';
 
 describe('the page timeouts', () => {
   test('production values', () => {

@@ -1,7 +1,7 @@
-// The stand-in a pass's material carries past three.js's preprocessing (src/page/gpu/verbatim-source.js):
+// The stand-in a pass's material carries past three.js's preprocessing (src/player/gpu/verbatim-source.js):
 // the context is handed back the text it stands for, byte for byte, whatever three.js put around it.
 import { expect, test } from 'vitest';
-import { sendVerbatimSources, verbatimStandIn } from '../src/page/gpu/verbatim-source.js';
+import { sendVerbatimSources, verbatimStandIn } from '../src/player/gpu/verbatim-source.js';
 
 /** A context whose shaderSource only keeps what it was given. */
 function fakeContext() {

@@ -1,14 +1,14 @@
 // The goldens' views (tests/golden/shaderproof.json, no browser): names, sizes, and every shader
 // control a view sets must exist in the control block of shaders/raytrace.glsl with a value
 // inside its range, so a renamed or re-ranged control fails here, loudly, instead of silently
-// rendering the default; and the manifest's tolerance is the suite's (tests/helpers/views.js).
+// rendering the default; and the manifest's tolerance is the suite's (tests/support/tables/views.js).
 import fs from 'node:fs';
 import { describe, expect, test } from 'vitest';
 import { parseControls } from '../src/shadertoy/controls.js';
-import { SHADER_FILE } from './harness/config.js';
-import { allowedDiffPixels } from './harness/images.js';
-import { GOLDEN_CASES, REFERENCES } from './harness/goldens.js';
-import { MAX_DIFF_FRACTION, PIXEL_THRESHOLD, VIEWS, viewControlProblems, viewQuery, viewSize } from './helpers/views.js';
+import { SHADER_FILE } from './support/config.js';
+import { allowedDiffPixels } from './support/images.js';
+import { GOLDEN_CASES, REFERENCES } from './support/goldens.js';
+import { MAX_DIFF_FRACTION, PIXEL_THRESHOLD, VIEWS, viewControlProblems, viewQuery, viewSize } from './support/tables/views.js';
 import { EXTRA_SAMPLES_VIEW, extraSamplesValues } from '../src/raytracer/extra-samples.js';
 
 describe('view table', () => {

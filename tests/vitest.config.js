@@ -1,9 +1,9 @@
 // The test runner's config (npm test passes it with --config). It is separate from vite.config.js
-// (which serves the page from src/page/) so that the tests run from the repository root;
-// tests/harness/setup.js starts that page server itself.
+// (which serves the page from src/player/) so that the tests run from the repository root;
+// tests/support/setup.js starts that page server itself.
 import { fileURLToPath } from 'node:url';
 import { defineConfig } from 'vitest/config';
-import { findChrome } from '../src/engine/chrome-path.js';
+import { findChrome } from '../src/headless/chrome-path.js';
 
 // No Chromium, no test can run: say so and how to install one before vitest prints anything
 // (its banner, then "No test files found" and a stack, if the global setup were left to fail).
@@ -26,7 +26,7 @@ export default defineConfig({
     environment: 'node',
     include: ['tests/**/*.test.js'],
     // Starts one headless Chromium (SwiftShader) and serves the built page for the whole run.
-    globalSetup: ['tests/harness/setup.js'],
+    globalSetup: ['tests/support/setup.js'],
     // The browser is shared and SwiftShader uses every core: one test file at a time.
     fileParallelism: false,
     maxWorkers: 1,

@@ -1,10 +1,10 @@
-// Every wait on a page ends (src/engine/watch.js), but a wait whose caller gave it a timeout of
+// Every wait on a page ends (src/headless/watch.js), but a wait whose caller gave it a timeout of
 // its own keeps it: 0 is no limit but a crash (a converge of thousands of samples, frame 99,999:
 // issue 36, item 2, where a blanket 120 s cap cut every long render). Without a browser: a page
 // stand-in whose waits settle when told.
 import { EventEmitter } from 'node:events';
 import { expect, test } from 'vitest';
-import { watchPage } from '../src/engine/watch.js';
+import { watchPage } from '../src/headless/watch.js';
 
 /**
  * A page whose waits resolve after `ms` with what a page says when asked what it was doing

@@ -10,17 +10,17 @@ import fs from 'node:fs';
 import path from 'node:path';
 import { parseArgs } from 'node:util';
 import { runOpen } from './open.js';
-import { runRecord } from './record.js';
-import { outputFormat, renderShader, renderTiled, writeFloatImage, writeImage } from './render.js';
-import { CliError, shaderKind, startSession } from './session.js';
-import { LoopLimitFallback, refuseCutLoops } from './loop-limit.js';
-import { DEFAULT_JOBS, runTest } from './test/corpus.js';
-import { DEFAULT_SIZE as TEST_SIZE } from './test/manifest.js';
-import { UsageError, VIEW_FLAGS, dateLabel, readNumber, readViewOptions } from './view-options.js';
-import { frameProgress, io, oneShader, sayNotes, sessionOptions } from './io.js';
+import { runRecord } from '../api/record.js';
+import { outputFormat, renderShader, renderTiled, writeFloatImage, writeImage } from '../api/render.js';
+import { CliError, shaderKind, startSession } from '../headless/session.js';
+import { LoopLimitFallback, refuseCutLoops } from '../api/loop-limit.js';
+import { DEFAULT_JOBS, runTest } from '../runner/corpus.js';
+import { DEFAULT_SIZE as TEST_SIZE } from '../runner/manifest.js';
+import { UsageError, VIEW_FLAGS, dateLabel, readNumber, readViewOptions } from '../api/view-options.js';
+import { frameProgress, io, oneShader, sayNotes, sessionOptions } from '../api/io.js';
 import { argumentError, joinDashValues } from './arguments.js';
 import { MAX_PIXELS, MAX_SIZE } from '../shared/canvas-limits.js';
-import { DEFAULT_SOUND_SECONDS, MAX_SOUND_SECONDS, SOUND_SAMPLE_RATE, renderSound, wavSummary, writeWav } from './sound.js';
+import { DEFAULT_SOUND_SECONDS, MAX_SOUND_SECONDS, SOUND_SAMPLE_RATE, renderSound, wavSummary, writeWav } from '../api/sound.js';
 
 const NAME = 'shaderproof';
 

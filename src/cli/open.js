@@ -1,14 +1,14 @@
 // `shaderproof open SHADER`: the page served on a file from anywhere on disk. It prints the URL
 // and opens nothing; saving the file tells every page that has it open (page-server.js's
-// /__events), and the page recompiles it in place (src/page/main.js), as `npm run dev` does for
+// /__events), and the page recompiles it in place (src/studio/main.js), as `npm run dev` does for
 // the shaders in this repository. Runs until Ctrl-C (or SIGTERM).
 
 import path from 'node:path';
-import { builtPage, startPageServer } from '../engine/page-server.js';
-import { io, oneShader } from './io.js';
-import { CliError, shaderKind } from './session.js';
-import { mediaFolders } from './media.js';
-import { readMediaOptions, readNumber } from './view-options.js';
+import { builtPage, startPageServer } from '../headless/page-server.js';
+import { io, oneShader } from '../api/io.js';
+import { CliError, shaderKind } from '../headless/session.js';
+import { mediaFolders } from '../api/media.js';
+import { readMediaOptions, readNumber } from '../api/view-options.js';
 
 /**
  * @param {{values: Record<string, any>, positionals: string[]}} args

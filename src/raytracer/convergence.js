@@ -1,4 +1,4 @@
-// The raytracer's "Converge when still", plugged into the engine's convergence (src/page/app/
+// The raytracer's "Converge when still", plugged into the engine's convergence (src/player/app/
 // converge.js use()): which shaders have a progressive form (the raytracer, or an edit that keeps
 // its camera and radiance functions), the form itself (progressive.js), and the sample count it
 // draws over the picture while it converges. The interactive page plugs it in at its start
@@ -6,7 +6,7 @@
 
 import { MAX_SAMPLES, missingRaytracerFunctions, progressiveTabs } from './progressive.js';
 
-/** @type {import('../page/app/converge.js').ProgressiveForm} */
+/** @type {import('../player/app/converge.js').ProgressiveForm} */
 export const raytracerConvergence = {
   name: 'the raytracer',
   file: 'shaders/raytrace.glsl',

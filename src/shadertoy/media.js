@@ -1,6 +1,6 @@
 // The site's media library as data: which files a channel's input names, and the site's binary
-// volume format. Pure: the page (src/page/inputs/media-library.js) fetches and decodes, the
-// render worker (src/page/gpu/channels/media-textures.js) uploads, the command line (src/cli/media.js)
+// volume format. Pure: the page (src/player/inputs/media-library.js) fetches and decodes, the
+// render worker (src/player/gpu/channels/media-textures.js) uploads, the command line (src/api/media.js)
 // finds and downloads the same files by these paths.
 //
 // What the site's player does with each kind (https://www.shadertoy.com/js/effect.js,
@@ -19,7 +19,7 @@
 /**
  * How the page says that a channel's media needs a media folder, and that a file is not in the
  * one it has: the command line, which knows what --media and --fetch-media were given, says the
- * same in its own words (src/cli/media.js commandLineWords).
+ * same in its own words (src/api/media.js commandLineWords).
  */
 export const MEDIA_WORDS = Object.freeze({
   noFolder: "needs the site's media: give a media folder (shaderproof --media DIR, or the page's ?media=URL)",
@@ -93,11 +93,11 @@ export function cubeFaceFiles(first) {
   return [first, ...[1, 2, 3, 4, 5].map((i) => `${stem}_${i}${ext}`)];
 }
 
-/** The kinds the media library holds that are still: uploaded once (src/page/gpu/channels/media-textures.js). */
+/** The kinds the media library holds that are still: uploaded once (src/player/gpu/channels/media-textures.js). */
 export const LIBRARY_KINDS = Object.freeze(['texture', 'cubemap', 'volume']);
 /**
  * The kinds it holds that move: a video's frame and music's 512 × 2 texture at each frame's iTime
- * (src/page/inputs/media-input.js). A music stream (SoundCloud) and the devices are not files.
+ * (src/player/inputs/media-input.js). A music stream (SoundCloud) and the devices are not files.
  */
 export const MOVING_LIBRARY_KINDS = Object.freeze(['video', 'music']);
 

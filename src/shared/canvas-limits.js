@@ -1,4 +1,4 @@
-// The largest drawing the page makes at once, a fact that the page (src/page/app/canvas-size.js:
+// The largest drawing the page makes at once, a fact that the page (src/player/app/canvas-size.js:
 // ?size= is clamped to it, with a note: src/shared/url-params.js) and the command line (--size
 // past it is refused, and --tile offered) both state; and the resolution scale's range.
 

@@ -1,6 +1,6 @@
 // The discrete Fourier transform, once: an in-place iterative radix-2 FFT, for the page's
-// spectrum texture (src/page/inputs/spectrum.js: iChannel's FFT row) and for `shaderproof
-// test`'s sound outline (src/cli/test/sound-compare.js). The formula is the textbook one
+// spectrum texture (src/player/inputs/spectrum.js: iChannel's FFT row) and for `shaderproof
+// test`'s sound outline (src/runner/sound-compare.js). The formula is the textbook one
 // (Cooley–Tukey, bit-reversed order first, then butterflies of growing size).
 
 /**

@@ -1,5 +1,5 @@
-// What a shader went without, each thing said once: the page's note (src/page/ui/notices.js) and
-// the command line's warnings and test lines (src/cli/io.js, src/cli/test/case.js) say it in the
+// What a shader went without, each thing said once: the page's note (src/studio/ui/notices.js) and
+// the command line's warnings and test lines (src/api/io.js, src/runner/case.js) say it in the
 // same words.
 
 /** "A", "A and B", "A, B and C". @param {string[]} names */

@@ -1,6 +1,6 @@
 // How long the page waits before it says that something is wrong, in one place. A test harness
 // shortens them (it must not wait out a production timeout) by defining
-// window.__raytracerTimeouts before the page's scripts run (tests/harness/page.js); the page
+// window.__raytracerTimeouts before the page's scripts run (tests/support/page.js); the page
 // never reads them from its URL, so a link cannot change them. tests/timeouts.test.js holds the
 // production values.
 
@@ -13,7 +13,7 @@
  * @property {number} hangMs a band of a frame unfinished for this long: the shader may never
  *   finish (app/render-client.js). A band is sized to take ~0.1 s (gpu/bands/band-planner.js).
  *   The page's watchdog counts the wall clock; the command line's counts the same limits in the
- *   GPU process's CPU time (src/engine/band-watch.js), and does not fail on the page's word
+ *   GPU process's CPU time (src/headless/watchdog/band-watch.js), and does not fail on the page's word
  * @property {number} compileHangMs a program's first draw, in which SwiftShader compiles it,
  *   unfinished for this long: it may never finish (the raytracer's heaviest scene compiles in
  *   3.5 s; a large shader from Shadertoy took ~15 s on this machine)

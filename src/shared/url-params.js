@@ -19,7 +19,7 @@
 //   &iChannel0=URL   an image for iChannel0 (likewise iChannel1..3), same origin as the page
 //   &media=URL       a folder of the site's media, laid out as its paths (URL/a/<hash>.jpg for
 //                    /media/a/<hash>.jpg), same origin as the page: the textures, cubemaps and
-//                    volumes a Shadertoy JSON's channels name (src/page/inputs/media-library.js)
+//                    volumes a Shadertoy JSON's channels name (src/player/inputs/media-library.js)
 //   &NAME=value      any shader control; vectors as comma lists (LIGHT_POSITION=1,2,3)
 //
 // A key given more than once is read once, from its last occurrence, and the others are warned

@@ -13,10 +13,10 @@
 
 import fs from 'node:fs';
 import path from 'node:path';
-import { REPO_ROOT, SHADER_FILE } from '../harness/config.js';
-import { rendererLabel } from '../../src/engine/browser.js';
-import { withHarness } from '../harness/setup.js';
-import { renderRawShader } from '../harness/raw-webgl.js';
+import { REPO_ROOT, SHADER_FILE } from '../support/config.js';
+import { rendererLabel } from '../../src/headless/browser.js';
+import { withHarness } from '../support/setup.js';
+import { renderRawShader } from '../support/raw-webgl/raw-webgl.js';
 import { EXTRA_SAMPLES_VIEW, countExtraSamplePixels } from '../../src/raytracer/extra-samples.js';
 import { replaceMarkedSection } from '../scripts/readme-section.js';
 import { measureVariants } from './measure.js';

@@ -1,12 +1,12 @@
 // The floor under `shaderproof render`'s start, for npm run bench:cli: this Chromium launched
 // headless by puppeteer-core with the command line's own flags for a renderer (argument 1:
-// swiftshader, the default, or llvmpipe; src/engine/renderers.js), a blank page opened, and
+// swiftshader, the default, or llvmpipe; src/headless/renderers.js), a blank page opened, and
 // everything closed; run as a new process, as the command is.
 import fs from 'node:fs';
 import os from 'node:os';
 import path from 'node:path';
-import { launchBrowser } from '../../src/engine/browser.js';
-import { LLVMPIPE_ARGS, SWIFTSHADER_ARGS, findMesa, llvmpipeEnv } from '../../src/engine/renderers.js';
+import { launchBrowser } from '../../src/headless/browser.js';
+import { LLVMPIPE_ARGS, SWIFTSHADER_ARGS, findMesa, llvmpipeEnv } from '../../src/headless/renderers.js';
 
 const renderer = process.argv[2] ?? 'swiftshader';
 if (!['swiftshader', 'llvmpipe'].includes(renderer)) throw new Error(`baseline-launch.js: no floor for renderer "${renderer}"`);

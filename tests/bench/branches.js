@@ -18,8 +18,8 @@ import { composeImageShader, hostControlBlock } from '../../src/shadertoy/header
 import { controlDefaults, parseControls } from '../../src/shadertoy/controls.js';
 import { median } from '../../src/shared/stats.js';
 import path from 'node:path';
-import { REPO_ROOT, SHADER_FILE } from '../harness/config.js';
-import { rendererLabel } from '../../src/engine/browser.js';
+import { REPO_ROOT, SHADER_FILE } from '../support/config.js';
+import { rendererLabel } from '../../src/headless/browser.js';
 import { replaceMarkedSection } from '../scripts/readme-section.js';
 import { CPU_RENDERERS, RENDERER_TITLES, renderersAsked, withRenderers } from './renderer-set.js';
 import { timeShadersOn } from './timer.js';

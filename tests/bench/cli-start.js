@@ -1,6 +1,6 @@
 // What `shaderproof render` costs from the command's start, on each CPU renderer (the command
 // line's --renderer): each run a new process, as a person runs it, with SHADERPROOF_TIMINGS=1 so
-// that it says when each phase ended (src/cli/session.js).
+// that it says when each phase ended (src/headless/session.js).
 //
 // - A 320×180 start (issue 26: at most 3 s on this 2-core machine), phase by phase, beside the
 //   floor (issue 39: a render within 0.8 s of it): a new Node process that launches this
@@ -26,7 +26,7 @@ import os from 'node:os';
 import path from 'node:path';
 import { promisify } from 'node:util';
 import { median } from '../../src/shared/stats.js';
-import { REPO_ROOT, SHADER_FILE } from '../harness/config.js';
+import { REPO_ROOT, SHADER_FILE } from '../support/config.js';
 import { RENDERER_TITLES, renderersAsked } from './renderer-set.js';
 
 const run = promisify(execFile);

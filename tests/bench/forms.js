@@ -17,8 +17,8 @@
 
 import fs from 'node:fs';
 import path from 'node:path';
-import { REPO_ROOT, SHADER_FILE } from '../harness/config.js';
-import { rendererLabel } from '../../src/engine/browser.js';
+import { REPO_ROOT, SHADER_FILE } from '../support/config.js';
+import { rendererLabel } from '../../src/headless/browser.js';
 import { replaceMarkedSection } from '../scripts/readme-section.js';
 import { measureScript, pairedRatio } from './measure.js';
 import { CPU_RENDERERS, RENDERER_TITLES } from './renderer-set.js';

@@ -5,7 +5,7 @@
 
 import { imageError } from '../../src/reference/error.js';
 import { median } from '../../src/shared/stats.js';
-import { renderReferenceParallel } from '../harness/reference-threads.js';
+import { renderReferenceParallel } from '../support/reference/reference-threads.js';
 import { timeShadersOn } from './timer.js';
 import { renderersAsked, withRenderers } from './renderer-set.js';
 

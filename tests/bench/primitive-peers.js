@@ -1,7 +1,7 @@
 // The iq-style peers of the intersectors (tests/bench/peers/iq/: the closed forms a Shadertoy
 // author writes from Inigo Quilez's published formulas) and how any set of intersectors is judged
 // on the project's hard cases (tests/intersector-cases/) with the project's own verdict
-// (judge() in tests/helpers/intersector-kinds.js). Shared by the per-primitive benchmark (primitives.js)
+// (judge() in tests/support/tables/intersector-kinds.js). Shared by the per-primitive benchmark (primitives.js)
 // and its test (tests/primitive-peers.test.js).
 //
 // A peer file is appended after shaders/raytrace.glsl; its #defines rename the project's calls in
@@ -10,7 +10,7 @@
 
 import fs from 'node:fs';
 import { INTERSECTOR_CASES } from '../intersector-cases/index.js';
-import { KINDS, f32, judge, reference, runCases, shaderSource } from '../helpers/intersector-kinds.js';
+import { KINDS, f32, judge, reference, runCases, shaderSource } from '../support/tables/intersector-kinds.js';
 
 /** The primitives, in the order of the table (the kinds of intersector-kinds.js). */
 export const PRIMITIVE_KINDS = Object.keys(KINDS);

@@ -1,17 +1,17 @@
 // The renderers a benchmark measures, and a browser for each. Without a choice a benchmark
-// measures both CPU renderers, SwiftShader and llvmpipe (src/engine/renderers.js), side by side:
+// measures both CPU renderers, SwiftShader and llvmpipe (src/headless/renderers.js), side by side:
 // one Chromium each on one page server, so that a script can time the same shaders on both,
 // interleaved round by round (timer.js), and a machine that slows down moves both alike.
 //
 //   --renderer NAME   that renderer alone (swiftshader, llvmpipe or gpu)
 //   $SHADERPROOF_RENDERER, where no --renderer is given: the same
 
-import { startBrowser } from '../../src/engine/browser.js';
-import { RENDERER_ENV } from '../../src/engine/renderers.js';
-import { startPageServer } from '../harness/page-server.js';
-import { CLOSE_TIMEOUT_MS, withTimeout } from '../../src/engine/watch.js';
+import { startBrowser } from '../../src/headless/browser.js';
+import { RENDERER_ENV } from '../../src/headless/renderers.js';
+import { startPageServer } from '../support/page-server.js';
+import { CLOSE_TIMEOUT_MS, withTimeout } from '../../src/headless/watch.js';
 
-/** @typedef {import('../../src/engine/renderers.js').RendererName} RendererName */
+/** @typedef {import('../../src/headless/renderers.js').RendererName} RendererName */
 
 /** What a benchmark measures when it is not told: the two CPU renderers, side by side. */
 export const CPU_RENDERERS = /** @type {readonly RendererName[]} */ (Object.freeze(['swiftshader', 'llvmpipe']));

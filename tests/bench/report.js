@@ -3,7 +3,7 @@
 // project against its peers, the torus scene against the cone, adaptive against uniform); and
 // each renderer's targets. Pure text from results.json's contents (results-file.js).
 
-import { rendererLabel } from '../../src/engine/browser.js';
+import { rendererLabel } from '../../src/headless/browser.js';
 import { paretoFront } from './chart.js';
 import { RENDERER_TITLES } from './renderer-set.js';
 import {

@@ -35,10 +35,10 @@
 import fs from 'node:fs';
 import os from 'node:os';
 import path from 'node:path';
-import { REPO_ROOT } from '../harness/config.js';
+import { REPO_ROOT } from '../support/config.js';
 import { replaceMarkedSection } from '../scripts/readme-section.js';
 import { measureVariantsOn } from './measure.js';
-import { renderRawShader } from '../harness/raw-webgl.js';
+import { renderRawShader } from '../support/raw-webgl/raw-webgl.js';
 import { countExtraSamplePixels } from '../../src/raytracer/extra-samples.js';
 import { chartSvg } from './chart.js';
 import { ALL_VARIANTS, extraSamplesView, source, uniformValues } from './variants.js';

@@ -1,9 +1,9 @@
 // The benchmark's timer: complete fragment shaders timed in one raw WebGL2 page
-// (tests/harness/raw-webgl.js), interleaved, on one renderer or several. Used by measure.js
+// (tests/support/raw-webgl/raw-webgl.js), interleaved, on one renderer or several. Used by measure.js
 // (run.js, ablation.js, apart.js), branches.js and primitives.js.
 
-import { decodeRgba } from '../harness/page.js';
-import { openRawPage } from '../harness/raw-webgl.js';
+import { decodeRgba } from '../support/page.js';
+import { openRawPage } from '../support/raw-webgl/raw-webgl.js';
 
 /**
  * A shader's outcome in timeShaders: its `frames` times in ms and its last frame (RGBA8, rows top

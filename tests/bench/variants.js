@@ -10,7 +10,7 @@ import fs from 'node:fs';
 import path from 'node:path';
 import { composeImageShader, hostControlBlock } from '../../src/shadertoy/header.js';
 import { parseControls } from '../../src/shadertoy/controls.js';
-import { REPO_ROOT, SHADER_FILE } from '../harness/config.js';
+import { REPO_ROOT, SHADER_FILE } from '../support/config.js';
 import { EXTRA_SAMPLES_VIEW } from '../../src/raytracer/extra-samples.js';
 import { composePeer } from './peers/compose-peer.js';
 import {

@@ -1,4 +1,4 @@
-// The accuracy table: every hard view (tests/helpers/hard-views.js) and each scene's default view, rendered by the
+// The accuracy table: every hard view (tests/support/tables/hard-views.js) and each scene's default view, rendered by the
 // page in headless Chromium and compared with the float64 reference twice: with the same rays
 // (arithmetic error alone) and converged (64 jittered samples per pixel, texture point-sampled:
 // the total error, aliasing included). Each view is measured at one sample per pixel and with
@@ -11,13 +11,13 @@
 import fs from 'node:fs';
 import path from 'node:path';
 import { imageError } from '../../src/reference/error.js';
-import { REPO_ROOT, SHADER_FILE } from '../harness/config.js';
-import { renderReferenceParallel } from '../harness/reference-threads.js';
-import { measureSameRay } from '../harness/same-ray.js';
-import { rendererLabel } from '../../src/engine/browser.js';
-import { withHarness } from '../harness/setup.js';
-import { HARD_VIEWS, referenceView } from '../helpers/hard-views.js';
-import { DEFAULT_SIZE, viewSize } from '../helpers/views.js';
+import { REPO_ROOT, SHADER_FILE } from '../support/config.js';
+import { renderReferenceParallel } from '../support/reference/reference-threads.js';
+import { measureSameRay } from '../support/reference/same-ray.js';
+import { rendererLabel } from '../../src/headless/browser.js';
+import { withHarness } from '../support/setup.js';
+import { HARD_VIEWS, referenceView } from '../support/tables/hard-views.js';
+import { DEFAULT_SIZE, viewSize } from '../support/tables/views.js';
 import { replaceMarkedSection } from './readme-section.js';
 
 const CONVERGED_SAMPLES_PER_AXIS = 8;

@@ -11,10 +11,10 @@
 //   npm run picture        writes all four
 
 import path from 'node:path';
-import { REPO_ROOT, rel } from '../harness/config.js';
-import { assertNotBlank, writePng } from '../harness/images.js';
-import { harnessContext, openPage, renderView } from '../harness/page.js';
-import { withHarness } from '../harness/setup.js';
+import { REPO_ROOT, rel } from '../support/config.js';
+import { assertNotBlank, writePng } from '../support/images.js';
+import { harnessContext, openPage, renderView } from '../support/page.js';
+import { withHarness } from '../support/setup.js';
 
 const VIEW = { name: 'readme', params: { time: 0 }, size: [960, 540] };
 const DEBUG_VIEW_SIZE = [320, 180];

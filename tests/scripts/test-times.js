@@ -13,7 +13,7 @@ import { spawnSync } from 'node:child_process';
 import fs from 'node:fs';
 import os from 'node:os';
 import path from 'node:path';
-import { OUTPUT_DIR, REPO_ROOT } from '../harness/config.js';
+import { OUTPUT_DIR, REPO_ROOT } from '../support/config.js';
 import { replaceMarkedSection } from './readme-section.js';
 
 const TIMES_DOC = path.join(REPO_ROOT, 'docs', 'testing.md');

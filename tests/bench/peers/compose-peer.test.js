@@ -5,10 +5,10 @@ import fs from 'node:fs';
 import { afterAll, describe, expect, test } from 'vitest';
 import { composeImageShader, hostControlBlock } from '../../../src/shadertoy/header.js';
 import { parseControls } from '../../../src/shadertoy/controls.js';
-import { SHADER_FILE } from '../../harness/config.js';
-import { assertNotBlank, differingPixels } from '../../harness/images.js';
-import { disconnect } from '../../harness/page.js';
-import { mapShaderLog, renderRawShader } from '../../harness/raw-webgl.js';
+import { SHADER_FILE } from '../../support/config.js';
+import { assertNotBlank, differingPixels } from '../../support/images.js';
+import { disconnect } from '../../support/page.js';
+import { mapShaderLog, renderRawShader } from '../../support/raw-webgl/raw-webgl.js';
 import { ComposePeerError, composePeer, replacedNames, scanTopLevel } from './compose-peer.js';
 
 // The peers, and the project's own variants composed the same way (savings off, one trace site).
