@@ -121,8 +121,15 @@ export default [
     files: ['src/cli/**/*.js', 'bin/**/*.js'],
     rules: restricted(KEEP_OUT.player, KEEP_OUT.studio, KEEP_OUT.raytracer, KEEP_OUT.reference),
   },
+  // the package's entry (the Node API: test() runs the runner) sits on top, beside the command line
+  {
+    files: ['src/api/index.js'],
+    rules: restricted(KEEP_OUT.player, KEEP_OUT.studio, KEEP_OUT.raytracer, KEEP_OUT.reference, KEEP_OUT.cli),
+  },
 
   // Tests, scripts, the benchmark and configs run in Node; functions passed to page.evaluate()
   // run in the page, so the browser's globals are known there too.
   { files: ['tests/**/*.js', '*.js'], languageOptions: { globals: { ...globals.node, ...globals.browser } } },
+  // the docs' examples are a user's Node scripts (docs/api.md)
+  { files: ['docs/**/*.mjs'], languageOptions: { globals: globals.node } },
 ];

@@ -85,7 +85,7 @@ beforeAll(async () => {
   fs.writeFileSync(path.join(folder, 'package.json'), JSON.stringify({ name: 'my-shaders', private: true }));
   // from npm's cache where it has the packages (npm ci filled it), else the registry
   await run('npm', ['install', '--prefer-offline', '--no-audit', '--no-fund', tarball], { cwd: folder });
-  bin = path.join(folder, 'node_modules', 'shadertoy-raytracer', 'bin', 'shaderproof.js');
+  bin = path.join(folder, 'node_modules', 'shaderproof', 'bin', 'shaderproof.js');
   expect(fs.existsSync(bin), 'the tarball installs bin/shaderproof.js').toBe(true);
 }, 180_000);
 

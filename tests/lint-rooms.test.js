@@ -155,6 +155,7 @@ describe('the lint rules by room keep each room to its own', () => {
     ['src/api/render.js', '../cli/main.js', /built on the API/],
     ['src/runner/case.js', '../cli/arguments.js', /built on the API/],
     ['src/api/sound.js', '../runner/case.js', /runner is built on the API/],
+    ['src/api/index.js', '../cli/main.js', /built on the API/],
     ['src/cli/main.js', '../studio/wiring.js', /studio/],
     // what every room shares imports no room
     ['src/shared/pixels.js', '../player/app/app.js', /player runs in the browser/],
@@ -173,6 +174,7 @@ describe('the lint rules by room keep each room to its own', () => {
     ['src/studio/wiring.js', '../player/app/app.js'],
     ['src/runner/case.js', '../api/render.js'],
     ['src/cli/main.js', '../runner/corpus.js'],
+    ['src/api/index.js', '../runner/corpus.js'],
     ['src/api/render.js', '../headless/session.js'],
     ['src/player/gpu/renderer.js', '../../shadertoy/header.js'],
   ])('%s may import %s', async (file, module) => {

@@ -1,6 +1,7 @@
 // What `npm pack` ships (issue 45, item 7): package.json's "files" lists each thing the package
 // needs, and nothing else gets in. The command line's modules are what bin/shaderproof.js imports,
-// followed file by file; the page it serves is the built page's HTML, its bundles and the example
+// and the Node API's what src/api/index.js imports, followed file by file, with the API's
+// declarations (types/, made by prepack); the page it serves is the built page's HTML, its bundles and the example
 // shaders it serves by URL. Whatever else lies in dist/ (vite copies all of public/ there: the
 // README's pictures, the tests' ignored public/test-*/ folders) stays out, so the test plants
 // such files before it packs.
@@ -47,8 +48,10 @@ const filesUnder = (dir, keep = () => true) =>
     .filter((entry) => entry.isFile() && keep(entry.name))
     .map((entry) => path.relative(REPO_ROOT, path.join(entry.parentPath, entry.name)).split(path.sep).join('/'));
 
-test('npm pack ships the command line, the built page and its example shaders, and nothing else', async () => {
+test('npm pack ships the command line, the Node API and its types, the built page and its example shaders, and nothing else', async () => {
   const dist = await builtPage();
+  // the API's declarations, as prepack makes them (types/, git-ignored)
+  await run('npm', ['run', '--silent', 'build:types'], { cwd: REPO_ROOT, timeout: 120_000 });
   // what a test run or a README picture leaves in dist/ (public/ is copied there whole)
   const planted = [path.join(dist, 'test-pack-probe', 'probe.glsl'), path.join(dist, 'pack-probe.png')];
   for (const file of planted) {
@@ -65,10 +68,13 @@ test('npm pack ships the command line, the built page and its example shaders, a
     fs.rmSync(path.join(dist, 'pack-probe.png'), { force: true });
   }
   const expected = [
+    'CHANGELOG.md',
     'LICENSE',
     'README.md',
     'package.json',
     ...moduleGraph('bin/shaderproof.js'),
+    ...moduleGraph('src/api/index.js'),
+    ...filesUnder('types', (name) => name.endsWith('.d.ts')),
     'dist/index.html',
     'dist/engine.html',
     ...filesUnder('dist/assets'),
@@ -79,5 +85,6 @@ test('npm pack ships the command line, the built page and its example shaders, a
     ...filesUnder('dist/shaders', (name) => name.endsWith('.glsl')),
   ];
   expect(expected).toContain('src/headless/page-server.js'); // the graph was followed
+  expect(expected).toContain('types/src/api/index.d.ts'); // package.json's "types"
   expect(packed.sort()).toEqual([...new Set(expected)].sort());
 });

@@ -3,7 +3,7 @@
 
 import { RENDERER_ENV, chooseRenderer } from '../headless/renderers.js';
 import { sayOnce } from '../shared/said-once.js';
-import { CliError } from '../headless/session.js';
+import { ShaderproofError } from '../headless/session.js';
 import { watchdogFor } from '../headless/watchdog/limits.js';
 import { UsageError, readNumber } from './view-options.js';
 
@@ -24,20 +24,20 @@ export const io = {
  * claims what did not happen, nor, then, what it drew in its place.
  * @param {string} file
  * @param {import('../headless/view.js').PageNote[]} notes
- * @param {{strict?: boolean}} [options]
+ * @param {{strict?: boolean, say?: (line: string) => void}} [options] say: where the warnings go
  */
-export function sayNotes(file, notes, { strict = false } = {}) {
+export function sayNotes(file, notes, { strict = false, say = io.err } = {}) {
   const missing = sayOnce(notes.filter((note) => note.kind === 'missing').flatMap((note) => note.lines));
   if (strict && missing.length) {
     // nothing was drawn, so nothing was drawn black ("the channel is", "both channels are", ...)
     const what = missing[0].replace(/; (the channel is|both channels are|all \d+ channels are) black.*$/, '');
-    throw new CliError(
+    throw new ShaderproofError(
       `${file}: --strict: nothing written, as it goes without ${missing.length === 1 ? what : `${missing.length} of what it asks for, the first: ${what}`}`,
     );
   }
-  for (const line of missing) io.err(`warning: ${file}: ${line}`);
+  for (const line of missing) say(`warning: ${file}: ${line}`);
   for (const { title, lines } of notes.filter((note) => note.kind !== 'missing'))
-    for (const line of lines) io.err(`warning: ${file}: ${title}: ${line}`);
+    for (const line of lines) say(`warning: ${file}: ${title}: ${line}`);
 }
 
 /**

@@ -11,7 +11,7 @@
 //               of `test` fails so, its reference unwritten.
 // A pass whose guarded form could not be made is unchecked, and treated as cut.
 
-import { CliError } from '../headless/session.js';
+import { ShaderproofError } from '../headless/session.js';
 
 /** @typedef {'fallback' | 'fail'} LoopLimitMode */
 
@@ -19,7 +19,7 @@ import { CliError } from '../headless/session.js';
 const limitWords = (/** @type {number} */ trips) => `each pixel's loops after ${trips.toLocaleString('en-US')} trips in all`;
 
 /** The verb drew with llvmpipe by default, and a loop was cut: it is run again with SwiftShader. */
-export class LoopLimitFallback extends CliError {
+export class LoopLimitFallback extends ShaderproofError {
   /** @param {string} file @param {string[]} what each pass cut or unchecked, in a few words @param {number} limit */
   constructor(file, what, limit) {
     super(`${file}: ${what.join('; ')} (it ends ${limitWords(limit)}): drawn with SwiftShader instead`);
@@ -60,7 +60,7 @@ function loopLines(report) {
 /**
  * After a verb has drawn, before it writes anything: what the limit cut, as `mode` says.
  * 'fallback' throws LoopLimitFallback; 'fail' returns the lines (a case fails with them; a
- * verb throws failLine's CliError).
+ * verb throws failLine's ShaderproofError).
  * @param {import('../headless/session.js').Session} session
  * @param {string} file
  * @param {LoopLimitMode} mode
@@ -81,5 +81,5 @@ export async function judgeLoops(session, file, mode) {
  */
 export async function refuseCutLoops(session, file) {
   const [line] = await judgeLoops(session, file, session.loopLimit);
-  if (line) throw new CliError(`${file}: ${line}; nothing written`);
+  if (line) throw new ShaderproofError(`${file}: ${line}; nothing written`);
 }

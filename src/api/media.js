@@ -28,7 +28,7 @@ import {
   parseVolume,
 } from '../shadertoy/media.js';
 import { UsageError } from './view-options.js';
-import { CliError } from '../headless/session.js';
+import { ShaderproofError } from '../headless/session.js';
 
 /** Where the site's media is downloaded from: its own origin, or SHADERPROOF_MEDIA_ORIGIN (a mirror, a test's server). */
 const mediaOrigin = () => process.env.SHADERPROOF_MEDIA_ORIGIN || 'https://www.shadertoy.com';
@@ -200,12 +200,12 @@ const NEW_INPUT_SAMPLER = {
 function libraryKindOnDisk(file, index) {
   const name = path.basename(file);
   if (/\.bin$/i.test(file)) {
-    if (!fs.existsSync(file)) throw new CliError(`${file}: no such file`);
+    if (!fs.existsSync(file)) throw new ShaderproofError(`${file}: no such file`);
     try {
       const bytes = fs.readFileSync(file);
       parseVolume(bytes.buffer.slice(bytes.byteOffset, bytes.byteOffset + bytes.byteLength));
     } catch (error) {
-      throw new CliError(`${file}: ${error.message} (a volume is the site's .bin format)`);
+      throw new ShaderproofError(`${file}: ${error.message} (a volume is the site's .bin format)`);
     }
     return { kind: 'volume', files: [name] };
   }
@@ -246,7 +246,7 @@ export function withLibraryChannels(file, channels) {
   try {
     loaded = json ? fromShadertoyJson(text) : { model: singlePass(text), info: null };
   } catch (error) {
-    throw new CliError(`${file}: ${error.message}`);
+    throw new ShaderproofError(`${file}: ${error.message}`);
   }
   const image = /** @type {import('../shadertoy/multipass.js').Pass} */ (loaded.model.passes.find((p) => p.kind === 'image'));
   // a channel the shader's JSON fills already: the file given would go unread

@@ -12,7 +12,7 @@ import { writePng, writeWhole } from '../headless/png.js';
 import { fromBase64 } from '../shared/pixels.js';
 import { io, progressBar } from './io.js';
 import { commandLineWords, mediaFolders, withLibraryChannels } from './media.js';
-import { CliError, shaderKind } from '../headless/session.js';
+import { ShaderproofError, shaderKind } from '../headless/session.js';
 import { UsageError, viewQuery } from './view-options.js';
 
 /**
@@ -28,28 +28,29 @@ const CONVERGE_CONTROLS = { SHOW_SAMPLE_COUNT: 0 };
  * @param {import('../headless/session.js').Session} session
  * @param {string} file
  * @param {import('./view-options.js').ViewOptions} view
- * @param {{converge?: number | null, progress?: boolean}} [options] converge: N progressive
- *   samples of the raytracer; progress: a bar on a terminal for long work
+ * @param {{converge?: number | null, progress?: boolean, say?: (line: string) => void}} [options]
+ *   converge: N progressive samples of the raytracer; progress: a bar on a terminal for long
+ *   work; say: hears what is fetched for the shader (media.js)
  * @returns {Promise<{width: number, height: number, data: Uint8Array, info: any,
  *   notes: import('../headless/view.js').PageNote[]}>}
  */
-export async function renderShader(session, file, view, { converge = null, progress = false } = {}) {
+export async function renderShader(session, file, view, { converge = null, progress = false, say = io.err } = {}) {
   shaderKind(file);
   const mount = (f) => {
-    if (!fs.existsSync(f)) throw new CliError(`${f}: no such file`);
+    if (!fs.existsSync(f)) throw new ShaderproofError(`${f}: no such file`);
     return session.server.mount(f);
   };
   // a volume or a cubemap in --channelN: the shader as the JSON whose Image pass reads it (media.js)
   const wrapped = withLibraryChannels(file, view.channels);
   const shaderUrl = wrapped ? session.server.mountText(wrapped.json, path.basename(file)) : session.server.mount(path.resolve(file));
-  const folders = [...(await mediaFolders(file, view.media, io.err)), ...(wrapped?.mounts ?? [])];
+  const folders = [...(await mediaFolders(file, view.media, say)), ...(wrapped?.mounts ?? [])];
   const drawnView = wrapped ? { ...view, channels: wrapped.rest } : view;
   const query = viewQuery(shaderUrl, drawnView, mount, folders.length ? session.server.mountFolders(folders) : null);
   let image;
   try {
     image = await session.draw(query);
   } catch (error) {
-    if (error instanceof CliError)
+    if (error instanceof ShaderproofError)
       error.message = error.hung ? `${file}: ${error.message}` : userMessage(error.message.replaceAll(shaderUrl, file), file);
     throw error;
   }
@@ -84,7 +85,7 @@ export async function renderShader(session, file, view, { converge = null, progr
   } catch (error) {
     const what = converge !== null ? `--converge ${converge}` : `--frame ${view.frame}`;
     const said = error.hung ? hungLine(session.limits, session.clock().measure) : error.message.split('\n')[0];
-    throw Object.assign(new CliError(`${what}: ${file}: ${said}`), { hung: Boolean(error.hung) });
+    throw Object.assign(new ShaderproofError(`${what}: ${file}: ${said}`), { hung: Boolean(error.hung) });
   } finally {
     bar.end();
   }
@@ -103,14 +104,15 @@ const TILED_PAGE_SIDE = 2048;
  * @param {string} file
  * @param {import('./view-options.js').ViewOptions} view
  * @param {number} tile
+ * @param {{say?: (line: string) => void}} [options]
  */
-export async function renderTiled(session, file, view, tile) {
+export async function renderTiled(session, file, view, tile, { say = io.err } = {}) {
   const { width, height } = view.size;
   const fits = width <= TILED_PAGE_SIDE && height <= TILED_PAGE_SIDE;
   const scale = fits ? 1 : TILED_PAGE_SIDE / Math.max(width, height);
   const pageSize = { width: Math.max(1, Math.round(width * scale)), height: Math.max(1, Math.round(height * scale)) };
   const mouse = view.mouse && view.mouse.map((v, i) => v * (i % 2 === 0 ? pageSize.width / width : pageSize.height / height));
-  const first = await renderShader(session, file, { ...view, size: pageSize, mouse });
+  const first = await renderShader(session, file, { ...view, size: pageSize, mouse }, { say });
   const client = /** @type {import('../headless/client.js').EngineClient} */ (session.client());
   const data = new Uint8Array(width * height * 4);
   for (let y = 0; y < height; y += tile)
@@ -118,7 +120,7 @@ export async function renderTiled(session, file, view, tile) {
       const w = Math.min(tile, width - x);
       const h = Math.min(tile, height - y);
       const shot = await client.captureTile({ x, y, width: w, height: h, fullWidth: width, fullHeight: height }).catch((error) => {
-        throw new CliError(`--tile: ${path.basename(file)}: ${error.message.split('\n')[0]}`);
+        throw new ShaderproofError(`--tile: ${path.basename(file)}: ${error.message.split('\n')[0]}`);
       });
       const pixels = fromBase64(shot.data);
       // the tile's rows come top to bottom; its top row is the picture's row height - (y + h)

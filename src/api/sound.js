@@ -8,7 +8,7 @@ import { fromShadertoyJson } from '../shadertoy/multipass-json.js';
 import { soundPass } from '../shadertoy/multipass.js';
 import { encodeWav } from '../shared/wav.js';
 import { renderShader } from './render.js';
-import { CliError } from '../headless/session.js';
+import { ShaderproofError } from '../headless/session.js';
 
 /** The site's sample rate (src/shadertoy/sound.js SAMPLE_RATE: the package ships src/cli, not src/shadertoy). */
 export const SOUND_SAMPLE_RATE = 44_100;
@@ -33,8 +33,8 @@ export async function renderSound(session, file, view, { time, duration }) {
   const sound = await client.renderSound({ time, duration }).catch((error) => {
     const message = error.message.split('\n')[0];
     if (/no Sound tab/.test(message))
-      throw new CliError(`${file}: has no Sound tab (mainSound), so no .wav; give a shader with one, or -o OUT.png for a picture`);
-    throw new CliError(`${file}: its sound: ${message}`);
+      throw new ShaderproofError(`${file}: has no Sound tab (mainSound), so no .wav; give a shader with one, or -o OUT.png for a picture`);
+    throw new ShaderproofError(`${file}: its sound: ${message}`);
   });
   const bytes = Buffer.from(sound.data, 'base64');
   const pcm = new Int16Array(bytes.buffer, bytes.byteOffset, bytes.byteLength / 2);

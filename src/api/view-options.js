@@ -10,7 +10,7 @@
 import fs from 'node:fs';
 import path from 'node:path';
 import { MAX_FPS, MIN_FPS, formatUrlParams } from '../shared/url-params.js';
-import { CliError, ENGINE_PAGE } from '../headless/session.js';
+import { ShaderproofError, ENGINE_PAGE } from '../headless/session.js';
 
 /** A flag or value the command cannot use: said with the verb's usage, exit 2. */
 export class UsageError extends Error {}
@@ -164,7 +164,7 @@ const CHANNEL_TAKES = "an image, video or music file, a volume (the site's .bin)
  */
 function checkChannelFile(file, index) {
   const flag = `--channel${index} ${file}`;
-  if (!fs.existsSync(file)) throw new CliError(`${flag}: no such file`);
+  if (!fs.existsSync(file)) throw new ShaderproofError(`${flag}: no such file`);
   if (fs.statSync(file).isDirectory()) throw new UsageError(`${flag}: a folder; give ${CHANNEL_TAKES}`);
   if (/\.(glsl|frag|json)$/i.test(file)) throw new UsageError(`${flag}: a shader, not a channel's input; give ${CHANNEL_TAKES}`);
 }

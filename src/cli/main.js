@@ -10,16 +10,16 @@ import fs from 'node:fs';
 import path from 'node:path';
 import { parseArgs } from 'node:util';
 import { runOpen } from './open.js';
-import { runRecord } from '../api/record.js';
-import { outputFormat, renderShader, renderTiled, writeFloatImage, writeImage } from '../api/render.js';
-import { CliError, shaderKind, startSession } from '../headless/session.js';
+import { runRecord } from './record.js';
+import { outputFormat, writeFloatImage, writeImage } from '../api/render.js';
+import { drawStill, readStill } from '../api/still.js';
+import { ShaderproofError, shaderKind, startSession } from '../headless/session.js';
 import { LoopLimitFallback, refuseCutLoops } from '../api/loop-limit.js';
 import { DEFAULT_JOBS, runTest } from '../runner/corpus.js';
 import { DEFAULT_SIZE as TEST_SIZE } from '../runner/manifest.js';
 import { UsageError, VIEW_FLAGS, dateLabel, readNumber, readViewOptions } from '../api/view-options.js';
 import { frameProgress, io, oneShader, sayNotes, sessionOptions } from '../api/io.js';
 import { argumentError, joinDashValues } from './arguments.js';
-import { MAX_PIXELS, MAX_SIZE } from '../shared/canvas-limits.js';
 import { DEFAULT_SOUND_SECONDS, MAX_SOUND_SECONDS, SOUND_SAMPLE_RATE, renderSound, wavSummary, writeWav } from '../api/sound.js';
 
 const NAME = 'shaderproof';
@@ -31,9 +31,6 @@ const COMMON_FLAGS = /** @type {const} */ ({
   watchdog: { type: 'string' },
   verbose: { type: 'boolean' },
 });
-
-/** A tiled still's largest size: its RGBA bytes are held in memory whole (1 GiB). */
-const MAX_TILED_PIXELS = 2 ** 28;
 
 const MEDIA_HELP = `  --media DIR           the site's media a Shadertoy JSON's channels name (textures, cubemaps,
                         volumes, videos, music), from DIR laid out as the site's paths:
@@ -230,37 +227,21 @@ async function runRender({ values, positionals }) {
   if (/\.wav$/i.test(values.output)) return runRenderWav({ values, positionals });
   if (values.duration !== undefined) throw new UsageError('--duration: the length of a .wav; a picture is one instant (--time)');
   const format = outputFormat(values.output);
-  const view = readViewOptions(values, { width: 640, height: 360 });
-  if (format === 'pfm' && view.frame !== null) throw new UsageError('-o .pfm: the float colours are of a still at --time, not of --frame');
-  const converge = values.converge === undefined ? null : readNumber(values.converge, '--converge', { min: 1, whole: true });
-  if (converge !== null && (view.frame !== null || format === 'pfm'))
-    throw new UsageError('--converge: a converged still is a .png at --time');
-  const tile = values.tile === undefined ? null : readNumber(values.tile, '--tile', { min: 2, whole: true });
-  if (tile !== null && tile % 2)
-    throw new UsageError(`--tile ${tile}: the tile size must be even (the GPU shades 2x2 quads; an odd size would split them)`);
-  if (tile !== null && (view.frame !== null || converge !== null || format === 'pfm'))
-    throw new UsageError('--tile: a tiled still is a .png at --time');
-  checkSize(view.size, tile !== null);
+  const still = readStill(values, { float: format === 'pfm' });
   shaderKind(file); // a file that is not a shader is said before any browser starts
   const text = fs.readFileSync(file, 'utf8');
   const started = Date.now();
   const session = await startSession({ ...sessionOptions(values, 'auto'), say: io.err, progress: frameProgress() });
   try {
-    const image =
-      tile !== null ? await renderTiled(session, file, view, tile) : await renderShader(session, file, view, { converge, progress: true });
-    const { width, height } = view.size;
-    if (image.width !== width || image.height !== height)
-      throw new CliError(
-        `--size ${width}x${height}: this GPU draws at most ${image.width}x${image.height} at once; use --tile 512 for a larger still`,
-        2,
-      );
-    sayNotes(file, image.notes, { strict: values.strict });
-    const floats = format === 'pfm' ? await session.drawFloat() : null;
-    await refuseCutLoops(session, file);
+    const { image, floats, renderer } = await drawStill(session, file, still, {
+      float: format === 'pfm',
+      strict: values.strict,
+      progress: true,
+      say: io.err,
+    });
     if (floats) writeFloatImage(values.output, floats);
     else writeImage(values.output, image);
-    const { label: renderer } = await session.environment();
-    const date = /\biDate\b/.test(text) ? `, iDate ${dateLabel(view.date)}` : '';
+    const date = /\biDate\b/.test(text) ? `, iDate ${dateLabel(still.view.date)}` : '';
     io.out(`${values.output}: ${image.width}x${image.height}, ${renderer}${date}, ${((Date.now() - started) / 1000).toFixed(1)} s`);
   } finally {
     await session.close();
@@ -294,27 +275,6 @@ async function runRenderWav({ values, positionals }) {
     await session.close();
   }
   return 0;
-}
-
-/**
- * A size the page draws at once (the page's limits, src/shared/canvas-limits.js), or with
- * `tiled` one whose pixels fit in memory; else a UsageError that says the limit and why.
- * @param {{width: number, height: number}} size
- * @param {boolean} tiled
- */
-function checkSize({ width, height }, tiled) {
-  const asked = `--size ${width}x${height}`;
-  if (tiled) {
-    if (width * height > MAX_TILED_PIXELS)
-      throw new UsageError(
-        `${asked}: a tiled still is at most ${MAX_TILED_PIXELS / 2 ** 20} megapixels (its bytes are held in memory whole)`,
-      );
-    return;
-  }
-  if (width > MAX_SIZE || height > MAX_SIZE || width * height > MAX_PIXELS)
-    throw new UsageError(
-      `${asked}: one draw is at most ${MAX_SIZE} px a side and ${(MAX_PIXELS / 1e6).toFixed(1)} megapixels (8K UHD, the page's limit); use --tile 512 for a larger still`,
-    );
 }
 
 /**
@@ -365,7 +325,7 @@ export async function main(argv) {
       io.err(`${NAME} ${verb}: ${error.message} ${seeHelp}`);
       return 2;
     }
-    if (error instanceof CliError) {
+    if (error instanceof ShaderproofError) {
       io.err(`${NAME} ${verb}: ${error.message}`);
       return error.exitCode;
     }

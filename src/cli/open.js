@@ -6,7 +6,7 @@
 import path from 'node:path';
 import { builtPage, startPageServer } from '../headless/page-server.js';
 import { io, oneShader } from '../api/io.js';
-import { CliError, shaderKind } from '../headless/session.js';
+import { ShaderproofError, shaderKind } from '../headless/session.js';
 import { mediaFolders } from '../api/media.js';
 import { readMediaOptions, readNumber } from '../api/view-options.js';
 
@@ -20,10 +20,10 @@ export async function runOpen({ values, positionals }, { stopped } = {}) {
   const media = readMediaOptions(values);
   const port = values.port === undefined ? 0 : readNumber(values.port, '--port', { min: 0, whole: true });
   const root = await builtPage({ say: io.err }).catch((error) => {
-    throw new CliError(error.message);
+    throw new ShaderproofError(error.message);
   });
   const server = await startPageServer({ root, port, fileEvents: true }).catch((error) => {
-    throw new CliError(
+    throw new ShaderproofError(
       error.code === 'EADDRINUSE' ? `--port ${port}: the port is in use; give another, or none for a free one` : error.message,
     );
   });

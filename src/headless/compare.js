@@ -20,3 +20,25 @@ export function compareImages(actual, expected, { threshold, includeAA }) {
   const diffPixels = pixelmatch(actual.data, expected.data, diff, width, height, { threshold, includeAA });
   return { diffPixels, fraction: diffPixels / (width * height), diff: { width, height, data: diff } };
 }
+
+/**
+ * The runner's verdict on a render against its reference (src/runner/case.js, and the Node API's
+ * compare): pixelmatch at `threshold`, anti-aliased pixels counted, and at most `maxDiffPixels`
+ * pixels may differ. `failure` says why it fails, in the report's words; `diffPixels` and `diff`
+ * are null when the sizes differ.
+ * @param {{width: number, height: number, data: Uint8Array}} actual
+ * @param {{width: number, height: number, data: Uint8Array}} reference
+ * @param {{threshold: number, maxDiffPixels: number}} tolerance
+ */
+export function judgeImage(actual, reference, { threshold, maxDiffPixels }) {
+  if (reference.width !== actual.width || reference.height !== actual.height)
+    return {
+      ok: false,
+      diffPixels: null,
+      diff: null,
+      failure: `the render is ${actual.width}x${actual.height}, the reference ${reference.width}x${reference.height}`,
+    };
+  const { diffPixels, diff } = compareImages(actual, reference, { threshold, includeAA: true });
+  const ok = diffPixels <= maxDiffPixels;
+  return { ok, diffPixels, diff, failure: ok ? null : `${diffPixels} pixels differ from the reference (at most ${maxDiffPixels} may)` };
+}

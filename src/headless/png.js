@@ -7,12 +7,17 @@ import { PNG } from 'pngjs';
 
 /** @param {string} file @returns {{width: number, height: number, data: Buffer}} */
 export function readPng(file) {
-  const png = PNG.sync.read(fs.readFileSync(file));
+  return decodePng(fs.readFileSync(file));
+}
+
+/** An image from a PNG file's bytes. @param {Uint8Array} bytes @returns {{width: number, height: number, data: Buffer}} */
+export function decodePng(bytes) {
+  const png = PNG.sync.read(Buffer.from(bytes.buffer, bytes.byteOffset, bytes.byteLength));
   return { width: png.width, height: png.height, data: png.data };
 }
 
 /** The PNG file's bytes of an image. @param {{width: number, height: number, data: Uint8Array}} image */
-function pngBytes({ width, height, data }) {
+export function pngBytes({ width, height, data }) {
   const png = new PNG({ width, height });
   Buffer.from(data.buffer, data.byteOffset, data.byteLength).copy(png.data);
   return PNG.sync.write(png, { colorType: 6 });

@@ -7,10 +7,10 @@
 // kills that browser and starts another for whatever comes next.
 
 import fs from 'node:fs';
-import { rendererLabel, startBrowser } from './browser.js';
+import { rendererLabel } from './browser.js';
 import { killBrowser } from './watch.js';
 import { findChrome } from './chrome-path.js';
-import { builtPage, startPageServer } from './page-server.js';
+import { launchChromium, servePage } from './core.js';
 import { drawView } from './view.js';
 import { WALL_CLOCK, gpuClock } from './watchdog/gpu-time.js';
 import { engineClient } from './client.js';
@@ -20,8 +20,11 @@ import { fromBase64 } from '../shared/pixels.js';
 import { WATCHDOG_LIMITS, hungLine } from './watchdog/limits.js';
 import { jsonSyntaxError } from '../shared/json-syntax.js';
 
-/** An error the person can act on: said in one line, without a stack. */
-export class CliError extends Error {
+/**
+ * The one error of shaderproof, the command line's and the Node API's: what went wrong and what
+ * to do, in one line, without a stack. exitCode: what the command line exits with.
+ */
+export class ShaderproofError extends Error {
   /** @param {string} message @param {number} [exitCode] */
   constructor(message, exitCode = 1) {
     super(message);
@@ -78,15 +81,13 @@ export async function startSession({
   try {
     executablePath = findChrome();
   } catch (error) {
-    throw new CliError(error.message);
+    throw new ShaderproofError(error.message);
   }
-  const root = await builtPage({ say }).catch((error) => {
-    throw new CliError(error.message);
+  const server = await servePage({ say }).catch((error) => {
+    throw new ShaderproofError(error.message);
   });
-  mark('built page found');
-  const server = await startPageServer({ root });
   mark('server');
-  /** @type {Awaited<ReturnType<typeof startBrowser>> | null} */
+  /** @type {Awaited<ReturnType<typeof launchChromium>> | null} */
   let chromium = null;
   /** The page the views are drawn on, through its client. @type {import('./client.js').EngineClient | null} */
   let page = null;
@@ -94,6 +95,8 @@ export async function startSession({
   let pageErrors = [];
   /** Set by kill(): this session starts no browser again. */
   let killed = false;
+  /** How many browsers this session started (another after each hang). */
+  let launches = 0;
   /**
    * The watchdog's clock: the work of the current browser's GPU process (its CPU time on a CPU
    * renderer; on a hardware GPU, whose work is not the CPU's, the wall clock).
@@ -103,14 +106,15 @@ export async function startSession({
 
   async function browser() {
     if (chromium) return chromium;
-    if (killed) throw new CliError('this session was given up: its browser stopped answering');
-    const launched = await startBrowser({ renderer, executablePath, probe: false }).catch((error) => {
-      throw new CliError(error.message);
+    if (killed) throw new ShaderproofError('this session was given up: its browser stopped answering');
+    const launched = await launchChromium({ renderer, executablePath, probe: false }).catch((error) => {
+      throw new ShaderproofError(error.message);
     });
+    launches++;
     if (killed) {
       killBrowser(launched.browser); // killed while it launched
       await launched.close().catch(() => {});
-      throw new CliError('this session was given up: its browser stopped answering');
+      throw new ShaderproofError('this session was given up: its browser stopped answering');
     }
     chromium = launched;
     clock = renderer === 'gpu' ? WALL_CLOCK : gpuClock(launched.browser.process()?.pid);
@@ -130,12 +134,12 @@ export async function startSession({
       limits,
       clock,
     });
-    if (started.error !== undefined) throw new CliError(`the page did not start: ${started.error}`);
+    if (started.error !== undefined) throw new ShaderproofError(`the page did not start: ${started.error}`);
     try {
       const { renderer, version } = /** @type {Extract<import('./view.js').DrawnView, {pixels: unknown}>} */ (started).info;
       (await browser()).verify(renderer ? { renderer, version } : null);
     } catch (error) {
-      throw new CliError(error.message);
+      throw new ShaderproofError(error.message);
     }
     // a frame stops at its first cut (its picture is not the shader's, and an endless loop costs
     // the limit's trips in every pixel); SHADERPROOF_LOOP_GUARD=off: no pass guarded, so no cut
@@ -168,6 +172,8 @@ export async function startSession({
     async loopReport() {
       return page && !page.isClosed() ? page.loopCuts() : null;
     },
+    /** How many browsers this session started: one, and another after each hang. */
+    launches: () => launches,
     /** The watchdog's clock (the current browser's, or the last one's): what the limits are counted on. */
     clock: () => clock,
     /**
@@ -181,7 +187,7 @@ export async function startSession({
     },
     /**
      * Draws the view `query` and reads its frame: { width, height, data (RGBA8 rows top to
-     * bottom), info }. Throws CliError with the page's words: a compile error, a shader that
+     * bottom), info }. Throws ShaderproofError with the page's words: a compile error, a shader that
      * did not finish (the watchdog), a page error.
      * @param {string} query
      */
@@ -196,7 +202,7 @@ export async function startSession({
         progress(null);
         await current.close().catch(() => {});
         page = null;
-        throw new CliError(error.message.split('\n')[0]);
+        throw new ShaderproofError(error.message.split('\n')[0]);
       }
       if (result.error !== undefined) {
         // (the tests' type check runs without null checks, where `error?: undefined` does not narrow)
@@ -206,7 +212,7 @@ export async function startSession({
           await current.close().catch(() => {});
           page = null;
         }
-        const error = new CliError(failed.hung ? hungLine(limits, clock.measure) : failed.error);
+        const error = new ShaderproofError(failed.hung ? hungLine(limits, clock.measure) : failed.error);
         Object.assign(error, { hung: Boolean(failed.hung), compile: Boolean(failed.compile) });
         throw error;
       }
@@ -258,7 +264,7 @@ function mark(what) {
 
 /**
  * What a file holds, for the error a person sees when it is not a shader: 'glsl' (has a
- * mainImage), 'json' (Shadertoy's export, checked by the page), or throws CliError.
+ * mainImage), 'json' (Shadertoy's export, checked by the page), or throws ShaderproofError.
  * @param {string} file
  */
 export function shaderKind(file) {
@@ -272,18 +278,19 @@ export function shaderKind(file) {
       EISDIR: 'a folder, not a shader file (shaderproof test DIR runs every shader in a folder)',
       EACCES: 'cannot be read: permission denied',
     };
-    throw new CliError(`${file}: ${why[error.code] ?? `cannot be read (${error.code ?? error.message})`}`);
+    throw new ShaderproofError(`${file}: ${why[error.code] ?? `cannot be read (${error.code ?? error.message})`}`);
   }
   if (/\.json$/i.test(file) || /^\s*[[{]/.test(text)) {
     try {
       JSON.parse(text);
     } catch (error) {
       const where = jsonSyntaxError(text) ?? String(error.message).replace(/\s*\n\s*/g, ' ');
-      throw new CliError(`${file}: not a shader: a Shadertoy export is JSON, and this is not (${where})`);
+      throw new ShaderproofError(`${file}: not a shader: a Shadertoy export is JSON, and this is not (${where})`);
     }
     return 'json';
   }
-  if (text.includes('\u0000')) throw new CliError(`${file}: not a shader: a binary file`);
-  if (!/\bmainImage\s*\(/.test(text)) throw new CliError(`${file}: not a shader: no mainImage() in it (a Shadertoy Image tab defines one)`);
+  if (text.includes('\u0000')) throw new ShaderproofError(`${file}: not a shader: a binary file`);
+  if (!/\bmainImage\s*\(/.test(text))
+    throw new ShaderproofError(`${file}: not a shader: no mainImage() in it (a Shadertoy Image tab defines one)`);
   return 'glsl';
 }

@@ -7,13 +7,13 @@
 
 import fs from 'node:fs';
 import path from 'node:path';
-import { compareImages } from '../headless/compare.js';
+import { compareImages, judgeImage } from '../headless/compare.js';
 import { readPng, writePng } from '../headless/png.js';
 import { allowedMissing } from '../api/io.js';
 import { sayOnce } from '../shared/said-once.js';
 import { renderShader } from '../api/render.js';
 import { renderSound, writeWav } from '../api/sound.js';
-import { CliError } from '../headless/session.js';
+import { ShaderproofError } from '../headless/session.js';
 import { judgeLoops } from '../api/loop-limit.js';
 import { UsageError } from '../api/view-options.js';
 import { decodeWav } from '../shared/wav.js';
@@ -112,10 +112,10 @@ export async function runCase(session, testCase, { update, out, thumbnails, rend
   try {
     image = await renderShader(session, testCase.file, testCase.view);
   } catch (error) {
-    if (!(error instanceof CliError || error instanceof UsageError)) throw error;
+    if (!(error instanceof ShaderproofError || error instanceof UsageError)) throw error;
     failures.push(error.message);
-    if (error instanceof CliError && error.compile) result.compile = compileDetail(error.message, testCase);
-    else result.replace = error instanceof CliError;
+    if (error instanceof ShaderproofError && error.compile) result.compile = compileDetail(error.message, testCase);
+    else result.replace = error instanceof ShaderproofError;
     return finish();
   }
   result.size = { width: image.width, height: image.height };
@@ -151,28 +151,22 @@ export async function runCase(session, testCase, { update, out, thumbnails, rend
     keep('actual', image);
   } else {
     const reference = readPng(testCase.reference);
-    if (reference.width !== image.width || reference.height !== image.height) {
-      failures.push(`the render is ${image.width}x${image.height}, the reference ${reference.width}x${reference.height}`);
+    const judged = judgeImage(image, reference, tolerance);
+    if (judged.diffPixels !== null) result.diffPixels = judged.diffPixels;
+    if (!judged.ok) {
+      failures.push(/** @type {string} */ (judged.failure));
       keep('actual', image);
       keep('reference', reference);
-    } else {
-      const { diffPixels, diff } = compare(image, reference, tolerance.threshold);
-      result.diffPixels = diffPixels;
-      if (diffPixels > tolerance.maxDiffPixels) {
-        failures.push(`${diffPixels} pixels differ from the reference (at most ${tolerance.maxDiffPixels} may)`);
-        keep('actual', image);
-        keep('reference', reference);
-        keep('diff', diff);
-      }
+      if (judged.diff) keep('diff', judged.diff);
     }
   }
   try {
     await runChecks(session, testCase, image, { update, result, keep, file });
     failures.push(...(await judgeLoops(session, testCase.file, 'fail')));
   } catch (error) {
-    if (!(error instanceof CliError || error instanceof UsageError)) throw error;
+    if (!(error instanceof ShaderproofError || error instanceof UsageError)) throw error;
     failures.push(error.message);
-    result.replace = error instanceof CliError && !error.compile;
+    result.replace = error instanceof ShaderproofError && !error.compile;
   }
   if (thumbnails && !files.actual) keep('thumb', thumbnail(image));
   return finish();

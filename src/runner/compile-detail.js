@@ -19,7 +19,7 @@ const MAX_LINES = 24;
 const ERROR_LINE = /^(.+?):(\d+): (?:error|ERROR): (.*)$/;
 
 /**
- * @param {string} message the CliError's message
+ * @param {string} message the ShaderproofError's message
  * @param {{file: string, kind: 'glsl' | 'json'}} testCase
  * @returns {CompileDetail | null} null when the message names no line
  */

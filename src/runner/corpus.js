@@ -17,7 +17,7 @@ import { htmlReport } from './report/html-report.js';
 import { dotLine, progressLine, readReporters } from './report/reporters.js';
 import { runCases } from './runner.js';
 import { silenceLimitMs } from './guard.js';
-import { CliError, startSession } from '../headless/session.js';
+import { ShaderproofError, startSession } from '../headless/session.js';
 import { drawnByDifference, drawnByNow, readDrawnBy, referenceRenderer, writeDrawnBy } from './drawn-by.js';
 import { DEFAULT_DATE, UsageError, dateLabel, readDate, readMediaOptions, readNumber } from '../api/view-options.js';
 
@@ -47,17 +47,17 @@ function readShard(text) {
  * @param {import('./drawn-by.js').DrawnBy | null} recorded
  * @param {boolean} hasReferences
  * @param {import('./drawn-by.js').DrawnBy} now
- * @param {{update: boolean, referenceDir: string}} run
+ * @param {{update: boolean, referenceDir: string, say: (line: string) => void}} run
  */
-function sayDrawnBy(recorded, hasReferences, now, { update, referenceDir }) {
+function sayDrawnBy(recorded, hasReferences, now, { update, referenceDir, say }) {
   if (update) return;
   const was = recorded?.renderer ?? (hasReferences ? 'swiftshader' : null);
   if (was && was !== now.renderer)
-    io.err(
+    say(
       `note: the references were drawn by ${was}, and this run draws with ${now.renderer} as asked: each case is compared at its manifest's tolerance (its "${now.renderer}" one where it gives one)`,
     );
   else if (recorded && drawnByDifference(recorded, now))
-    io.err(
+    say(
       `note: what draws differs from what drew the references (${path.join(referenceDir, 'drawn-by.json')}): ${drawnByDifference(recorded, now)}`,
     );
 }
@@ -68,9 +68,23 @@ function sayDrawnBy(recorded, hasReferences, now, { update, referenceDir }) {
  *   session starts, and guard.js's limit (else silenceLimitMs of the watchdog)
  */
 export async function runTest({ values, positionals }, seams = {}) {
+  return (await testFolder({ values, positionals }, { ...seams, say: io.err, out: io.out })).exitCode;
+}
+
+/**
+ * The run `shaderproof test` makes, for whoever wants its results (the Node API's test()):
+ * every case's result, what drew them, the reports written, and the exit code. Its lines go to
+ * `say` (progress, notes) and `out` (the summary).
+ * @param {{values: Record<string, any>, positionals: string[]}} args
+ * @param {{start?: typeof startSession, silenceMs?: number, say: (line: string) => void,
+ *   out: (line: string) => void, bar?: boolean}} seams bar: false draws no progress line on a
+ *   terminal (the case lines then go to `out` as they come)
+ */
+export async function testFolder({ values, positionals }, seams) {
+  const { say, out: sayOut } = seams;
   if (positionals.length !== 1) throw new UsageError(`expected one DIR, got ${positionals.length ? positionals.join(' ') : 'none'}`);
   const dir = path.resolve(positionals[0]);
-  if (!fs.existsSync(dir) || !fs.statSync(dir).isDirectory()) throw new CliError(`${positionals[0]}: not a folder`);
+  if (!fs.existsSync(dir) || !fs.statSync(dir).isDirectory()) throw new ShaderproofError(`${positionals[0]}: not a folder`);
   const shard = readShard(values.shard);
   const jobs = values.jobs === undefined ? DEFAULT_JOBS : readNumber(values.jobs, '--jobs', { min: 1, max: MAX_JOBS, whole: true });
   const reporters = readReporters(values.reporter);
@@ -80,7 +94,7 @@ export async function runTest({ values, positionals }, seams = {}) {
   const runDate = dateLabel(readDate(values.date ?? DEFAULT_DATE)); // checked before any browser starts
   const media = readMediaOptions(values); // --media and --fetch-media hold for every case
   const all = findCases(dir, manifest, { date: values.date }).map((c) => (c.view ? { ...c, view: { ...c.view, media } } : c));
-  if (!all.length) throw new CliError(`${positionals[0]}: no .glsl or .json shaders in it`);
+  if (!all.length) throw new ShaderproofError(`${positionals[0]}: no .glsl or .json shaders in it`);
   const cases = all.filter((_, i) => i % shard.count === shard.index);
   fs.mkdirSync(out, { recursive: true });
   // a report of an earlier run would speak for this one
@@ -90,7 +104,7 @@ export async function runTest({ values, positionals }, seams = {}) {
   try {
     recorded = readDrawnBy(referenceDir);
   } catch (error) {
-    throw new CliError(error.message);
+    throw new ShaderproofError(error.message);
   }
   const hasReferences = fs.existsSync(referenceDir) && fs.readdirSync(referenceDir).some((name) => name.endsWith('.png'));
   // the references' renderer unless one is asked for (a flag, or $SHADERPROOF_RENDERER)
@@ -105,20 +119,24 @@ export async function runTest({ values, positionals }, seams = {}) {
     ran = await runCases(cases, {
       jobs,
       // a case whose loops llvmpipe's limit cuts fails (case.js): its frame stops at the cut
-      start: () => (seams.start ?? startSession)({ ...limits, loopLimit: 'fail', say: io.err }),
+      start: () => (seams.start ?? startSession)({ ...limits, loopLimit: 'fail', say }),
       silenceMs: seams.silenceMs ?? silenceLimitMs(limits),
       run: { update, out, thumbnails: reporters.has('html') },
       verbose: Boolean(values.verbose),
-      say: io.err,
+      say,
       onEnvironment: (environment) => {
         const share = shard.count > 1 ? ` (shard ${shard.index + 1}/${shard.count})` : '';
         const workers = `${jobs} worker${jobs === 1 ? '' : 's'}`;
-        io.err(`${cases.length} of ${all.length} cases${share}, drawn by ${environment.label}, ${workers}; iDate at iTime 0: ${runDate}`);
-        sayDrawnBy(recorded, hasReferences, (now = drawnByNow(environment)), { update, referenceDir });
-        shown.progress = progressLine(cases.length);
+        say(`${cases.length} of ${all.length} cases${share}, drawn by ${environment.label}, ${workers}; iDate at iTime 0: ${runDate}`);
+        sayDrawnBy(recorded, hasReferences, (now = drawnByNow(environment)), { update, referenceDir, say });
+        if (seams.bar !== false) shown.progress = progressLine(cases.length);
       },
       onSettled: (result) => shown.progress?.settled(result),
-      onResult: (result) => reporters.has('dot') && shown.progress?.line(dotLine(result)),
+      onResult: (result) => {
+        if (!reporters.has('dot')) return;
+        if (shown.progress) shown.progress.line(dotLine(result));
+        else if (seams.bar === false) sayOut(dotLine(result));
+      },
     });
   } finally {
     shown.progress?.end();
@@ -137,11 +155,18 @@ export async function runTest({ values, positionals }, seams = {}) {
     written.push('index.html');
   }
   const where = path.relative(process.cwd(), out) || '.';
-  io.out(
+  sayOut(
     `${results.length - failed.length} passed, ${failed.length} failed, in ${seconds.toFixed(1)} s` +
       (written.length ? `; ${written.join(' and ')} in ${where}` : ''),
   );
   if (update && now && results.some((r) => r.ok && !r.skipped)) writeDrawnBy(referenceDir, now);
-  if (update) io.out(`references in ${path.relative(process.cwd(), referenceDir) || '.'}`);
-  return failed.length ? 1 : 0;
+  if (update) sayOut(`references in ${path.relative(process.cwd(), referenceDir) || '.'}`);
+  return {
+    exitCode: failed.length ? 1 : 0,
+    results,
+    environment,
+    out,
+    reports: written.map((name) => path.join(out, name)),
+    referenceDir,
+  };
 }

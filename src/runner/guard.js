@@ -7,7 +7,7 @@
 // abandoned case makes afterwards are refused, so that it can start nothing.
 
 import { PRODUCTION_TIMEOUTS } from '../shared/timeouts.js';
-import { CliError } from '../headless/session.js';
+import { ShaderproofError } from '../headless/session.js';
 
 /** How often a running case's page is asked whether it answers. */
 const HEARTBEAT_MS = 1_000;
@@ -29,7 +29,7 @@ class Abandoned extends Error {}
 
 /**
  * Runs `work` on a guarded view of `session`. Resolves with the work's value, or rejects: with
- * the work's own error, or with a CliError saying that the browser stopped answering, after
+ * the work's own error, or with a ShaderproofError saying that the browser stopped answering, after
  * `silenceMs` without a sign of life (then the session is killed: the caller must start another).
  * @template T
  * @param {import('../headless/session.js').Session} session
@@ -79,7 +79,7 @@ export function guarded(session, work, { silenceMs }) {
       given = true;
       clearInterval(beat);
       const seconds = Number((silenceMs / 1000).toFixed(1));
-      giveUp(new CliError(`the browser stopped answering: no word from it for ${seconds} s; it was replaced and the run went on`));
+      giveUp(new ShaderproofError(`the browser stopped answering: no word from it for ${seconds} s; it was replaced and the run went on`));
     },
     Math.min(HEARTBEAT_MS, silenceMs / 4),
   );

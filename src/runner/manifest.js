@@ -32,7 +32,7 @@
 
 import fs from 'node:fs';
 import path from 'node:path';
-import { CliError } from '../headless/session.js';
+import { ShaderproofError } from '../headless/session.js';
 import { readViewOptions } from '../api/view-options.js';
 import { RENDERER_NAMES } from '../headless/renderers.js';
 import { DEFAULT_SOUND_TOLERANCE } from './sound-compare.js';
@@ -43,7 +43,7 @@ export const REFERENCE_DIR = '__references__';
 const SKIPPED_DIRS = /^(\.|__|node_modules$)/;
 
 /** The default tolerance: SwiftShader draws the same bytes on every machine with the same Chromium. */
-const DEFAULT_TOLERANCE = Object.freeze({ threshold: 0, maxDiffPixels: 0 });
+export const DEFAULT_TOLERANCE = Object.freeze({ threshold: 0, maxDiffPixels: 0 });
 /** A half-size render is a different sampling of the picture: close, not equal. */
 const DEFAULT_HALF_SIZE = Object.freeze({ threshold: 0.1, maxDiffFraction: 0.05 });
 /** A case's size unless its manifest says otherwise: smaller than render's 640x360, a suite being many renders. */
@@ -118,14 +118,14 @@ export function readManifest(dir) {
   try {
     manifest = JSON.parse(fs.readFileSync(file, 'utf8'));
   } catch (error) {
-    throw new CliError(`${file}: not valid JSON (${error.message})`, 2);
+    throw new ShaderproofError(`${file}: not valid JSON (${error.message})`, 2);
   }
   if (manifest === null || typeof manifest !== 'object' || Array.isArray(manifest))
-    throw new CliError(`${file}: not an object with "defaults" and "cases"`, 2);
+    throw new ShaderproofError(`${file}: not an object with "defaults" and "cases"`, 2);
   const unknown = Object.keys(manifest).filter((k) => !['defaults', 'cases', '//'].includes(k));
-  if (unknown.length) throw new CliError(`${file}: unknown key ${unknown.join(', ')} (expected "defaults" and "cases")`, 2);
+  if (unknown.length) throw new ShaderproofError(`${file}: unknown key ${unknown.join(', ')} (expected "defaults" and "cases")`, 2);
   if (manifest['//'] !== undefined && !isComment(manifest['//']))
-    throw new CliError(`${file}: "//" is a comment: a string or a list of strings`, 2);
+    throw new ShaderproofError(`${file}: "//" is a comment: a string or a list of strings`, 2);
   return { defaults: manifest.defaults ?? {}, cases: manifest.cases ?? {} };
 }
 
@@ -149,7 +149,7 @@ function shaderFiles(dir, under = '') {
  */
 function readCase(where, entry, dir) {
   const fail = (message) => {
-    throw new CliError(`${MANIFEST}: ${where}: ${message}`, 2);
+    throw new ShaderproofError(`${MANIFEST}: ${where}: ${message}`, 2);
   };
   const unknown = Object.keys(entry).filter((k) => !CASE_KEYS.includes(k));
   if (unknown.length) fail(`unknown key ${unknown.join(', ')} (a case may have ${CASE_KEYS.join(', ')})`);
@@ -293,7 +293,7 @@ function mergeTolerance(under, over) {
 function viewShader(name, shader, dir) {
   /** @type {(message: string) => never} */
   const fail = (message) => {
-    throw new CliError(`${MANIFEST}: ${name}: ${message}`, 2);
+    throw new ShaderproofError(`${MANIFEST}: ${name}: ${message}`, 2);
   };
   if (!VIEW_NAME.test(name))
     fail(
@@ -319,20 +319,20 @@ export function findCases(dir, manifest, { date } = {}) {
   const files = shaderFiles(dir).map((f) => f.split(path.sep).join('/'));
   const listed = Object.keys(manifest.cases).filter((name) => !files.includes(name));
   const missing = listed.filter((name) => SHADER_FILE.test(name));
-  if (missing.length) throw new CliError(`${MANIFEST}: no shader ${missing.join(', ')} in ${dir}`, 2);
+  if (missing.length) throw new ShaderproofError(`${MANIFEST}: no shader ${missing.join(', ')} in ${dir}`, 2);
   const names = [...files, ...listed].sort();
   return names.map((name) => {
     const own = manifest.cases[name] ?? {};
     const isFile = files.includes(name);
     if (isFile && own.shader !== undefined)
-      throw new CliError(`${MANIFEST}: ${name}: "shader" is for a view; a shader file under DIR draws itself`, 2);
+      throw new ShaderproofError(`${MANIFEST}: ${name}: "shader" is for a view; a shader file under DIR draws itself`, 2);
     for (const [where, entry] of [
       ['defaults', manifest.defaults],
       [name, own],
     ])
       for (const key of ['tolerance', 'checks'])
         if (entry[key] !== undefined && (entry[key] === null || typeof entry[key] !== 'object' || Array.isArray(entry[key])))
-          throw new CliError(`${MANIFEST}: ${where}: "${key}" is ${JSON.stringify(entry[key])}, not an object`, 2);
+          throw new ShaderproofError(`${MANIFEST}: ${where}: "${key}" is ${JSON.stringify(entry[key])}, not an object`, 2);
     const { shader, ...defaults } = manifest.defaults;
     const merged = {
       ...(date === undefined ? {} : { date }),

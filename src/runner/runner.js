@@ -8,7 +8,7 @@
 // answering, or whose run threw (a bug), fails with one line, its session is replaced (killed,
 // and another started for the next case), and the run goes on.
 
-import { CliError } from '../headless/session.js';
+import { ShaderproofError } from '../headless/session.js';
 import { caseResult, runCase } from './case.js';
 import { guarded } from './guard.js';
 
@@ -53,8 +53,8 @@ export async function runCases(cases, { jobs, start, silenceMs, run, verbose = f
   } catch (error) {
     retire(0);
     await settle(closing);
-    if (error instanceof CliError) throw error;
-    throw new CliError(`the browser did not start: ${String(error?.message ?? error).split('\n')[0]}`);
+    if (error instanceof ShaderproofError) throw error;
+    throw new ShaderproofError(`the browser did not start: ${String(error?.message ?? error).split('\n')[0]}`);
   }
   onEnvironment(environment);
   /** Each case is compared at the tolerance of the renderer that draws it (manifest.js). */
@@ -80,7 +80,7 @@ export async function runCases(cases, { jobs, start, silenceMs, run, verbose = f
     } catch (error) {
       retire(worker);
       const ms = Date.now() - started;
-      if (error instanceof CliError) return caseResult(testCase, { failures: [error.message], ms });
+      if (error instanceof ShaderproofError) return caseResult(testCase, { failures: [error.message], ms });
       if (verbose) say(String(error?.stack ?? error));
       const why = String(error?.message ?? error).split('\n')[0];
       // a wait of the session's own that ran out (watch.js): the browser's silence, not a bug

@@ -18,7 +18,7 @@ import net from 'node:net';
 import path from 'node:path';
 import { REPO_ROOT } from './config.js';
 import { harnessMiddleware, harnessRoutes } from './routes.js';
-import { builtPage, startPageServer as startEngineServer } from '../../src/headless/page-server.js';
+import { servePage } from '../../src/headless/core.js';
 
 const CONFIG_FILE = path.join(REPO_ROOT, 'vite.config.js');
 
@@ -67,19 +67,16 @@ async function startDevServer({ watch = false } = {}) {
 /**
  * The production build in dist/ (built now when it is missing or older than its sources: as
  * `npm run build` makes it, so tests/cli.test.js packs it without building it again), served by
- * the command line's own server (src/headless/page-server.js) on a free loopback port, with the
+ * the command line's own server (src/headless/core.js servePage) on a free loopback port, with the
  * harness's routes first; close() stops it.
  * @returns {Promise<{baseUrl: string, close: () => Promise<void>}>}
  */
 async function startBuiltServer() {
-  let root;
   try {
-    root = await builtPage();
+    return await servePage({ routes: harnessMiddleware(path.join(REPO_ROOT, 'public')) });
   } catch (error) {
     throw new Error(`The page did not build (vite build, as npm run build does): ${error.message}`, { cause: error });
   }
-  const server = await startEngineServer({ root, routes: harnessMiddleware(path.join(REPO_ROOT, 'public')) });
-  return { baseUrl: server.baseUrl, close: () => server.close() };
 }
 
 /** The page server of a test run: the build (or the dev server with RAYTRACER_TEST_SERVER=dev). */

@@ -2,17 +2,18 @@
 //
 // As vitest's globalSetup (tests/vitest.config.js), `setup` runs once in the main process: it finds a
 // Chromium and launches it headless on SwiftShader, checked to be SwiftShader
-// (src/headless/browser.js, as the command line does), builds the page and serves the build on a free loopback port (page-server.js), and hands the browser's
+// (src/headless/core.js startHeadless, the command line's own core), builds the page and serves
+// the build on a free loopback port (page-server.js), and hands the browser's
 // endpoint and the page's URL to the test files (project.provide → inject('harness'), read by
 // page.js). The function it returns stops both. Scripts (the benchmark, the accuracy report,
 // the README picture) do the same through withHarness.
 
 import { UPDATING } from './config.js';
-import { startBrowser } from '../../src/headless/browser.js';
+import { startHeadless } from '../../src/headless/core.js';
 import { RENDERER_ENV, suiteRenderer } from '../../src/headless/renderers.js';
 import { disconnect, useHarness } from './page.js';
 import { startPageServer } from './page-server.js';
-import { CLOSE_TIMEOUT_MS, WAIT_TIMEOUT_MS, withTimeout } from '../../src/headless/watch.js';
+import { WAIT_TIMEOUT_MS } from '../../src/headless/watch.js';
 import { openPage } from '../../src/headless/page-open.js';
 
 /**
@@ -46,22 +47,21 @@ async function warmUp(browser, baseUrl) {
  * @returns {Promise<{context: {wsEndpoint, baseUrl, environment}, close: () => Promise<void>}>}
  */
 export async function startHarness({ gpu = false, renderer = gpu ? 'gpu' : suiteRenderer() } = {}) {
-  const { browser, environment, close: closeChromium } = await startBrowser({ renderer });
-  const cleanups = [closeChromium];
+  // the command line's own core (src/headless/core.js): Chromium checked to be `renderer`, then
+  // the page server (page-server.js: the build with the harness's routes, or the dev server)
+  const headless = await startHeadless({ renderer, serve: () => startPageServer() });
   const close = async () => {
-    for (const cleanup of cleanups.reverse()) {
-      try {
-        await cleanup();
-      } catch (error) {
-        console.warn(`harness teardown: ${error.message}`);
-      }
+    try {
+      await headless.close();
+    } catch (error) {
+      console.warn(`harness teardown: ${error.message}`);
     }
   };
+  const { browser, environment } = headless.chromium;
+  const { baseUrl } = headless.server;
   try {
-    const server = await startPageServer();
-    cleanups.push(() => withTimeout('closing the page server', server.close(), CLOSE_TIMEOUT_MS));
-    await warmUp(browser, server.baseUrl);
-    return { context: { wsEndpoint: browser.wsEndpoint(), baseUrl: server.baseUrl, environment }, close };
+    await warmUp(browser, baseUrl);
+    return { context: { wsEndpoint: browser.wsEndpoint(), baseUrl, environment }, close };
   } catch (error) {
     await close();
     throw error;
