@@ -1089,114 +1089,7 @@ void recordPathEnd(int bounces) {
 #endif
 }
 
-// ---- edges: the centre ray's own near-miss tests ---------------------------------------------
-// With adaptive anti-aliasing a pixel takes the n x n grid of samples when its centre lies near
-// an edge it cannot resolve. Each pixel tests its own rays: the eye ray stands for a cone as wide
-// as the pixel's footprint (the ray cone the texture filter uses), and the pixel is near a
-// silhouette when an object's outline passes within that width of the ray, in front of what the
-// ray hit; near a shadow boundary when the shadow ray's cone (from the footprint on the surface
-// to a point at the light) grazes an occluder; near a reflected silhouette when the reflected
-// ray's cone grazes an outline. Closed forms per primitive, from the eye ray's hit alone. (A host
-// may define EDGE_TESTS 0 before the file: the progressive form, whose samples are points.)
-
-#if EDGE_TESTS
-// What the tests read of the centre ray's first surface: the shadow ray's and the reflected
-// ray's cones start there as radiance would start them (from the point as traced, not
-// re-projected: the cones are far wider than its rounding).
-struct FirstHit {
-    float t;            // the eye ray's hit (T_INFINITY for the sky)
-    int id;
-    vec3 p, l;          // the hit point, the direction to the light
-    float lightDist;
-    bool facesLight;    // n.l > 0: only then can a shadow boundary cross it
-    float width;        // the eye ray's cone width at p
-    vec3 reflected;     // the reflected ray's direction
-    float spread;       // its cone's widening per unit of distance (radiance's, curvature included)
-    bool reflects;      // radiance reflects there: weight of at least 1/255 and a bounce left
-};
-
-FirstHit firstHitOf(Scene s, vec3 dir, Hit hit, float pixelSpread) {
-    FirstHit f;
-    f.t = hit.t;
-    f.id = hit.id;
-    bool sky = hit.id == ID_NONE;
-    f.p = sky ? vec3(0.0) : hit.t * dir;
-    vec3 toLight = s.light - f.p;
-    f.lightDist = length(toLight);
-    f.l = toLight / f.lightDist;
-    f.facesLight = all(bvec2(!sky, dot(hit.n, f.l) > 0.0));
-    f.width = pixelSpread * hit.t;
-    f.reflected = reflect(dir, hit.n);
-    float sphereSpread = 2.0 * f.width / s.sphereRadius;
-    float objectSpread = 2.0 * f.width / max(objectMirrorRadius(s.object, f.p), f.width);
-    f.spread = pixelSpread + (hit.id == ID_SPHERE ? sphereSpread : (hit.id == ID_OBJECT ? objectSpread : 0.0));
-    f.reflects = all(bvec3(!sky, BOUNCES > 0, s.reflectivity[clamp(hit.id, 0, 3)] >= 1.0 / 255.0));
-    return f;
-}
-
-// Whether the cone passes near an outline of the scene: every object but `skipId` (the convex
-// solid a secondary ray leaves, whose own outline is not in its way).
-bool nearOutline(Scene s, RayCone c, int skipId) {
-    bool sphere = all(bvec2(skipId != ID_SPHERE, nearSphere(c, s.sphereCenter, s.sphereRadius)));
-    bool cube = all(bvec2(skipId != ID_CUBE, nearBox(c, s.cubeCenter, s.cubeHalfSize)));
-    bool object = all(bvec2(skipId != ID_OBJECT, nearObject(c, s.object)));
-    return any(bvec4(sphere, cube, object, nearHorizon(c, s.ground)));
-}
-
-// How near an outline must pass, in units of the cone's width (a sample's footprint, 1 pixel for
-// the first sample): an outline that crosses the pixel passes within 0.5 of its centre across it
-// (0.71 at its corners). Measured at 640x360 against the converged reference, 16 samples at
-// edges: reach 0.5, RMSE 0.0034 with 1.9% of pixels marked by these tests; 0.65, 0.0033 and 2.6%;
-// 0.8, 0.0033 and 3.0%; 1, 0.0032 and 3.7% (then with the reflected cone ending at its hit). The
-// quad's sharing (mainImage) gives back what 0.5 leaves at the corners.
-const float EDGE_REACH = 0.5;
-
-// The centre ray's edge tests, from its hit: (silhouette, shadow boundary, reflected silhouette),
-// each 1 when its cone grazes an outline. pixelSpread is the angle the pixel subtends. The
-// reflected ray's hit is not recorded: its cone runs on past it, which marks at least the pixels
-// a test that stopped there would (3.48% of the pixels against 3.45% at 640x360, the same RMSE).
-vec3 centreEdges(Scene s, vec3 eyeDir, Hit hit, float pixelSpread) {
-    FirstHit f = firstHitOf(s, eyeDir, hit, pixelSpread);
-    float w = EDGE_REACH * f.width;
-    bool silhouette = nearOutline(s, RayCone(vec3(0.0), eyeDir, 0.0, EDGE_REACH * pixelSpread, f.t), ID_NONE);
-    int leaving = reenters(f.id) ? ID_NONE : f.id;  // the torus may shade and mirror itself
-    bool shadow = all(bvec2(f.facesLight, nearOutline(s, RayCone(f.p, f.l, w, -w / f.lightDist, f.lightDist), leaving)));
-    bool reflection = all(bvec2(f.reflects, nearOutline(s, RayCone(f.p, f.reflected, w, EDGE_REACH * f.spread, T_INFINITY), leaving)));
-    return vec3(silhouette, shadow, reflection);
-}
-#endif
-
-// ---- debug views -----------------------------------------------------------------------------
-// VIEW 1 to 5 show what the picture is made of (they paste into Shadertoy too); only the chosen
-// view's code is compiled, and VIEW 0, the picture, has none of it.
-#if VIEW >= 1 && VIEW <= 3
-// A debug view's colour for the first surface the pixel centre's ray meets (the Normals, Depth
-// and Object views): its outward normal as a colour, its distance on a scale that shows the
-// whole scene (t / (t + the camera's distance): half grey at the camera's distance, white the
-// sky), or each object's own flat colour (the ground a sand colour, the sky pale blue).
-vec3 firstHitView(Scene s, vec3 dir) {
-    Hit hit = traceScene(s, vec3(0.0), dir, ID_NONE, T_INFINITY);
-    bool sky = hit.id == ID_NONE;
-#if VIEW == 1
-    return sky ? vec3(0.0) : 0.5 + 0.5 * hit.n;
-#elif VIEW == 2
-    return vec3(sky ? 1.0 : hit.t / (hit.t + CAMERA_DISTANCE));
-#else
-    vec3 own = hit.id == ID_GROUND ? vec3(0.76, 0.6, 0.42) : objectColor(hit.id);
-    return sky ? vec3(0.75, 0.85, 1.0) : own;
-#endif
-}
-#endif
-
-#if VIEW == 4
-// The Bounces view's colour for a path that traced `bounces` reflections (0: the eye ray's surface
-// alone, or the sky): dark blue, blue, green, yellow, red for 0 to 4.
-vec3 bouncesView(int bounces) {
-    const vec3 STEPS[5] = vec3[5](vec3(0.1, 0.1, 0.35), vec3(0.1, 0.4, 0.9), vec3(0.1, 0.75, 0.3), vec3(0.95, 0.85, 0.1), vec3(0.9, 0.15, 0.1));
-    return STEPS[min(bounces, 4)];
-}
-#endif
-
+// ---- the bounce loop: radiance ---------------------------------------------------------------
 // An eye ray, and how its direction changes across the footprint of its sample along image x and
 // y: ray differentials (Igehy, "Tracing ray differentials", 1999). They give the exact
 // footprint of the sample where the eye ray meets the ground.
@@ -1298,17 +1191,84 @@ vec3 radiance(Scene s, EyeRay eye, float coneSpread, out vec3 key, out vec3 keyN
     return color;
 }
 
-// ---- camera and image ------------------------------------------------------------------------
-#if SAMPLES == 1
-#define SAMPLES_PER_AXIS 1
-#elif SAMPLES == 4
-#define SAMPLES_PER_AXIS 2
-#elif SAMPLES == 9
-#define SAMPLES_PER_AXIS 3
-#else
-#define SAMPLES_PER_AXIS 4
+// ---- edges: the centre ray's own near-miss tests ---------------------------------------------
+// With adaptive anti-aliasing a pixel takes the n x n grid of samples when its centre lies near
+// an edge it cannot resolve. Each pixel tests its own rays: the eye ray stands for a cone as wide
+// as the pixel's footprint (the ray cone the texture filter uses), and the pixel is near a
+// silhouette when an object's outline passes within that width of the ray, in front of what the
+// ray hit; near a shadow boundary when the shadow ray's cone (from the footprint on the surface
+// to a point at the light) grazes an occluder; near a reflected silhouette when the reflected
+// ray's cone grazes an outline. Closed forms per primitive, from the eye ray's hit alone. (A host
+// may define EDGE_TESTS 0 before the file: the progressive form, whose samples are points.)
+
+#if EDGE_TESTS
+// What the tests read of the centre ray's first surface: the shadow ray's and the reflected
+// ray's cones start there as radiance would start them (from the point as traced, not
+// re-projected: the cones are far wider than its rounding).
+struct FirstHit {
+    float t;            // the eye ray's hit (T_INFINITY for the sky)
+    int id;
+    vec3 p, l;          // the hit point, the direction to the light
+    float lightDist;
+    bool facesLight;    // n.l > 0: only then can a shadow boundary cross it
+    float width;        // the eye ray's cone width at p
+    vec3 reflected;     // the reflected ray's direction
+    float spread;       // its cone's widening per unit of distance (radiance's, curvature included)
+    bool reflects;      // radiance reflects there: weight of at least 1/255 and a bounce left
+};
+
+FirstHit firstHitOf(Scene s, vec3 dir, Hit hit, float pixelSpread) {
+    FirstHit f;
+    f.t = hit.t;
+    f.id = hit.id;
+    bool sky = hit.id == ID_NONE;
+    f.p = sky ? vec3(0.0) : hit.t * dir;
+    vec3 toLight = s.light - f.p;
+    f.lightDist = length(toLight);
+    f.l = toLight / f.lightDist;
+    f.facesLight = all(bvec2(!sky, dot(hit.n, f.l) > 0.0));
+    f.width = pixelSpread * hit.t;
+    f.reflected = reflect(dir, hit.n);
+    float sphereSpread = 2.0 * f.width / s.sphereRadius;
+    float objectSpread = 2.0 * f.width / max(objectMirrorRadius(s.object, f.p), f.width);
+    f.spread = pixelSpread + (hit.id == ID_SPHERE ? sphereSpread : (hit.id == ID_OBJECT ? objectSpread : 0.0));
+    f.reflects = all(bvec3(!sky, BOUNCES > 0, s.reflectivity[clamp(hit.id, 0, 3)] >= 1.0 / 255.0));
+    return f;
+}
+
+// Whether the cone passes near an outline of the scene: every object but `skipId` (the convex
+// solid a secondary ray leaves, whose own outline is not in its way).
+bool nearOutline(Scene s, RayCone c, int skipId) {
+    bool sphere = all(bvec2(skipId != ID_SPHERE, nearSphere(c, s.sphereCenter, s.sphereRadius)));
+    bool cube = all(bvec2(skipId != ID_CUBE, nearBox(c, s.cubeCenter, s.cubeHalfSize)));
+    bool object = all(bvec2(skipId != ID_OBJECT, nearObject(c, s.object)));
+    return any(bvec4(sphere, cube, object, nearHorizon(c, s.ground)));
+}
+
+// How near an outline must pass, in units of the cone's width (a sample's footprint, 1 pixel for
+// the first sample): an outline that crosses the pixel passes within 0.5 of its centre across it
+// (0.71 at its corners). Measured at 640x360 against the converged reference, 16 samples at
+// edges: reach 0.5, RMSE 0.0034 with 1.9% of pixels marked by these tests; 0.65, 0.0033 and 2.6%;
+// 0.8, 0.0033 and 3.0%; 1, 0.0032 and 3.7% (then with the reflected cone ending at its hit). The
+// quad's sharing (mainImage) gives back what 0.5 leaves at the corners.
+const float EDGE_REACH = 0.5;
+
+// The centre ray's edge tests, from its hit: (silhouette, shadow boundary, reflected silhouette),
+// each 1 when its cone grazes an outline. pixelSpread is the angle the pixel subtends. The
+// reflected ray's hit is not recorded: its cone runs on past it, which marks at least the pixels
+// a test that stopped there would (3.48% of the pixels against 3.45% at 640x360, the same RMSE).
+vec3 centreEdges(Scene s, vec3 eyeDir, Hit hit, float pixelSpread) {
+    FirstHit f = firstHitOf(s, eyeDir, hit, pixelSpread);
+    float w = EDGE_REACH * f.width;
+    bool silhouette = nearOutline(s, RayCone(vec3(0.0), eyeDir, 0.0, EDGE_REACH * pixelSpread, f.t), ID_NONE);
+    int leaving = reenters(f.id) ? ID_NONE : f.id;  // the torus may shade and mirror itself
+    bool shadow = all(bvec2(f.facesLight, nearOutline(s, RayCone(f.p, f.l, w, -w / f.lightDist, f.lightDist), leaving)));
+    bool reflection = all(bvec2(f.reflects, nearOutline(s, RayCone(f.p, f.reflected, w, EDGE_REACH * f.spread, T_INFINITY), leaving)));
+    return vec3(silhouette, shadow, reflection);
+}
 #endif
 
+// ---- camera ----------------------------------------------------------------------------------
 // sin and cos of an angle in radians, to float32 accuracy. The built-ins are not held to any
 // accuracy by GLSL ES; SwiftShader's are off by up to ~1e-4 relative (cos(0.314) = 0.95093 for
 // 0.95106), which turns the camera by half a pixel at 640x360. Reduce to |r| <= pi/4 with a
@@ -1391,6 +1351,48 @@ View frameView() {
 vec3 sampleRadiance(View v, vec2 pixel, float footprint, out vec3 key, out vec3 keyNormal) {
     return radiance(v.scene, eyeRay(v.camera, pixel, footprint), v.pixelSpread * footprint, key, keyNormal);
 }
+
+// ---- debug views -----------------------------------------------------------------------------
+// VIEW 1 to 5 show what the picture is made of (they paste into Shadertoy too); only the chosen
+// view's code is compiled, and VIEW 0, the picture, has none of it.
+#if VIEW >= 1 && VIEW <= 3
+// A debug view's colour for the first surface the pixel centre's ray meets (the Normals, Depth
+// and Object views): its outward normal as a colour, its distance on a scale that shows the
+// whole scene (t / (t + the camera's distance): half grey at the camera's distance, white the
+// sky), or each object's own flat colour (the ground a sand colour, the sky pale blue).
+vec3 firstHitView(Scene s, vec3 dir) {
+    Hit hit = traceScene(s, vec3(0.0), dir, ID_NONE, T_INFINITY);
+    bool sky = hit.id == ID_NONE;
+#if VIEW == 1
+    return sky ? vec3(0.0) : 0.5 + 0.5 * hit.n;
+#elif VIEW == 2
+    return vec3(sky ? 1.0 : hit.t / (hit.t + CAMERA_DISTANCE));
+#else
+    vec3 own = hit.id == ID_GROUND ? vec3(0.76, 0.6, 0.42) : objectColor(hit.id);
+    return sky ? vec3(0.75, 0.85, 1.0) : own;
+#endif
+}
+#endif
+
+#if VIEW == 4
+// The Bounces view's colour for a path that traced `bounces` reflections (0: the eye ray's surface
+// alone, or the sky): dark blue, blue, green, yellow, red for 0 to 4.
+vec3 bouncesView(int bounces) {
+    const vec3 STEPS[5] = vec3[5](vec3(0.1, 0.1, 0.35), vec3(0.1, 0.4, 0.9), vec3(0.1, 0.75, 0.3), vec3(0.95, 0.85, 0.1), vec3(0.9, 0.15, 0.1));
+    return STEPS[min(bounces, 4)];
+}
+#endif
+
+// ---- image -----------------------------------------------------------------------------------
+#if SAMPLES == 1
+#define SAMPLES_PER_AXIS 1
+#elif SAMPLES == 4
+#define SAMPLES_PER_AXIS 2
+#elif SAMPLES == 9
+#define SAMPLES_PER_AXIS 3
+#else
+#define SAMPLES_PER_AXIS 4
+#endif
 
 void mainImage(out vec4 fragColor, in vec2 fragCoord) {
     View view = frameView();
