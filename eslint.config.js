@@ -1,6 +1,6 @@
 // ESLint (flat config): the recommended rules, the globals each room runs with, and what each
 // room may import (docs/architecture.md, "The rooms"). The rules are by folder: a new module in
-// a room is under its room's rule without being listed (tests/lint-rooms.test.js crosses each).
+// a room is under its room's rule without being listed (tests/unit/lint-rooms.test.js crosses each).
 import js from '@eslint/js';
 import globals from 'globals';
 

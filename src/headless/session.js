@@ -3,7 +3,7 @@
 // llvmpipe or the machine's GPU, src/headless/renderers.js), and a page on it brought to each view
 // through the same drawView as the render tests (src/headless/view.js). The watchdog counts the
 // work of that browser's GPU process (src/headless/watchdog/gpu-time.js), not the wall clock. A shader that
-// never finishes holds the GPU process for good (tests/page-heavy.test.js): the session then
+// never finishes holds the GPU process for good (tests/browser/page-heavy.test.js): the session then
 // kills that browser and starts another for whatever comes next.
 
 import fs from 'node:fs';

@@ -2,7 +2,7 @@
 // Shadertoy inputs, passes and render worker), the recorder, the watchdog and the engine's hook
 // (hook/engine-hook.js: window.shaderEngine), and none of the interactive page's widgets (ui/, the
 // inspector, kept work) nor the built-in raytracer (shaders/raytrace.glsl, src/raytracer/), whose
-// code the engine page never loads (tests/lint-rooms.test.js walks its imports; the lint
+// code the engine page never loads (tests/unit/lint-rooms.test.js walks its imports; the lint
 // rule in eslint.config.js keeps them out). A view is opened as on the interactive page
 // (open-view.js), strictly: a shader that cannot be had rejects the view, never another drawn in
 // its place. What it says comes back to the command line as data through the hook (notes(),

@@ -3,7 +3,7 @@
 // the edits kept for it (the interactive page's kept-work.js, given as `keep`), and the notes on
 // what it could not have. Both pages' own loads (main.js, engine-main.js) and
 // window.shaderEngine.open() (hook/engine-hook.js) go through openView, so that a page put in a
-// state by open() is the page a fresh load of that URL gives (tests/page-open.test.js holds the
+// state by open() is the page a fresh load of that URL gives (tests/browser/page-open.test.js holds the
 // two pixel-identical).
 //
 // It shows nothing itself: what a person should be told comes out as the app's events, as data

@@ -43,7 +43,7 @@ export async function withServedDir(prefix, body) {
 /**
  * Whether this test file's withPage calls share one page (sharePageAcrossTests): the second and
  * later `goto`s bring it to their view with window.shaderEngine.open(), which gives what a fresh
- * load of that URL gives (tests/page-open.test.js), instead of loading the page again.
+ * load of that URL gives (tests/browser/page-open.test.js), instead of loading the page again.
  */
 let sharing = false;
 /** The page this file's tests share, once one has loaded it. @type {{page: import('puppeteer-core').Page, errors: string[], warnings: string[], context: any, loaded: boolean} | null} */

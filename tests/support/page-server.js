@@ -7,7 +7,7 @@
 // takes ~0.5 s to its first frame where the dev server took ~1.3 s (measured: 5 loads of
 // examples/pattern.glsl at 32x18 each way), and ~220 loads a run add up. It is also the page a
 // person deploys. The dev server stays for what only it does: a server that watches the files and
-// hot-updates the page (startWatchingServer, tests/page-lifecycle.test.js), and, with
+// hot-updates the page (startWatchingServer, tests/browser/page-lifecycle.test.js), and, with
 // RAYTRACER_TEST_SERVER=dev, for a whole run (to debug with unbundled modules).
 //
 // Either way the harness's own routes (routes.js: a request that hangs, a redirect, files the
@@ -66,7 +66,7 @@ async function startDevServer({ watch = false } = {}) {
 
 /**
  * The production build in dist/ (built now when it is missing or older than its sources: as
- * `npm run build` makes it, so tests/cli.test.js packs it without building it again), served by
+ * `npm run build` makes it, so tests/browser/cli.test.js packs it without building it again), served by
  * the command line's own server (src/headless/page-server.js) on a free loopback port, with the
  * harness's routes first; close() stops it.
  * @returns {Promise<{baseUrl: string, close: () => Promise<void>}>}
