@@ -45,3 +45,20 @@ describe('every path the docs name exists', () => {
     expect(missing('see src/player/app/app.js and src/page/app/app.js, tests/unit/')).toEqual(['src/page/app/app.js']);
   });
 });
+
+describe('the README is a front door', () => {
+  const readme = fs.readFileSync(path.join(ROOT, 'README.md'), 'utf8');
+  const lines = readme.split('\n');
+
+  it('of at most 250 lines', () => {
+    expect(lines.length).toBeLessThanOrEqual(250);
+  });
+
+  it('with no line over 200 characters outside a table', () => {
+    expect(lines.filter((line) => !line.startsWith('|') && line.length > 200)).toEqual([]);
+  });
+
+  it("naming none of the project's issues, which its readers do not know", () => {
+    expect(readme).not.toMatch(/\bissues? #?\d+/i);
+  });
+});
