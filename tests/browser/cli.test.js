@@ -21,6 +21,7 @@ import { runShaderproof } from '../support/shaderproof-child.js';
 import { readPng, sameImage } from '../support/images.js';
 import { disconnect, openPage } from '../support/page.js';
 import { renderRawShader } from '../support/raw-webgl/raw-webgl.js';
+import { hook } from '../support/hook.js';
 
 const run = promisify(execFile);
 
@@ -286,12 +287,18 @@ describe('shaderproof, installed from its tarball', () => {
       try {
         await page.goto(`${url}&size=32x18&time=0`, { waitUntil: 'load' });
         await page.waitForFunction(() => window.shaderEngine);
-        await page.evaluate(() => window.shaderEngine.ready);
-        const before = await page.evaluate(() => window.shaderEngine.info().compiled);
-        expect(await page.evaluate(() => window.shaderEngine.info().fileName)).toBe('live.glsl');
+        await hook(page).ready();
+        const before = await hook(page)
+          .info()
+          .then((r) => r.compiled);
+        expect(
+          await hook(page)
+            .info()
+            .then((r) => r.fileName),
+        ).toBe('live.glsl');
         write('live.glsl', WAVES.replace('vec4(uv,', 'vec4(1.0 - uv,'));
         await page.waitForFunction((n) => window.shaderEngine.info().compiled > n, { polling: 100, timeout: 20_000 }, before);
-        expect(await page.evaluate(() => window.shaderEngine.editorSource())).toContain('1.0 - uv');
+        expect(await hook(page).editorSource()).toContain('1.0 - uv');
       } finally {
         await page.close();
       }

@@ -22,6 +22,7 @@ import { composeSoundShader } from '../../src/shadertoy/sound.js';
 import { builtPage } from '../../src/headless/page-server.js';
 import { REPO_ROOT } from '../support/config.js';
 import { sharePageAcrossTests, withPage } from '../support/page-helpers.js';
+import { hook } from '../support/hook.js';
 
 sharePageAcrossTests();
 
@@ -156,7 +157,7 @@ describe('compiled on SwiftShader: the report and the page’s note', () => {
   test.each(COMPILED)('%s', async (_, tabs, tab, line) => {
     await withPage(async ({ page, goto }) => {
       await goto('?size=16x8&time=0');
-      const outcome = await page.evaluate((json) => window.shaderEngine.setProject(json), exportOf(tabs, tab, line));
+      const outcome = await hook(page).setProject(exportOf(tabs, tab, line));
       const first = `${tabs.length > 1 ? tab : '[^:]+'}:${line}: error: .*undefinedThing.*`;
       expect(outcome.ok).toBe(false);
       expect(outcome.error).toMatch(new RegExp(`^${first}\\n    ${escape(BAD)}$`, 'm'));
@@ -214,7 +215,7 @@ describe('a global initialized with a value that is not constant', () => {
     const source = `${globals}\nvoid mainImage(out vec4 c, in vec2 f) {\n    c = vec4(${red}, 0.0, 0.0, 1.0);\n}\n`;
     await withPage(async ({ page, goto }) => {
       await goto('?size=16x8&time=0');
-      const outcome = await page.evaluate((text) => window.shaderEngine.setSource(text), source);
+      const outcome = await hook(page).setSource(source);
       if (byte === null) {
         const line = globals.split('\n').length; // the initializer is on the globals' last line
         expect(outcome.ok).toBe(false);
@@ -228,7 +229,7 @@ describe('a global initialized with a value that is not constant', () => {
         expect(note.join('\n')).toContain('Shadertoy rejects this shader as well');
       } else {
         expect(outcome).toEqual({ ok: true });
-        const { data } = await page.evaluate(() => window.shaderEngine.readPixels());
+        const { data } = await hook(page).readPixels();
         expect(Buffer.from(data, 'base64')[0]).toBe(byte);
       }
     });

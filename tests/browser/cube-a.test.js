@@ -21,6 +21,7 @@ import { readPng } from '../support/images.js';
 import { editorTabs, exportJsonFile } from '../support/page-multipass-helpers.js';
 import { pixel, readPixels, sharePageAcrossTests, withPage } from '../support/page-helpers.js';
 import { cubeLookup } from '../support/tables/cube-lookup.js';
+import { hook } from '../support/hook.js';
 
 sharePageAcrossTests();
 
@@ -205,7 +206,7 @@ describe('Cube A on the page', () => {
       await withPage(async ({ page, goto }) => {
         await goto('?size=32x32&time=0');
         const json = exportOf({ cube: DIRECTION_CUBE, image: SAMPLE_IMAGE, imageInputs: [cubeInput(0, filter)] });
-        const outcome = await page.evaluate((j) => window.shaderEngine.setProject(j), json);
+        const outcome = await hook(page).setProject(json);
         expect(outcome.error ?? null).toBe(null);
         expect(outcome.notes ?? []).toEqual([]);
         expectDirections(await readPixels(page));
@@ -229,7 +230,7 @@ describe('Cube A on the page', () => {
     await withPage(async ({ page, goto }) => {
       await goto('?size=32x32&time=0');
       const json = exportOf({ cube: DIRECTION_CUBE, image, imageInputs: [cubeInput(0, 'mipmap')] });
-      expect((await page.evaluate((j) => window.shaderEngine.setProject(j), json)).error ?? null).toBe(null);
+      expect((await hook(page).setProject(json)).error ?? null).toBe(null);
       const frame = await readPixels(page);
       const wrong = axes.flatMap((d, i) => {
         const got = pixel(frame, (i % GRID) * CELL + CELL / 2, frame.height - 1 - (Math.floor(i / GRID) * CELL + CELL / 2));
@@ -251,13 +252,13 @@ describe('Cube A on the page', () => {
     });
     await withPage(async ({ page, goto }) => {
       await goto('?size=8x8&time=0');
-      expect((await page.evaluate((j) => window.shaderEngine.setProject(j), counter)).error ?? null).toBe(null);
+      expect((await hook(page).setProject(counter)).error ?? null).toBe(null);
       const frames = [];
       for (let i = 0; i < 3; i++) frames.push(pixel(await readPixels(page), 4, 4).slice(0, 2));
       // painted before Image: Image sees this frame's count, one more than iFrame
       frames.forEach(([count, frame]) => expect(count).toBe(frame + 1));
       expect(frames.map(([, frame]) => frame - frames[0][1])).toEqual([0, 1, 2]);
-      await page.evaluate(() => window.shaderEngine.restart());
+      await hook(page).restart();
       const [count, frame] = pixel(await readPixels(page), 4, 4);
       expect(frame).toBeLessThan(frames[0][1] + 3);
       expect(count, 'cleared on Restart: counting again from 0 with iFrame').toBe(frame + 1);
@@ -284,11 +285,11 @@ describe('Cube A on the page', () => {
     });
     await withPage(async ({ page, goto }) => {
       await goto('?size=8x8&time=0');
-      expect((await page.evaluate((j) => window.shaderEngine.setProject(j), counter)).error ?? null).toBe(null);
+      expect((await hook(page).setProject(counter)).error ?? null).toBe(null);
       const first = await readPixels(page);
       const counted = pixel(first, 2, 4)[1] + 1; // painted before Image: one more than iFrame
       expect([pixel(first, 2, 4)[0], pixel(first, 6, 4)[0]]).toEqual([counted, counted]);
-      await page.evaluate(() => window.shaderEngine.restart());
+      await hook(page).restart();
       const frame = await readPixels(page);
       const iFrame = pixel(frame, 2, 4)[1];
       expect([pixel(frame, 2, 4)[0], pixel(frame, 6, 4)[0]], 'cleared on Restart: counting again from 0 with iFrame').toEqual([
@@ -302,7 +303,7 @@ describe('Cube A on the page', () => {
     await withPage(async ({ page, goto }) => {
       await goto('?size=32x32&time=0');
       const json = exportOf({ cube: DIRECTION_CUBE, image: SAMPLE_IMAGE });
-      expect((await page.evaluate((j) => window.shaderEngine.setProject(j), json)).error ?? null).toBe(null);
+      expect((await hook(page).setProject(json)).error ?? null).toBe(null);
       expect((await editorTabs(page)).names).toEqual(['Cube A', 'Image']);
       const exported = JSON.parse((await exportJsonFile(page)).text);
       expect(fromShadertoyJson(exported).model).toEqual(fromShadertoyJson(json).model);

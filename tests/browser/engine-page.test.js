@@ -8,6 +8,7 @@
 import { afterAll, describe, expect, test } from 'vitest';
 import { disconnect } from '../support/page.js';
 import { info, readPixels, withPage } from '../support/page-helpers.js';
+import { hook } from '../support/hook.js';
 
 afterAll(disconnect);
 
@@ -54,8 +55,8 @@ describe('the engine page', () => {
       expect(await page.evaluate(() => typeof (/** @type {any} */ (window.shaderEngine).inspect))).toBe('undefined');
 
       // the raytracer as the command line serves it (a ?shader= file), converged as --converge does
-      await page.evaluate(() => window.shaderEngine.open('?shader=shaders/raytrace.glsl&size=16x9&time=0&SAMPLES=1&BOUNCES=0'));
-      await page.evaluate(() => window.shaderEngine.setConverging(true, { frames: 2 }));
+      await hook(page).open('?shader=shaders/raytrace.glsl&size=16x9&time=0&SAMPLES=1&BOUNCES=0');
+      await hook(page).setConverging(true, { frames: 2 });
       expect((await info(page)).converging).toBe(true);
       expect((await scripts(page)).filter((name) => name.startsWith('convergence-'))).toHaveLength(1);
       expect((await scripts(page)).filter((name) => name.startsWith('main-'))).toEqual([]);
@@ -78,10 +79,10 @@ describe('the engine page', () => {
   test('a shader that does not compile is said in one line, and comes back as data', async () => {
     await withPage(async ({ page, goto }) => {
       await goto('engine.html?size=8x4&time=0');
-      const result = await page.evaluate(() => window.shaderEngine.setSource('void mainImage(out vec4 c, in vec2 f) { c = nope; }'));
+      const result = await hook(page).setSource('void mainImage(out vec4 c, in vec2 f) { c = nope; }');
       expect(result.ok).toBe(false);
       expect(await status(page)).toMatch(/ did not compile: .*nope/);
-      await page.evaluate(() => window.shaderEngine.setSource('void mainImage(out vec4 c, in vec2 f) { c = vec4(1.0); }'));
+      await hook(page).setSource('void mainImage(out vec4 c, in vec2 f) { c = vec4(1.0); }');
       expect(await status(page)).toBe(null);
     }, OWN_PAGE);
   });

@@ -9,6 +9,7 @@ import { REPO_ROOT } from '../support/config.js';
 import { INSTALL_HINT, findChrome } from '../../src/headless/chrome-path.js';
 import { disconnect, harnessContext, openPage, useHarness } from '../support/page.js';
 import { CHROME_ARGS } from '../../src/headless/browser.js';
+import { hook } from '../support/hook.js';
 
 afterAll(disconnect);
 
@@ -96,10 +97,7 @@ describe('every wait on a page ends, and says why', () => {
     const { page } = await openPage({ waitTimeoutMs: SHORT_WAIT_MS });
     try {
       await page.goto(`data:text/html,${encodeURIComponent(STUCK_PAGE)}`);
-      for (const wait of [
-        page.evaluate(() => window.shaderEngine.ready),
-        page.waitForFunction(() => document.title === 'never', { polling: 100 }),
-      ]) {
+      for (const wait of [hook(page).ready(), page.waitForFunction(() => document.title === 'never', { polling: 100 })]) {
         const { error, stillWaiting, ms } = await settle(wait);
         expect(stillWaiting, 'still waiting').toBeUndefined();
         expect(ms).toBeLessThan(SHORT_WAIT_MS + PROMPT_MS);

@@ -18,6 +18,7 @@ import { CHROME_ARGS, launchBrowser } from '../../src/headless/browser.js';
 import { spectrumTexture } from '../../src/player/inputs/spectrum.js';
 import { pixel, readPixels, withPage, withServedDir } from '../support/page-helpers.js';
 import { MUSIC_READER, RATE, checkMusic, toneSamples, wav } from '../support/fixtures/music-fixture.js';
+import { hook } from '../support/hook.js';
 
 // ---- the video: 6 frames at 10 fps, frame i all grey i·40 -----------------------------------
 const VIDEO = { frames: 6, fps: 10, step: 40 };
@@ -48,16 +49,13 @@ describe('moving channels: video and music, against what the test computes', () 
         await withPage(async ({ page, goto, errors }) => {
           // the video, made by the page's recorder: frame i is grey i·40
           await goto(`?shader=/${base}/grey.glsl&size=8x8&time=0`);
-          const recording = await page.evaluate(
-            (o) => window.shaderEngine.record({ format: 'webm', frames: o.frames, fps: o.fps, width: 8, height: 8 }),
-            VIDEO,
-          );
+          const recording = await hook(page).record({ format: 'webm', frames: VIDEO.frames, fps: VIDEO.fps, width: 8, height: 8 });
           fs.writeFileSync(path.join(dir, 'clip.webm'), Buffer.from(recording.data, 'base64'));
           fs.copyFileSync(path.join(dir, 'clip.webm'), path.join(folder, 'clip.webm'));
 
           await goto(`?shader=/${base}/video-reader.glsl&size=8x8&time=0&iChannel0=/${base}/clip.webm`);
           for (const t of [0, 0.05, 0.15, 0.35, 0.59, 0.65, 1.25]) {
-            await page.evaluate((s) => window.shaderEngine.setTime(s), t);
+            await hook(page).setTime(t);
             const [r, g, b] = pixel(await readPixels(page), 4, 4);
             const { index, local } = videoAt(t);
             expect(Math.abs(r - index * VIDEO.step), `iTime ${t}: grey ${r} is frame ${index}'s ${index * VIDEO.step}`).toBeLessThanOrEqual(
@@ -69,13 +67,13 @@ describe('moving channels: video and music, against what the test computes', () 
 
           await goto(`?shader=/${base}/music-reader.glsl&size=512x2&time=0&iChannel0=/${base}/tone.wav`);
           for (const t of [0.8, 1.9]) {
-            await page.evaluate((s) => window.shaderEngine.setTime(s), t);
+            await hook(page).setTime(t);
             checkMusic(await readPixels(page), samples, t, `page, iTime ${t}`);
           }
           // playing (heard where the browser lets it start), then paused: frames go on, nothing fails
           await goto(`?shader=/${base}/music-reader.glsl&size=512x2&iChannel0=/${base}/tone.wav`);
-          for (let i = 0; i < 3; i++) await page.evaluate(() => window.shaderEngine.nextFrame());
-          await page.evaluate(() => window.shaderEngine.pause());
+          for (let i = 0; i < 3; i++) await hook(page).nextFrame();
+          await hook(page).pause();
           expect(errors).toEqual([]);
         });
         fs.copyFileSync(path.join(dir, 'tone.wav'), path.join(folder, 'tone.wav'));
@@ -228,7 +226,7 @@ describe('moving channels: video and music, against what the test computes', () 
               source,
             );
             expect(outcome, source).toBe('ok');
-            const r = await page.evaluate(() => window.shaderEngine.readPixels());
+            const r = await hook(page).readPixels();
             const [red, green] = Buffer.from(r.data, 'base64');
             expect([red, green], `${source}: iChannelResolution.xy / 2048`).toEqual([
               Math.round((width / 2048) * 255),

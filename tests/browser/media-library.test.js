@@ -20,6 +20,7 @@ import { readPixels, sharePageAcrossTests, withPage, withServedDir } from '../su
 import { checkMusic, toneSamples, wav } from '../support/fixtures/music-fixture.js';
 import { loadNotes } from '../support/page-multipass-helpers.js';
 import { MUSIC_SHADER, MUSIC_TIME, SHADERS, checkRow, input, shaderJson, writeMedia } from '../support/fixtures/media-fixture.js';
+import { hook } from '../support/hook.js';
 
 // ---- the data, without a browser ---------------------------------------------------------------
 
@@ -105,12 +106,12 @@ describe('the site’s media from a folder, against what the test computes', () 
         page.on('request', count);
         const edited = JSON.parse(json);
         edited.Shader.renderpass[0].code += '// an edit\n';
-        const result = await page.evaluate((text) => window.shaderEngine.setProject(text), JSON.stringify(edited));
+        const result = await hook(page).setProject(JSON.stringify(edited));
         expect(result.ok, result.error).toBe(true);
         checkRow(await readPixels(page), cases(), 'page, after an edit');
-        await page.evaluate(() => window.shaderEngine.loseContext());
+        await hook(page).loseContext();
         await page.waitForFunction(() => window.shaderEngine.info().contextLost);
-        await page.evaluate(() => window.shaderEngine.restoreContext());
+        await hook(page).restoreContext();
         await page.waitForFunction(() => !window.shaderEngine.info().contextLost);
         checkRow(await readPixels(page), cases(), 'page, after a lost and restored context');
         page.off('request', count);
@@ -119,7 +120,7 @@ describe('the site’s media from a folder, against what the test computes', () 
         await goto(`?shader=/${base}/music.json&size=512x2&time=${MUSIC_TIME}&media=/${base}/media/`);
         checkMusic(await readPixels(page), samples, MUSIC_TIME, 'page, music a buffer pass names');
         // the page's "Copy link" keeps the media folder, so the link draws the same
-        expect(await page.evaluate(() => window.shaderEngine.shareUrl())).toContain(`media=/${base}/media/`);
+        expect(await hook(page).shareUrl()).toContain(`media=/${base}/media/`);
         expect(errors).toEqual([]);
       });
     });

@@ -17,6 +17,7 @@ import { readPixels, solid, withPage, withServedDir } from '../support/page-help
 import { checkRow } from '../support/fixtures/media-fixture.js';
 import { loadNotes } from '../support/page-multipass-helpers.js';
 import { THEORA_FILE, THEORA_READER, expectedProbes, theoraJson } from '../support/fixtures/theora-fixture.js';
+import { hook } from '../support/hook.js';
 
 /** The site names a video by a hash of it: so does the test. */
 const HASHED = `${crypto.createHash('sha256').update(fs.readFileSync(THEORA_FILE)).digest('hex')}.ogv`;
@@ -47,7 +48,7 @@ describe('the site’s Theora videos, against the frames the fixture was made of
 
         await goto(`?shader=/${base}/reader.glsl&size=4x1&time=0&iChannel0=/${base}/colours.ogv`);
         for (const t of TIMES) {
-          await page.evaluate((s) => window.shaderEngine.setTime(s), t);
+          await hook(page).setTime(t);
           checkRow(await readPixels(page), expectedProbes(t), `page, ?iChannel0=colours.ogv, iTime ${t}`);
         }
         // its module and two WebAssembly files (a module preloaded and imported may be asked for twice)
@@ -70,7 +71,7 @@ describe('the site’s Theora videos, against the frames the fixture was made of
 
         await goto(`?shader=/${base}/theora.json&size=8x1&time=0.45&media=/${base}/media/`);
         checkRow(await readPixels(page), both(0.45), 'page, ?media=, iTime 0.45');
-        await page.evaluate(() => window.shaderEngine.setTime(0.15));
+        await hook(page).setTime(0.15);
         checkRow(await readPixels(page), both(0.15), 'page, ?media=, iTime 0.15');
         expect(errors).toEqual([]);
       });

@@ -13,6 +13,7 @@ import { afterAll, describe, expect, test } from 'vitest';
 import { allowClipboard, button, pasteIntoEditor, pixel, readPixels, withPage } from '../support/page-helpers.js';
 import { dropFile, exportOf } from '../support/page-multipass-helpers.js';
 import { disconnect } from '../support/page.js';
+import { hook } from '../support/hook.js';
 
 afterAll(disconnect);
 
@@ -38,24 +39,31 @@ const FRAME_0_SHADER = exportOf({ name: 'Frame zero', common: '', bufferA: SETS_
 const FRAME_0_JSON = JSON.stringify(FRAME_0_SHADER);
 
 /** The clock as the next frame gets it: {frame: its iFrame, time: its iTime}. */
-const clock = (page) => page.evaluate(() => ({ frame: window.shaderEngine.info().iFrame, time: window.shaderEngine.info().time }));
+const clock = (page) =>
+  hook(page)
+    .info()
+    .then((info) => ({ frame: info.iFrame, time: info.time }));
 
 /** Waits until the page has drawn `n` more frames by itself (it plays). */
 async function moreFrames(page, n = 3) {
-  const start = await page.evaluate(() => window.shaderEngine.info().frame);
+  const start = await hook(page)
+    .info()
+    .then((r) => r.frame);
   await page.waitForFunction((until) => window.shaderEngine.info().frame >= until, { polling: 20 }, start + n);
 }
 
 /** Does `arrive(page)`, and waits until a shader more has compiled. */
 async function compiledAfter(page, arrive) {
-  const before = await page.evaluate(() => window.shaderEngine.info().compiled);
+  const before = await hook(page)
+    .info()
+    .then((r) => r.compiled);
   await arrive(page);
   await page.waitForFunction((n) => window.shaderEngine.info().compiled > n, { polling: 20 }, before);
 }
 
 /** How each way of bringing the shader in is done, on a page already running another one. @type {Array<[string, (page: import('puppeteer-core').Page) => Promise<unknown>]>} */
 const ARRIVALS = [
-  ['setProject()', (page) => page.evaluate((json) => window.shaderEngine.setProject(json), FRAME_0_JSON)],
+  ['setProject()', (page) => hook(page).setProject(FRAME_0_JSON)],
   ['a dropped .json file', (page) => dropFile(page, 'frame-zero.json', FRAME_0_JSON, 'application/json')],
   ['a paste into the editor', (page) => pasteIntoEditor(page, FRAME_0_JSON)],
 ];
@@ -78,7 +86,7 @@ describe('a shader loaded in place of another starts at iFrame 0 with cleared bu
       await readPixels(page); // a frame or two of the paused page: iFrame is past 0
       await readPixels(page);
       expect((await clock(page)).frame).toBeGreaterThan(0);
-      await page.evaluate(() => window.shaderEngine.setTime(3));
+      await hook(page).setTime(3);
       await compiledAfter(page, (p) => dropFile(p, 'frame-zero.json', FRAME_0_JSON, 'application/json'));
       await page.waitForFunction(() => window.shaderEngine.info().iFrame === 1, { polling: 20 });
       expect(await clock(page)).toEqual({ frame: 1, time: 0 }); // frame 0 drawn at iTime 0, paused
@@ -107,9 +115,9 @@ describe('Restart always gives a frame 0', () => {
   test.each(cases)('%s while %s', async (_, __, rewind, playing) => {
     await withPage(async ({ page, goto }) => {
       await goto('?size=64x36');
-      await page.evaluate((json) => window.shaderEngine.setProject(json), FRAME_0_JSON);
+      await hook(page).setProject(FRAME_0_JSON);
       await moreFrames(page);
-      if (!playing) await page.evaluate(() => window.shaderEngine.pause());
+      if (!playing) await hook(page).pause();
       await page.focus('body'); // R is a key of the page, not of the editor
       // a frame is under way when the rewind comes (the Image pass is slow)
       if (playing) await page.waitForFunction(() => window.shaderEngine.info().progress !== null, { polling: 5 });

@@ -15,6 +15,7 @@ import { measureSameRay } from '../support/reference/same-ray.js';
 import { viewQuery } from '../support/tables/views.js';
 import { button, canvasBox, withPage, sharePageAcrossTests } from '../support/page-helpers.js';
 import { exportOf } from '../support/page-multipass-helpers.js';
+import { hook } from '../support/hook.js';
 
 // not a test of loading the page: the tests share one, brought to each view by open()
 sharePageAcrossTests();
@@ -43,7 +44,7 @@ describe('compare with float64', () => {
     await withPage(
       async ({ page, goto }) => {
         await goto(viewQuery(view).slice(1)); // without its leading slash: goto adds one
-        const got = await page.evaluate(() => window.shaderEngine.compareWithFloat64());
+        const got = await hook(page).compareWithFloat64();
         const canvas = got.figures.canvas;
         console.log(
           `${name}: page ${formatImageError(canvas)}; accuracy report ${formatImageError(expected)}; float32 ${formatImageError(got.figures.float)}`,
@@ -88,7 +89,7 @@ describe('compare with float64', () => {
         });
         await (await button(page, 'Compare with float64')).click();
         await page.waitForFunction(() => window.shaderEngine.comparison().running?.rows > 0, { polling: 50 });
-        const first = (await page.evaluate(() => window.shaderEngine.comparison())).running;
+        const first = (await hook(page).comparison()).running;
         await page.waitForFunction((rows) => window.shaderEngine.comparison().running?.rows > rows, { polling: 50 }, first.rows);
         expect(first.of).toBe(540);
         expect(await page.$eval('.compare-progress', (p) => p.textContent)).toMatch(/float64 reference: \d+ of 540 rows/);
@@ -98,7 +99,7 @@ describe('compare with float64', () => {
           500,
         );
         await (await page.$('.compare-progress button')).click(); // Cancel
-        const after = await page.evaluate(() => window.shaderEngine.comparison());
+        const after = await hook(page).comparison();
         expect(after.running).toBe(null);
         expect(after.error).toBe(null);
         expect(after.shown).toBe(null);
@@ -111,12 +112,12 @@ describe('compare with float64', () => {
     await withPage(
       async ({ page, goto }) => {
         await goto('?size=320x180&time=0&SAMPLES=1');
-        await page.evaluate(() => window.shaderEngine.compareWithFloat64());
+        await hook(page).compareWithFloat64();
         const box = await canvasBox(page);
         // pixel (250, 179 - 130): clear of the comparison's box (upper left) and of the inspector (lower left)
         await page.mouse.click(box.left + (250.5 / 320) * box.width, box.top + (130.5 / 180) * box.height);
         await page.waitForFunction(() => window.shaderEngine.inspection().readout?.complete, { polling: 50 });
-        const state = await page.evaluate(() => window.shaderEngine.inspection());
+        const state = await hook(page).inspection();
         expect(state.active).toBe(true);
         expect(state.pinned).toMatchObject({ x: 250, y: 49 });
         expect(state.readout.reference, 'the pinned pixel has its float64 colour').not.toBe(null);
@@ -130,14 +131,14 @@ describe('compare with float64', () => {
   // resize, at once (before the next frame says the comparison is out of date) and after.
   /** @type {Array<[string, (page: import('puppeteer-core').Page) => Promise<unknown>]>} */
   const CHANGES = [
-    ['a control change', (page) => page.evaluate(() => window.shaderEngine.setControls({ LIGHT_POSITION: [4, 3, 2] }))],
+    ['a control change', (page) => hook(page).setControls({ LIGHT_POSITION: [4, 3, 2] })],
     ['a resize', (page) => page.setViewport({ width: 1000, height: 800, deviceScaleFactor: 1 })],
   ];
   test.each(CHANGES)('after %s the out-of-date heat map is hidden, never dimmed or stretched over the picture', async (_, change) => {
     await withPage(
       async ({ page, goto }) => {
         await goto('?time=0&SAMPLES=1&scale=0.25'); // the canvas fills the stage, at a quarter of its pixels
-        await page.evaluate(() => window.shaderEngine.compareWithFloat64());
+        await hook(page).compareWithFloat64();
         const map = () =>
           page.evaluate(() => {
             const m = /** @type {HTMLCanvasElement} */ (document.querySelector('.heat-map'));
@@ -196,8 +197,7 @@ describe('compare with float64', () => {
     await withPage(
       async ({ page, goto, warnings }) => {
         await goto(query);
-        if (shader.setProject)
-          expect((await page.evaluate((json) => window.shaderEngine.setProject(json), shader.setProject)).ok).toBe(true);
+        if (shader.setProject) expect((await hook(page).setProject(shader.setProject)).ok).toBe(true);
         await (await button(page, 'Compare with float64')).click();
         await page.waitForFunction(() => window.shaderEngine.comparison().error, { polling: 50 });
         const box = await page.$eval('.compare', (section) => {
@@ -223,9 +223,9 @@ describe('compare with float64', () => {
         });
         expect(await page.$eval('#toast', (t) => /** @type {HTMLElement} */ (t).hidden), 'no toast repeats the box').toBe(true);
         expect(warnings.some((w) => why.test(w))).toBe(true);
-        expect((await page.evaluate(() => window.shaderEngine.comparison())).shown).toBe(null);
+        expect((await hook(page).comparison()).shown).toBe(null);
         if (/VIEW=1/.test(query)) {
-          const readout = await page.evaluate(() => window.shaderEngine.inspect(80, 45));
+          const readout = await hook(page).inspect(80, 45);
           expect(readout.reference).toBe(null);
           expect(readout.referenceNote).toMatch(/draws the picture, not the "Normals" view/);
         }
@@ -238,7 +238,7 @@ describe('compare with float64', () => {
     await withPage(
       async ({ page, goto }) => {
         await goto('?size=640x360&time=0&SAMPLES=1');
-        await page.evaluate(() => window.shaderEngine.inspect(10, 10)); // the readout's Compare button on the page
+        await hook(page).inspect(10, 10); // the readout's Compare button on the page
         await (await button(page, 'Compare with float64')).click();
         await page.waitForFunction(() => window.shaderEngine.comparison().running?.rows > 0, { polling: 20 });
         const disabled = await page.evaluate(() =>
@@ -249,10 +249,10 @@ describe('compare with float64', () => {
           ),
         );
         expect(disabled, '"Compare again" and the readout\'s "Compare with float64"').toEqual([[true], [true]]);
-        const before = (await page.evaluate(() => window.shaderEngine.comparison())).running;
+        const before = (await hook(page).comparison()).running;
         // the toolbar's button (enabled) does nothing while one runs
         await page.$eval('#toolbar [aria-label="Compare with float64"]', (b) => /** @type {HTMLButtonElement} */ (b).click());
-        const after = (await page.evaluate(() => window.shaderEngine.comparison())).running;
+        const after = (await hook(page).comparison()).running;
         expect(after?.phase, 'still the same comparison').toBe(before.phase);
         expect(after.rows).toBeGreaterThanOrEqual(before.rows);
         await (await page.$('.compare-progress button')).click(); // Cancel

@@ -6,12 +6,16 @@ import { afterAll, describe, expect, test } from 'vitest';
 import { assertNotBlank, differingPixels, sameImage } from '../support/images.js';
 import { disconnect } from '../support/page.js';
 import { button, editorText, info, overlayText, readPixels, typeInEditor, withPage } from '../support/page-helpers.js';
+import { hook } from '../support/hook.js';
 
 afterAll(disconnect);
 
 const PATTERN = 'shader=examples/pattern.glsl';
 // (an input event's handler has run when the page shows its effect: wait for it, do not race it)
-const playing = (page) => page.evaluate(() => window.shaderEngine.info().playing);
+const playing = (page) =>
+  hook(page)
+    .info()
+    .then((r) => r.playing);
 const whenPlaying = (page, value) => page.waitForFunction((v) => window.shaderEngine.info().playing === v, { polling: 20 }, value);
 const playLabel = (page) => page.$eval('#toolbar button.play', (b) => b.getAttribute('aria-label'));
 
@@ -45,7 +49,7 @@ describe('time', () => {
       await page.waitForFunction(() => window.shaderEngine.info().time === 0);
       expect(await playing(page)).toBe(false); // restart keeps the play state
 
-      await page.evaluate(() => window.shaderEngine.setTime(7));
+      await hook(page).setTime(7);
       await page.keyboard.press('KeyR');
       await page.waitForFunction(() => window.shaderEngine.info().time === 0, { polling: 20 });
 
@@ -77,16 +81,16 @@ describe('time', () => {
       await page.waitForFunction(() => window.shaderEngine.info().speed === 4, { polling: 20 });
       // play: the test clock gives every animation frame 1/60 s, so iTime grows 4/60 a frame
       const start = await info(page);
-      await page.evaluate(() => window.shaderEngine.play());
+      await hook(page).play();
       await page.waitForFunction((f) => window.shaderEngine.info().frame >= f + 20, { polling: 50 }, start.frame);
-      await page.evaluate(() => window.shaderEngine.pause());
+      await hook(page).pause();
       const end = await info(page);
       const perFrame = (end.time - start.time) / (end.frame - start.frame);
       expect(perFrame).toBeGreaterThan(3.5 / 60);
       expect(perFrame).toBeLessThan(4.5 / 60);
 
       // the readout and the graph were drawn while playing (the clock runs at 60 fps)
-      await page.evaluate(() => window.shaderEngine.play());
+      await hook(page).play();
       await page.waitForFunction(() => /fps/.test(document.querySelector('#toolbar .fps').textContent), { polling: 50 });
       // (GPU time where the browser measures it, real and not on the test clock)
       expect(await page.$eval('#toolbar .fps', (e) => e.textContent)).toMatch(/^(GPU \d+\.\d ms|16\.7 ms between frames) · 60 fps$/);
@@ -116,7 +120,10 @@ describe('size', () => {
       const c = /** @type {HTMLCanvasElement} */ (document.getElementById('view'));
       return { width: c.width, height: c.height, cssWidth: c.clientWidth, cssHeight: c.clientHeight, dpr: devicePixelRatio };
     });
-  const settle = (page) => page.evaluate(() => window.shaderEngine.readPixels().then(() => null));
+  const settle = (page) =>
+    hook(page)
+      .readPixels()
+      .then(() => null);
 
   /** The pattern at `query` in a window of `viewport`: body(page, size) with the canvas's first size. */
   const inWindow = (query, viewport, body) =>
@@ -165,7 +172,7 @@ describe('size', () => {
       const aspect = size.cssWidth / size.cssHeight;
       expect(Math.abs(size.width / size.height - aspect)).toBeLessThan(0.02);
       // the window's size is the sender's: a link pins only a size the user fixed (?size=)
-      expect(new URL(await page.evaluate(() => window.shaderEngine.shareUrl())).searchParams.has('size')).toBe(false);
+      expect(new URL(await hook(page).shareUrl()).searchParams.has('size')).toBe(false);
     });
   });
 
@@ -186,7 +193,7 @@ describe('the URL', () => {
       const twist = await page.$('::-p-aria([name="Twist (radians per unit)"])');
       expect(twist).not.toBeNull();
       expect(await page.$$eval('.lil-gui input', (inputs) => inputs.map((i) => i.value))).toContain('2.5');
-      expect(await page.evaluate(() => window.shaderEngine.loadShader('examples/pattern.glsl'))).toEqual({ ok: true });
+      expect(await hook(page).loadShader('examples/pattern.glsl')).toEqual({ ok: true });
       expect((await info(page)).controls).toEqual({});
       expect(await page.$('::-p-aria([name="Twist (radians per unit)"])')).toBeNull();
       expect(await page.$$eval('.lil-gui .lil-title', (els) => els.map((e) => e.textContent.trim()))).not.toContain('Shader controls');
@@ -201,14 +208,14 @@ describe('the URL', () => {
       await goto('?size=96x54&time=0');
       expect((await info(page)).liveControls).toBe('constants');
       const before = await readPixels(page);
-      await page.evaluate(() => window.shaderEngine.setControls({ CONE_HEIGHT: 2.6 }));
+      await hook(page).setControls({ CONE_HEIGHT: 2.6 });
       expect((await info(page)).liveControls).toBe('uniforms');
       const moving = await readPixels(page);
       await page.waitForFunction(() => window.shaderEngine.info().liveControls === 'constants', { polling: 50, timeout: 10000 });
       const still = await readPixels(page);
       expect(sameImage(still, before)).toBe(false); // the change is drawn ...
       expect(differingPixels(moving, still, 2).count).toBe(0); // ... the same by both forms
-      await page.evaluate(() => window.shaderEngine.setControls({ CONE_HEIGHT: 1.7 }));
+      await hook(page).setControls({ CONE_HEIGHT: 1.7 });
       expect(differingPixels(await readPixels(page), before, 2).count).toBe(0);
     });
   });

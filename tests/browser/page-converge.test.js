@@ -10,6 +10,7 @@ import { renderReference } from '../../src/reference/render.js';
 import { SHADER_FILE } from '../support/config.js';
 import { decodeRgba } from '../support/page.js';
 import { info, withPage, sharePageAcrossTests } from '../support/page-helpers.js';
+import { hook } from '../support/hook.js';
 
 // not a test of loading the page: the tests share one, brought to each view by open()
 sharePageAcrossTests();
@@ -26,20 +27,20 @@ describe('Converge when still', () => {
   test(`${FRAMES} still frames of the built-in raytracer match the float64 reference with ${FRAMES} samples; a change starts again`, async () => {
     await withPage(async ({ page, goto }) => {
       await goto(`?size=${WIDTH}x${HEIGHT}&time=0`);
-      await page.evaluate((frames) => window.shaderEngine.setConverging(true, { frames }), FRAMES);
+      await hook(page).setConverging(true, { frames: FRAMES });
       expect((await info(page)).controls.SHOW_SAMPLE_COUNT).toBe(1); // the count is shown
       // without the count drawn over it: the picture Screenshot saves
-      await page.evaluate(() => window.shaderEngine.setControls({ SHOW_SAMPLE_COUNT: 0 }));
+      await hook(page).setControls({ SHOW_SAMPLE_COUNT: 0 });
       // the compiles settle (the live controls end as constants); a Restart then clears the sum
       await page.waitForFunction(() => window.shaderEngine.info().liveControls === 'constants', { polling: 100 });
-      await page.evaluate(() => window.shaderEngine.restart());
+      await hook(page).restart();
       await page.waitForFunction((n) => window.shaderEngine.info().stillFrames >= n, { polling: 100 }, FRAMES);
       const state = await info(page);
       expect(state.converging).toBe(true);
       expect(state.playing).toBe(false);
       expect(state.stillFrames).toBe(FRAMES); // and no more: it stops when it has them
 
-      const shot = await page.evaluate(() => window.shaderEngine.capture());
+      const shot = await hook(page).capture();
       const image = { width: shot.width, height: shot.height, data: decodeRgba(shot.data, shot.width, shot.height, 'capture') };
       const source = fs.readFileSync(SHADER_FILE, 'utf8');
       const reference = renderReference(
@@ -54,16 +55,16 @@ describe('Converge when still', () => {
 
       // the camera moves: the sum starts again from the new view's first sample
       const moved = [40, 30, 40, -30];
-      await page.evaluate(() => window.shaderEngine.setConverging(true, { frames: 1 }));
+      await hook(page).setConverging(true, { frames: 1 });
       await page.waitForFunction(() => window.shaderEngine.info().stillFrames === 1, { polling: 50 });
       const before = (await info(page)).frame;
-      await page.evaluate((mouse) => window.shaderEngine.setMouse(mouse), moved);
+      await hook(page).setMouse(moved);
       await page.waitForFunction(
         (f) => window.shaderEngine.info().frame > f && window.shaderEngine.info().stillFrames === 1,
         { polling: 50 },
         before,
       );
-      const restarted = await page.evaluate(() => window.shaderEngine.capture());
+      const restarted = await hook(page).capture();
       const first = renderReference(source, { width: WIDTH, height: HEIGHT, time: 0, mouse: moved }, { mode: 'progressive', samples: 1 });
       const restartError = imageError(
         { width: WIDTH, height: HEIGHT, data: decodeRgba(restarted.data, WIDTH, HEIGHT, 'capture after the camera moved') },
@@ -73,7 +74,7 @@ describe('Converge when still', () => {
       expect(restartError.rmse).toBeLessThan(RMSE_BOUND);
 
       // off again: the single-pass shader as it was
-      await page.evaluate(() => window.shaderEngine.setConverging(false));
+      await hook(page).setConverging(false);
       const after = await info(page);
       expect(after.converging).toBe(false);
       expect(after.fileName).toBe('shaders/raytrace.glsl');
@@ -83,20 +84,20 @@ describe('Converge when still', () => {
   test('while converging, Compare and the path say why they are not there and how to turn it off', async () => {
     await withPage(async ({ page, goto }) => {
       await goto(`?size=${WIDTH}x${HEIGHT}&time=0`);
-      await page.evaluate(() => window.shaderEngine.setConverging(true, { frames: 2 }));
+      await hook(page).setConverging(true, { frames: 2 });
       const refused = await page.evaluate(() =>
         window.shaderEngine.compareWithFloat64().then(
           () => null,
           (e) => e.message,
         ),
       );
-      for (const said of [refused, (await page.evaluate(() => window.shaderEngine.inspect(20, 20))).pathNote]) {
+      for (const said of [refused, (await hook(page).inspect(20, 20)).pathNote]) {
         expect(said).toMatch(/Converge when still.*turn that off \(Controls → View\)/);
         expect(said).not.toMatch(/buffers of its own/);
       }
       // off again: both are there
-      await page.evaluate(() => window.shaderEngine.setConverging(false));
-      const readout = await page.evaluate(() => window.shaderEngine.inspect(20, 20));
+      await hook(page).setConverging(false);
+      const readout = await hook(page).inspect(20, 20);
       expect(readout.path?.rays.length).toBeGreaterThan(0);
     });
   });
@@ -125,7 +126,7 @@ describe('Converge when still', () => {
   test("converging frames are in the frame-time graph as they are drawn, not piled onto the next Play's", async () => {
     await withPage(async ({ page, goto }) => {
       await goto(`?size=${WIDTH}x${HEIGHT}&time=0`);
-      await page.evaluate(() => window.shaderEngine.setConverging(true, { frames: 40 }));
+      await hook(page).setConverging(true, { frames: 40 });
       await page.waitForFunction(() => window.shaderEngine.info().stillFrames >= 12, { polling: 50 });
       const graphFrames = () => page.$eval('#toolbar canvas.graph', (c) => Number(/** @type {HTMLElement} */ (c).dataset.frames ?? 0));
       expect(await graphFrames(), 'the frames drawn while converging are in the graph').toBeGreaterThanOrEqual(8);
@@ -135,9 +136,9 @@ describe('Converge when still', () => {
         polling: 50,
       });
       // Play: the graph starts again with the frames played, nothing left over from converging
-      await page.evaluate(() => window.shaderEngine.setConverging(false));
+      await hook(page).setConverging(false);
       const before = (await info(page)).frame;
-      await page.evaluate(() => window.shaderEngine.play());
+      await hook(page).play();
       await page.waitForFunction((f) => window.shaderEngine.info().frame >= f + 3, { polling: 20 }, before);
       const [inGraph, played] = await page.evaluate(() => [
         Number(document.querySelector('#toolbar canvas.graph').getAttribute('data-frames')),

@@ -17,11 +17,15 @@ import {
   withControl,
   withPage,
 } from '../support/page-helpers.js';
+import { hook } from '../support/hook.js';
 
 afterAll(disconnect);
 
 const PATTERN = '?shader=examples/pattern.glsl';
-const playing = (page) => page.evaluate(() => window.shaderEngine.info().playing);
+const playing = (page) =>
+  hook(page)
+    .info()
+    .then((r) => r.playing);
 const whenPlaying = (page, value) => page.waitForFunction((v) => window.shaderEngine.info().playing === v, { polling: 20 }, value);
 
 /** The overlap of two boxes, in CSS px². */
@@ -118,7 +122,7 @@ describe('layout', () => {
         expect(canvas.width).toBeGreaterThan(900);
 
         await (await button(page, 'Edit shader')).click();
-        await page.evaluate(() => window.shaderEngine.setSource('void mainImage(out vec4 c, in vec2 p) { c = vec4(nope); }\n'));
+        await hook(page).setSource('void mainImage(out vec4 c, in vec2 p) { c = vec4(nope); }\n');
         await page.waitForFunction(() => !document.getElementById('overlay').hidden, { polling: 20 });
         const alert = await box(page, '#overlay');
         expect(overlap(alert, await box(page, PANEL)), 'the error box under the panel (px²)').toBe(0);
@@ -203,9 +207,9 @@ describe('links', () => {
   test('"Copy link" pins the size only when it was fixed, and says that a dropped image is not in it', async () => {
     await withPage(async ({ page, goto }) => {
       await goto(`${PATTERN}&time=1`);
-      expect(new URL(await page.evaluate(() => window.shaderEngine.shareUrl())).searchParams.has('size')).toBe(false);
+      expect(new URL(await hook(page).shareUrl()).searchParams.has('size')).toBe(false);
       await goto(`${PATTERN}&time=1&size=160x90`);
-      expect(new URL(await page.evaluate(() => window.shaderEngine.shareUrl())).searchParams.get('size')).toBe('160x90');
+      expect(new URL(await hook(page).shareUrl()).searchParams.get('size')).toBe('160x90');
 
       // drop an image on the page: it goes into iChannel0, and the link cannot carry it
       await page.evaluate(async () => {
@@ -226,15 +230,19 @@ describe('links', () => {
     const source = `// edited\n${solid(20, 200, 90)}`;
     await withPage(async ({ page, goto }) => {
       await goto(`${PATTERN}&time=1&size=64x36`);
-      await page.evaluate((s) => window.shaderEngine.setSource(s), source);
-      link = await page.evaluate(() => window.shaderEngine.shareUrl());
+      await hook(page).setSource(source);
+      link = await hook(page).shareUrl();
     });
     const url = new URL(link);
     expect(url.hash).toMatch(/^#source=[A-Za-z0-9_-]+&name=[^&]+$/);
     expect(url.searchParams.has('shader')).toBe(false);
     await withPage(async ({ page, goto }) => {
       await goto(url.search + url.hash);
-      expect(await page.evaluate(() => window.shaderEngine.info().origin)).not.toBe('builtin');
+      expect(
+        await hook(page)
+          .info()
+          .then((r) => r.origin),
+      ).not.toBe('builtin');
       expect(pixel(await readPixels(page), 10, 10)).toEqual([20, 200, 90]);
 
       // a source that does not compress below the limit: the link says so instead
@@ -244,7 +252,7 @@ describe('links', () => {
         x = (x * 1103515245 + 12345) % 2147483648;
         noise += String.fromCharCode(33 + (x % 90));
       }
-      await page.evaluate((s) => window.shaderEngine.setSource(s), `// ${noise}\n${solid(1, 2, 3)}`);
+      await hook(page).setSource(`// ${noise}\n${solid(1, 2, 3)}`);
       await (await button(page, 'Copy link')).click();
       await page.waitForFunction(() => /too long/i.test(document.getElementById('toast').textContent), { polling: 20 });
     });
@@ -259,7 +267,7 @@ describe('links', () => {
       await withControl(page, 'Enter');
       await page.waitForFunction(() => window.shaderEngine.info().fileName === 'raytrace.glsl (edited)', { polling: 50 });
       edited = await editorText(page);
-      link = await page.evaluate(() => window.shaderEngine.shareUrl());
+      link = await hook(page).shareUrl();
     });
     const url = new URL(link);
     expect(url.hash).toMatch(/^#patch=[A-Za-z0-9_-]+&base=builtin&hash=[0-9a-f]{8}&name=/);
@@ -289,7 +297,7 @@ describe('the frame-time readout', () => {
       await recordReadouts(page);
       await page.goto(`${context.baseUrl}/?size=640x360&SAMPLES=4`, { waitUntil: 'load' });
       await page.waitForFunction(() => window.shaderEngine, { polling: 50 });
-      await page.evaluate(() => window.shaderEngine.ready);
+      await hook(page).ready();
       // once the page's first frame is out of the two seconds (it comes unevenly, after the compile)
       await page.waitForFunction(() => /** @type {any} */ (window).__readouts.filter(([t, , n]) => /fps/.test(t) && n > 2500).length >= 5, {
         polling: 100,

@@ -21,6 +21,7 @@ import {
   withControl,
   withPage,
 } from '../support/page-helpers.js';
+import { hook } from '../support/hook.js';
 
 afterAll(disconnect);
 
@@ -152,7 +153,7 @@ describe('defect 4: the editor was a bare text box', () => {
       // not compiled, and still kept
       await page.reload({ waitUntil: 'load' });
       await page.waitForFunction(() => window.shaderEngine, { polling: 50 });
-      await page.evaluate(() => window.shaderEngine.ready);
+      await hook(page).ready();
       expect(await editorText(page)).toBe(edited);
       expect(await info(page)).toMatchObject({ fileName: 'pattern.glsl (edited)', origin: 'editor', shaderUrl: 'examples/pattern.glsl' });
       const note = await page.waitForSelector('#restored-note', { visible: true });
@@ -165,7 +166,7 @@ describe('defect 4: the editor was a bare text box', () => {
       expect(await page.$('#restored-note')).toBeNull();
       await page.reload({ waitUntil: 'load' });
       await page.waitForFunction(() => window.shaderEngine, { polling: 50 });
-      await page.evaluate(() => window.shaderEngine.ready);
+      await hook(page).ready();
       expect(await editorText(page)).toBe(file);
       expect(await page.$('#restored-note')).toBeNull();
       expect((await info(page)).fileName).toBe('pattern.glsl');
@@ -197,7 +198,7 @@ describe('defect 1: an edited or pasted shader kept the previous file name', () 
       await pasteIntoEditor(page, solid(10, 20, 30));
       await page.waitForFunction(() => document.getElementById('overlay').hidden, { polling: 50 });
       // the new shader's first frame is on the canvas (compiled is not yet drawn): the Screenshot is of it
-      await page.evaluate(() => window.shaderEngine.readPixels());
+      await hook(page).readPixels();
       await (await button(page, 'Download .glsl')).click();
       await (await button(page, 'Screenshot')).click();
       await page.waitForFunction(() => /** @type {any} */ (window).__saved.length === 2, { polling: 50 });
@@ -209,7 +210,7 @@ describe('defect 1: an edited or pasted shader kept the previous file name', () 
       // an edit of the file: the file's name, marked as edited
       await page.reload({ waitUntil: 'load' });
       await page.waitForFunction(() => window.shaderEngine, { polling: 50 });
-      await page.evaluate(() => window.shaderEngine.ready);
+      await hook(page).ready();
       await (await button(page, 'Discard edits')).click(); // the paste was kept: back to the file
       await page.waitForFunction(() => window.shaderEngine.info().fileName === 'shaders/raytrace.glsl', { polling: 50 });
       const saved2 = await recordDownloads(page);

@@ -12,6 +12,7 @@ import { button, info, nextFrame, openEditor, pixel, typeInEditor, withControl, 
 import { SHORT_TIMEOUTS } from '../support/config.js';
 import fs from 'node:fs';
 import path from 'node:path';
+import { hook } from '../support/hook.js';
 
 /**
  * A shader whose pixels cost WORK loop trips each (rows below HEAVY_ROWS only, when that is
@@ -81,7 +82,7 @@ async function withHeavyShader(body) {
  */
 async function hangOnFirstBand(page, goto, base) {
   await goto(`?shader=${base}/heavy.glsl&${SIZE}&WORK=0`);
-  await page.evaluate((work) => window.shaderEngine.setControls({ WORK: work, HEAVY_ROWS: 8 }), HANGING_WORK);
+  await hook(page).setControls({ WORK: HANGING_WORK, HEAVY_ROWS: 8 });
   await page.waitForFunction(() => document.documentElement.dataset.hung === 'true', { polling: 100, timeout: HANG_AFTER_MS + 30_000 });
 }
 
@@ -131,7 +132,7 @@ describe('heavy frames are drawn in bands, and the page keeps answering', () => 
         // would have finished
         const changed = Date.now();
         const light = await nextFrame(page);
-        await page.evaluate(() => window.shaderEngine.setControls({ WORK: 0, SHADE: 1 }));
+        await hook(page).setControls({ WORK: 0, SHADE: 1 });
         const image = await light();
         const appliedMs = Date.now() - changed;
         expect(pixel(image, 0, 0)).toEqual([255, 128, 0]);
@@ -268,9 +269,9 @@ describe('the page never comes back with the shader that hung', () => {
         expect(note.name).toBe('heavy.glsl');
         expect(note.back.values.WORK).toBe(0);
         // what Chrome's GPU watchdog does on real hardware: the context goes, and comes back
-        await page.evaluate(() => window.shaderEngine.loseContext());
+        await hook(page).loseContext();
         await page.waitForFunction(() => window.shaderEngine.info().contextLost, { polling: 50 });
-        await page.evaluate(() => window.shaderEngine.restoreContext());
+        await hook(page).restoreContext();
         await page.waitForFunction(() => !window.shaderEngine.info().contextLost && window.shaderEngine.info().controls.WORK === 0, {
           polling: 100,
           timeout: 60_000,
@@ -301,8 +302,8 @@ describe('a shader that never finishes', () => {
         }, OWN_BROWSER_TIMEOUTS);
         await page.goto(`${baseUrl}/?shader=${base}/heavy.glsl&${SIZE}&WORK=0`, { waitUntil: 'load' });
         await page.waitForFunction(() => window.shaderEngine, { polling: 50 });
-        await page.evaluate(() => window.shaderEngine.ready);
-        const outcome = await page.evaluate((url) => window.shaderEngine.loadShader(url), `${base}/endless.glsl`);
+        await hook(page).ready();
+        const outcome = await hook(page).loadShader(`${base}/endless.glsl`);
         expect(outcome, 'it compiles; it is drawing it that never ends').toEqual({ ok: true });
         // the first band is a program's first draw: "compiling" for compileHangMs, then hung;
         // the rest is slack for a machine under load (20 s of it was not enough beside a benchmark)

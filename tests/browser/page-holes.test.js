@@ -13,6 +13,7 @@ import { makeImage, writePng } from '../support/images.js';
 import { disconnect } from '../support/page.js';
 import { hangUrl, redirectUrl } from '../support/routes.js';
 import { info, overlayText, pixel, readPixels, solid, withPage, withServedDir } from '../support/page-helpers.js';
+import { hook } from '../support/hook.js';
 
 afterAll(disconnect);
 
@@ -112,7 +113,11 @@ describe('a load that never gets an answer ends with a message', () => {
             });
           expect(Date.now() - started).toBeGreaterThanOrEqual(LOAD_TIMEOUT_MS);
           expect(await overlayText(page)).toContain(`Could not load ${url}`);
-          expect(await page.evaluate(() => window.shaderEngine.ready.then(() => 'drawn'))).toBe('drawn');
+          expect(
+            await hook(page)
+              .ready()
+              .then(() => 'drawn'),
+          ).toBe('drawn');
           expect((await info(page)).origin).toBe('builtin');
           expect(
             warnings.some((w) => w.includes(`shader=${url}`) && w.includes(TIMED_OUT)),

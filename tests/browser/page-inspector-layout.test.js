@@ -9,6 +9,7 @@
 import { afterAll, describe, expect, test } from 'vitest';
 import { disconnect } from '../support/page.js';
 import { withPage, sharePageAcrossTests } from '../support/page-helpers.js';
+import { hook } from '../support/hook.js';
 
 // not a test of loading the page: the tests share one, brought to each view by open()
 sharePageAcrossTests();
@@ -72,11 +73,11 @@ describe('the inspector covers nothing it describes', () => {
     await withPage(
       async ({ page, goto }) => {
         await goto('?time=0&SAMPLES=1&scale=0.25'); // the canvas fills its place, at a sixteenth of its pixels
-        await page.evaluate(() => window.shaderEngine.compareWithFloat64());
-        const { w, h } = await page.evaluate(() => ({ w: window.shaderEngine.info().width, h: window.shaderEngine.info().height }));
+        await hook(page).compareWithFloat64();
+        const { width: w, height: h } = await hook(page).info();
         for (const [u, v] of PINS) {
           const [x, y] = [Math.floor(u * w), h - 1 - Math.floor(v * h)];
-          await page.evaluate((px, py) => window.shaderEngine.inspect(px, py), x, y);
+          await hook(page).inspect(x, y);
           const g = await geometry(page);
           const where = `pixel ${x}, ${y} pinned: ${JSON.stringify(g)}`;
           expect(g.readout && g.compare && g.pin, where).toBeTruthy();
@@ -138,7 +139,7 @@ describe('a pixel pinned with a click: the magnifier then covers no box', () => 
     await withPage(
       async ({ page, goto }) => {
         await goto('?time=0&SAMPLES=1&scale=0.5');
-        await page.evaluate(() => window.shaderEngine.compareWithFloat64());
+        await hook(page).compareWithFloat64();
         await page.keyboard.press('KeyI'); // Inspect on
         const { canvas } = await geometry(page);
         let clicked = 0;

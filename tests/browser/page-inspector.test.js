@@ -12,6 +12,7 @@ import { SHADER_FILE } from '../support/config.js';
 import { disconnect } from '../support/page.js';
 import { button, canvasBox, info, readPixels, withPage } from '../support/page-helpers.js';
 import { exportOf } from '../support/page-multipass-helpers.js';
+import { hook } from '../support/hook.js';
 
 afterAll(disconnect);
 
@@ -24,7 +25,7 @@ const DEFAULT_VIEW = `?size=${SIZE.join('x')}&time=0`;
 const U = 2 ** -24;
 
 /** The inspector's readout of pixel (x, y), y from the bottom. @returns {Promise<import('../globals.js').Readout>} */
-const inspect = (page, x, y) => page.evaluate((px, py) => window.shaderEngine.inspect(px, py), x, y);
+const inspect = (page, x, y) => hook(page).inspect(x, y);
 
 /** The RGBA bytes of a frame at pixel (x, y), y from the bottom. */
 function byteAt(image, x, y) {
@@ -108,10 +109,8 @@ describe('the pixel inspector', () => {
       await withPage(
         async ({ page, goto }) => {
           await goto(DEFAULT_VIEW);
-          if (shader.setSource)
-            expect(await page.evaluate((glsl) => window.shaderEngine.setSource(glsl), shader.setSource)).toEqual({ ok: true });
-          if (shader.setProject)
-            expect((await page.evaluate((json) => window.shaderEngine.setProject(json), shader.setProject)).ok).toBe(true);
+          if (shader.setSource) expect(await hook(page).setSource(shader.setSource)).toEqual({ ok: true });
+          if (shader.setProject) expect((await hook(page).setProject(shader.setProject)).ok).toBe(true);
           const image = await readPixels(page);
           for (const [x, y] of pixels) {
             const readout = await inspect(page, x, y);
@@ -136,7 +135,9 @@ describe('the pixel inspector', () => {
             if (shader.setSource) expect(readout.path, 'no path for a shader that is not the raytracer').toBe(null);
           }
           if (shader.setSource) {
-            const last = await page.evaluate(() => window.shaderEngine.inspection().readout);
+            const last = await hook(page)
+              .inspection()
+              .then((r) => r.readout);
             expect(last.color[2], 'blue past 1, shown as it is').toBeGreaterThan(1);
           }
         },
@@ -199,13 +200,13 @@ describe('the pixel inspector', () => {
             )
             .then((handle) => handle.jsonValue());
 
-        await page.evaluate(() => window.shaderEngine.setTime(2.5)); // the camera turns 4° a second
+        await hook(page).setTime(2.5); // the camera turns 4° a second
         const later = await readoutAt(2.5);
         expect(later.color, 'another colour once the camera has turned').not.toEqual(first.color);
         expect(withinRounding(later.color, byteAt(await readPixels(page), x, y))).toBe(true);
 
         // a frame under way may still have the old light: the readout that has another colour is the new light's
-        await page.evaluate(() => window.shaderEngine.setControls({ LIGHT_POSITION: [4, 3, 2] }));
+        await hook(page).setControls({ LIGHT_POSITION: [4, 3, 2] });
         const lit = await readoutOtherThan(later.color);
         expect(withinRounding(lit.color, byteAt(await readPixels(page), x, y))).toBe(true);
       },
@@ -223,15 +224,15 @@ describe('the pixel inspector', () => {
         // the centre of pixel (40, 179 - 30): 40 columns in, 30 rows down
         await page.mouse.click(box.left + (40.5 / 320) * box.width, box.top + (30.5 / 180) * box.height);
         await page.waitForFunction(() => window.shaderEngine.inspection().readout?.complete, { polling: 50 });
-        const state = await page.evaluate(() => window.shaderEngine.inspection());
+        const state = await hook(page).inspection();
         expect(state.pinned).toMatchObject({ x: 40, y: 149 });
         expect((await info(page)).mouse, 'the click went to the inspector, not to iMouse').toEqual([0, 0, 0, 0]);
         expect(await page.$eval('.inspector', (p) => p.textContent)).toMatch(/fragCoord \(40\.5, 149\.5\)/);
         expect(state.readout.pathNote).toMatch(/built-in raytracer/);
         await page.keyboard.press('Escape');
-        expect((await page.evaluate(() => window.shaderEngine.inspection())).pinned).toBe(null);
+        expect((await hook(page).inspection()).pinned).toBe(null);
         await page.keyboard.press('KeyI');
-        expect((await page.evaluate(() => window.shaderEngine.inspection())).active).toBe(false);
+        expect((await hook(page).inspection()).active).toBe(false);
         expect(await page.$eval('.inspector', (p) => /** @type {HTMLElement} */ (p).hidden)).toBe(true);
       },
       { viewport: VIEWPORT },
@@ -243,9 +244,9 @@ describe('the pixel inspector', () => {
       async ({ page, goto }) => {
         await goto(DEFAULT_VIEW);
         const before = await inspect(page, 96, 90);
-        await page.evaluate(() => window.shaderEngine.loseContext());
+        await hook(page).loseContext();
         await page.waitForFunction(() => /GPU context was lost/.test(document.querySelector('.inspector').textContent), { polling: 50 });
-        await page.evaluate(() => window.shaderEngine.restoreContext());
+        await hook(page).restoreContext();
         // the path probe died with the context: it is compiled again
         const after = await page
           .waitForFunction(

@@ -29,6 +29,7 @@ import {
   withServedDir,
 } from '../support/page-helpers.js';
 import { captureDownloads } from '../support/downloads.js';
+import { hook } from '../support/hook.js';
 
 afterAll(disconnect);
 
@@ -128,7 +129,7 @@ describe('the editor', () => {
           window.shaderEngine.info().origin === 'editor' &&
           !document.querySelector('.lil-gui .lil-title')?.parentElement.textContent.includes('Twist'),
       );
-      await page.evaluate(() => window.shaderEngine.readPixels()); // settles the compile
+      await hook(page).readPixels(); // settles the compile
       expect(allPixels(await readPixels(page), [255, 0, 255])).toBe(true);
       expect(await folders()).not.toContain('Shader controls');
       expect((await info(page)).controls).toEqual({});
@@ -197,7 +198,7 @@ describe('dropping files on the page', () => {
         await chooser.accept([local]);
         await page.waitForFunction(() => document.querySelector('.lil-gui').textContent.includes('iChannel2… (2×2)'));
         expect(pixel(await readPixels(page), 120, 45)).toEqual([30, 220, 90]);
-        expect(await page.evaluate(() => window.shaderEngine.shareUrl())).toContain(`iChannel1=${base}/blue.png`);
+        expect(await hook(page).shareUrl()).toContain(`iChannel1=${base}/blue.png`);
         await (await button(page, 'Clear iChannel1')).click();
         await page.waitForFunction(() => !document.querySelector('.lil-gui').textContent.includes('(3×5)'));
         expect(pixel(await readPixels(page), 20, 45)).toEqual([0, 0, 0]);
@@ -257,7 +258,7 @@ describe('output', () => {
     await withPage(async ({ page, context, goto }) => {
       await allowClipboard(page, context.baseUrl);
       await goto(`?shader=examples/raymarch.glsl&${SIZE}`); // playing, default controls
-      await page.evaluate(() => window.shaderEngine.setControls({ TWIST: 2.25, ALBEDO: [0.2, 0.5, 0.9] }));
+      await hook(page).setControls({ TWIST: 2.25, ALBEDO: [0.2, 0.5, 0.9] });
       // a real drag on the canvas
       const box = await page.evaluate(() => document.getElementById('view').getBoundingClientRect().toJSON());
       await page.mouse.move(box.left + 30.5, box.top + 20.5);
@@ -266,12 +267,12 @@ describe('output', () => {
       await page.mouse.up();
       await page.keyboard.press('Space'); // pause where it is
       await page.waitForFunction(() => !window.shaderEngine.info().playing);
-      await page.evaluate(() => window.shaderEngine.setTime(3.5));
+      await hook(page).setTime(3.5);
       original = await readPixels(page);
       await (await button(page, 'Copy link')).click();
       await page.waitForFunction(() => document.getElementById('toast').textContent.startsWith('Copied a link'));
       link = await page.evaluate(() => navigator.clipboard.readText());
-      expect(link).toBe(await page.evaluate(() => window.shaderEngine.shareUrl()));
+      expect(link).toBe(await hook(page).shareUrl());
     });
     const url = new URL(link);
     expect(Object.fromEntries(url.searchParams)).toEqual({

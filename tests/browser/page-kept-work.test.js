@@ -9,6 +9,7 @@ import { singlePass } from '../../src/shadertoy/multipass.js';
 import { allowClipboard, button, editorText, info, pasteIntoEditor, solid, typeInEditor, withControl } from '../support/page-helpers.js';
 import { withPage, withServedDir } from '../support/page-helpers.js';
 import { writeFiles } from '../support/page-multipass-helpers.js';
+import { hook } from '../support/hook.js';
 
 const SIZE = 'size=64x36&time=1';
 
@@ -25,7 +26,7 @@ async function freshPage(page, goto, query) {
 async function reload(page) {
   await page.reload({ waitUntil: 'load' });
   await page.waitForFunction(() => window.shaderEngine, { polling: 50 });
-  await page.evaluate(() => window.shaderEngine.ready);
+  await hook(page).ready();
 }
 
 /** Edits the built-in raytracer in the editor and runs it: "raytrace.glsl (edited)". */
@@ -60,7 +61,7 @@ describe('a restored note belongs to the text it restored', () => {
       await withPage(async ({ page, goto }) => {
         await freshPage(page, goto, `?${SIZE}`);
         // the note the watchdog leaves: hung.glsl hung, the built-in raytracer had finished a frame
-        const back = await page.evaluate(() => window.shaderEngine.info());
+        const back = await hook(page).info();
         const note = {
           key: projectKey(singlePass(hung), {}),
           name: 'hung.glsl',
@@ -114,7 +115,7 @@ describe('a link opens what it names', () => {
         const compiled = (await info(page)).compiled;
         await pasteIntoEditor(page, colour);
         await page.waitForFunction((n) => window.shaderEngine.info().compiled > n, { polling: 50 }, compiled);
-        links.push(new URL(await page.evaluate(() => window.shaderEngine.shareUrl())));
+        links.push(new URL(await hook(page).shareUrl()));
       }
       expect(links[0].hash).not.toBe(links[1].hash);
     });
@@ -123,7 +124,7 @@ describe('a link opens what it names', () => {
       expect(await editorText(page)).toBe(solid(200, 0, 0));
       await page.evaluate((hash) => (location.hash = hash), links[1].hash);
       await page.waitForFunction((c) => window.shaderEngine.editorSource() === c, { polling: 50 }, solid(0, 0, 200));
-      const { data } = await page.evaluate(() => window.shaderEngine.readPixels());
+      const { data } = await hook(page).readPixels();
       expect([...Buffer.from(data, 'base64').subarray(0, 3)]).toEqual([0, 0, 200]);
     });
   });
@@ -132,12 +133,10 @@ describe('a link opens what it names', () => {
     await withPage(async ({ page, goto }) => {
       await goto('?size=64x36');
       expect((await info(page)).playing).toBe(true);
-      expect(new URL(await page.evaluate(() => window.shaderEngine.shareUrl())).searchParams.has('time')).toBe(false);
-      await page.evaluate(() => window.shaderEngine.pause());
+      expect(new URL(await hook(page).shareUrl()).searchParams.has('time')).toBe(false);
+      await hook(page).pause();
       const time = (await info(page)).time;
-      expect(new URL(await page.evaluate(() => window.shaderEngine.shareUrl())).searchParams.get('time')).toBe(
-        String(Number(time.toFixed(6))),
-      );
+      expect(new URL(await hook(page).shareUrl()).searchParams.get('time')).toBe(String(Number(time.toFixed(6))));
     });
   });
 });
@@ -157,7 +156,7 @@ describe('kept edits that do not compile, and notes with buttons (issue 24, item
         ),
       );
       expect(outcome, 'the file draws while the edits do not compile').toBe('drawn');
-      const { data } = await page.evaluate(() => window.shaderEngine.readPixels());
+      const { data } = await hook(page).readPixels();
       expect(Math.max(...Buffer.from(data, 'base64')), 'not a black canvas').toBeGreaterThan(100);
       expect(await editorText(page), 'the edits are in the editor').toContain('broken = ;');
       const note = await page.$eval('#restored-note', (n) => n.textContent);

@@ -9,6 +9,7 @@ import { sameImage } from '../support/images.js';
 import { disconnect } from '../support/page.js';
 import { startWatchingServer } from '../support/page-server.js';
 import { info, overlayText, pixel, readPixels, solid, withPage, withServedDir } from '../support/page-helpers.js';
+import { hook } from '../support/hook.js';
 
 afterAll(disconnect);
 
@@ -31,10 +32,10 @@ describe('errors', () => {
 
         // a shader that compiles after it: it draws, and reading it back works (the first
         // compile's error, which `ready` keeps, no longer stands in the way)
-        const outcome = await page.evaluate((source) => window.shaderEngine.setSource(source), solid(0, 255, 0));
+        const outcome = await hook(page).setSource(solid(0, 255, 0));
         expect(outcome).toEqual({ ok: true });
         expect(pixel(await readPixels(page), 3, 3)).toEqual([0, 255, 0]);
-        const shot = await page.evaluate(() => window.shaderEngine.capture({ width: 8, height: 4 }));
+        const shot = await hook(page).capture({ width: 8, height: 4 });
         expect([shot.width, shot.height]).toEqual([8, 4]);
       });
     });
@@ -87,7 +88,7 @@ describe('errors', () => {
         });
 
         // once a shader compiles it plays, as a fresh load of it would, and its Sound tab waits for a key
-        const outcome = await p.evaluate((j) => window.shaderEngine.setProject(j), withSound(solid(0, 255, 0)));
+        const outcome = await hook(p).setProject(withSound(solid(0, 255, 0)));
         expect(outcome.ok, outcome.error).toBe(true);
         expect(await page(p)).toMatchObject({
           button: 'Pause',
@@ -104,12 +105,12 @@ describe('errors', () => {
       await goto(PATTERN);
       const before = await readPixels(page);
       // the context is the render worker's (WEBGL_lose_context there, through the hook)
-      await page.evaluate(() => window.shaderEngine.loseContext());
+      await hook(page).loseContext();
       await page.waitForFunction(
         () => window.shaderEngine.info().contextLost && !(/** @type {HTMLElement} */ (document.querySelector('[role="alert"]')).hidden),
       );
       expect(await overlayText(page)).toContain('GPU context was lost');
-      await page.evaluate(() => window.shaderEngine.restoreContext());
+      await hook(page).restoreContext();
       await page.waitForFunction(
         () => !window.shaderEngine.info().contextLost && /** @type {HTMLElement} */ (document.querySelector('[role="alert"]')).hidden,
       );

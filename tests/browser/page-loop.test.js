@@ -10,6 +10,7 @@ import { findChrome } from '../../src/headless/chrome-path.js';
 import { harnessContext } from '../support/page.js';
 import { pasteIntoEditor, withPage } from '../support/page-helpers.js';
 import { SHORT_TIMEOUTS } from '../support/config.js';
+import { hook } from '../support/hook.js';
 
 /** A shader that never finishes: the loop's exit depends on a sum that never gets there. */
 const ENDLESS_SHADER = `void mainImage(out vec4 fragColor, in vec2 fragCoord) {
@@ -50,9 +51,14 @@ describe('an endless loop pasted over an untitled shader (in a browser of its ow
     await page.browserContext().overridePermissions(baseUrl, ['clipboard-read', 'clipboard-write', 'clipboard-sanitized-write']);
     await page.goto(`${baseUrl}/?shader=examples/pattern.glsl&${SIZE}`, { waitUntil: 'load' });
     await page.waitForFunction(() => window.shaderEngine, { polling: 50 });
-    await page.evaluate(() => window.shaderEngine.ready);
+    await hook(page).ready();
     await page.bringToFront();
-    const frame = async () => Number(await page.evaluate(() => window.shaderEngine.info().frame));
+    const frame = async () =>
+      Number(
+        await hook(page)
+          .info()
+          .then((r) => r.frame),
+      );
     await pasteIntoEditor(page, CHEAP_SHADER);
     await page.waitForFunction(() => window.shaderEngine.info().fileName === 'untitled', { polling: 50 });
     // the cheap shader draws frames (it is the one to go back to), and plays

@@ -11,6 +11,7 @@ import { allowClipboard, button, editorText, info } from '../support/page-helper
 import { openEditor, typeInEditor, withControl, withPage, withServedDir } from '../support/page-helpers.js';
 import { BUFFER_A, IMAGE, WITH_MEDIA, exportOf } from '../support/page-multipass-helpers.js'; // the shaders
 import { dropFile, editorTabs, exportJsonFile, loadNotes, recordSaves, showTab, writeFiles } from '../support/page-multipass-helpers.js'; // the steps
+import { hook } from '../support/hook.js';
 
 afterAll(disconnect);
 
@@ -78,11 +79,11 @@ describe('the whole shader out and back', () => {
         expect(JSON.parse(first.text).Shader.info).toEqual(original.Shader.info);
 
         // back through the page: a single-pass shader first, then the export dropped on the page
-        await page.evaluate(() => window.shaderEngine.setSource('void mainImage(out vec4 c, in vec2 p) { c = vec4(1.0); }'));
+        await hook(page).setSource('void mainImage(out vec4 c, in vec2 p) { c = vec4(1.0); }');
         expect(await editorTabs(page)).toEqual({ names: [], selected: null });
         await dropFile(page, 'trip.json', first.text);
         await named(page, 'Round trip'); // an export goes by its shader's own name
-        await page.evaluate(() => window.shaderEngine.ready);
+        await hook(page).ready();
         expect(await editorTabs(page)).toEqual({ names: ['Common', 'Buffer A', 'Image', 'Sound'], selected: 'Image' });
         expect((await loadNotes(page))?.lines).toHaveLength(1); // the texture, again (the Sound tab plays)
         const second = await exportJsonFile(page);
@@ -103,7 +104,7 @@ describe('the whole shader out and back', () => {
         await typeInEditor(page, '\n// shared edit', 'end');
         await withControl(page, 'Enter');
         await named(page, 'two.json (edited)');
-        link = await page.evaluate(() => window.shaderEngine.shareUrl());
+        link = await hook(page).shareUrl();
         exported = (await exportJsonFile(page)).text;
       });
     });
@@ -134,7 +135,7 @@ describe('the whole shader out and back', () => {
         await typeInEditor(page, '\n// kept common', 'end');
         await page.reload({ waitUntil: 'load' });
         await page.waitForFunction(() => window.shaderEngine, { polling: 50 });
-        await page.evaluate(() => window.shaderEngine.ready);
+        await hook(page).ready();
         expect(await page.$eval('#restored-note', (n) => n.textContent)).toContain('Restored two.json (edited)');
         expect((await info(page)).fileName).toBe('two.json (edited)');
         expect(await editorTabs(page)).toEqual({ names: ['Common', 'Buffer A', 'Image'], selected: 'Image' });
@@ -152,7 +153,7 @@ describe('the whole shader out and back', () => {
         expect(await editorText(page)).toBe(BUFFER_A);
         await page.reload({ waitUntil: 'load' });
         await page.waitForFunction(() => window.shaderEngine, { polling: 50 });
-        await page.evaluate(() => window.shaderEngine.ready);
+        await hook(page).ready();
         expect(await page.$('#restored-note')).toBeNull();
       });
     });

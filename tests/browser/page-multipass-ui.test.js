@@ -18,6 +18,7 @@ import {
 } from '../support/page-helpers.js';
 import { BUFFER_A, COMMON, IMAGE, WITH_MEDIA, exportOf } from '../support/page-multipass-helpers.js'; // the shaders
 import { dropFile, editorTabs, exportJsonFile, loadNotes, showTab, writeFiles } from '../support/page-multipass-helpers.js'; // the steps
+import { hook } from '../support/hook.js';
 
 afterAll(disconnect);
 
@@ -48,7 +49,7 @@ describe('tabs', () => {
         await typeInEditor(page, '\n// edit I', 'end');
         await withControl(page, 'Enter');
         await named(page, 'two.json (edited)');
-        await page.evaluate(() => window.shaderEngine.ready);
+        await hook(page).ready();
         const { model } = fromShadertoyJson((await exportJsonFile(page)).text);
         expect(model.common).toBe(COMMON);
         expect(model.passes.find((p) => p.name === 'Buffer A')?.code).toBe(`${BUFFER_A}\n// edit A`);
@@ -204,7 +205,7 @@ describe('loading Shadertoy JSON', () => {
       await named(page, 'Pasted one');
       expect(await editorTabs(page)).toEqual({ names: ['Common', 'Buffer A', 'Image'], selected: 'Image' });
       expect(await editorText(page)).toBe(IMAGE);
-      await page.evaluate(() => window.shaderEngine.ready);
+      await hook(page).ready();
 
       await pasteIntoEditor(page, '{"renderpass": "no"}');
       await page.waitForFunction(() => document.getElementById('load-notes')?.className === 'error', { polling: 50 });

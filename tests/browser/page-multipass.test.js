@@ -9,6 +9,7 @@ import { unzipSync } from 'fflate';
 import { PNG } from 'pngjs';
 import { describe, expect, test } from 'vitest';
 import { info, nextFrame, pixel, readPixels, withPage, sharePageAcrossTests } from '../support/page-helpers.js';
+import { hook } from '../support/hook.js';
 
 // not a test of loading the page: the tests share one, brought to each view by open()
 sharePageAcrossTests();
@@ -52,7 +53,7 @@ const SHOW_CHANNEL0 = `void mainImage(out vec4 c, in vec2 p) { c = vec4(texelFet
 /** Opens the page and runs `json`, checking it compiled. */
 async function run(page, goto, json, query = SIZE) {
   await goto(`?${query}`);
-  const outcome = await page.evaluate((j) => window.shaderEngine.setProject(j), json);
+  const outcome = await hook(page).setProject(json);
   expect(outcome.error ?? null).toBe(null);
   return outcome;
 }
@@ -135,7 +136,7 @@ describe('Restart, resize and inputs', () => {
       await run(page, goto, COUNTER);
       for (let i = 0; i < 3; i++) await readPixels(page);
       expect(pixel(await readPixels(page), 5, 5)[0]).toBeGreaterThan(3);
-      await page.evaluate(() => window.shaderEngine.restart());
+      await hook(page).restart();
       // the counter starts again with iFrame: one more than iFrame in every frame after
       const [count, frame] = pixel(await readPixels(page), 5, 5);
       expect(frame).toBeLessThan(3);
@@ -229,7 +230,7 @@ describe('Restart, resize and inputs', () => {
     await withPage(async ({ page, goto }) => {
       await run(page, goto, COUNTER);
       for (let i = 0; i < 3; i++) await readPixels(page); // the live buffers have counted a while
-      const result = await page.evaluate(() => window.shaderEngine.record({ format: 'png', frames: 4, fps: 10, width: 64, height: 64 }));
+      const result = await hook(page).record({ format: 'png', frames: 4, fps: 10, width: 64, height: 64 });
       expect([result.width, result.height], 'the canvas size, whatever was asked').toEqual([32, 18]);
       const files = unzipSync(new Uint8Array(Buffer.from(result.data, 'base64')));
       const counts = Object.keys(files)

@@ -8,6 +8,7 @@ import { sayOnce } from '../../src/shared/said-once.js';
 import { disconnect } from '../support/page.js';
 import { withPage } from '../support/page-helpers.js';
 import { loadNotes } from '../support/page-multipass-helpers.js';
+import { hook } from '../support/hook.js';
 
 afterAll(disconnect);
 
@@ -99,7 +100,7 @@ describe('the page says a missing video three passes name once', () => {
     await withPage(
       async ({ page, goto }) => {
         await goto('?time=0&scale=0.25'); // the canvas fills the stage, at a sixteenth of its pixels
-        const result = await page.evaluate((json) => window.shaderEngine.setProject(json), THREE_PASSES);
+        const result = await hook(page).setProject(THREE_PASSES);
         expect(result.ok, result.error).toBe(true);
         const notes = await loadNotes(page);
         expect(notes?.lines, JSON.stringify(notes)).toHaveLength(1);

@@ -14,6 +14,7 @@ import { disconnect } from '../support/page.js';
 import { sameImage } from '../support/images.js';
 import { dataAt, info, readPixels, withPage, withServedDir } from '../support/page-helpers.js';
 import { exportOf } from '../support/page-multipass-helpers.js';
+import { hook } from '../support/hook.js';
 
 afterAll(disconnect);
 
@@ -77,17 +78,17 @@ describe('open(query) gives the page a fresh load of that URL gives', () => {
       await withPage(async ({ page, goto }) => {
         // another state first: another size, time and start mouse, the mouse moved, controls moved, a pixel pinned
         await goto('?size=100x50&time=3&mouse=5,5,5,-5');
-        await page.evaluate(() => window.shaderEngine.setMouse([10, 20, 10, -20]));
-        await page.evaluate(() => window.shaderEngine.setControls({ BOUNCES: 0, SHADOWS: 0 }));
-        await page.evaluate(() => window.shaderEngine.inspect(20, 20));
+        await hook(page).setMouse([10, 20, 10, -20]);
+        await hook(page).setControls({ BOUNCES: 0, SHADOWS: 0 });
+        await hook(page).inspect(20, 20);
         // another order than the fresh loads', a raytracer view first (the moved controls must not carry over)
         for (const query of [3, 6, 0, 5, 2, 4, 1].map((i) => views[i])) {
-          await page.evaluate((q) => window.shaderEngine.open(q), query);
+          await hook(page).open(query);
           const image = await readPixels(page);
           const want = /** @type {{image: any, state: object}} */ (fresh.get(query));
           expect({ ...stateOf(await info(page)), notes: await notesText(page) }, query).toEqual(want.state);
           expect(sameImage(image, want.image), `${query}: open() drew other pixels than a fresh load`).toBe(true);
-          expect((await page.evaluate(() => window.shaderEngine.inspection())).pinned, 'no pixel pinned').toBe(null);
+          expect((await hook(page).inspection()).pinned, 'no pixel pinned').toBe(null);
         }
       });
     });
@@ -105,8 +106,8 @@ describe('a view is drawn once, and its still is frame 0', () => {
       await goto('?shader=examples/inputs.glsl&size=40x20&time=0');
       const frames = [];
       for (const size of ['64x36', '96x54', '30x30', '160x90', '48x27', '128x72', '20x40', '100x50']) {
-        await page.evaluate((q) => window.shaderEngine.open(q), `?shader=examples/inputs.glsl&size=${size}&time=0`);
-        const still = await page.evaluate(() => window.shaderEngine.readFrame());
+        await hook(page).open(`?shader=examples/inputs.glsl&size=${size}&time=0`);
+        const still = await hook(page).readFrame();
         const image = { width: still.width, height: still.height, data: Buffer.from(still.data, 'base64') };
         // inputs.glsl's data cell 0 holds iFrame
         frames.push([still.iFrame, dataAt(image, 5, 5), dataAt(await readPixels(page), 5, 5)]);

@@ -12,6 +12,7 @@ import { afterAll, describe, expect, test } from 'vitest';
 import { disconnect } from '../support/page.js';
 import { button, info, typeInEditor, withControl, withPage } from '../support/page-helpers.js';
 import { captureDownloads } from '../support/downloads.js';
+import { hook } from '../support/hook.js';
 
 afterAll(disconnect);
 
@@ -29,7 +30,7 @@ const expectedColour = (i) => [16 * i, Math.round((100 * i) / FPS), 1000 / FPS];
 /** Opens the page at 64×36 playing the clock shader. */
 async function openClockShader(page, goto) {
   await goto('?size=64x36');
-  const outcome = await page.evaluate((source) => window.shaderEngine.setSource(source), CLOCK_SHADER);
+  const outcome = await hook(page).setSource(CLOCK_SHADER);
   expect(outcome).toEqual({ ok: true });
 }
 
@@ -130,7 +131,7 @@ describe('Recording', () => {
     await withPage(async ({ page, goto }) => {
       await openClockShader(page, goto);
       expect((await info(page)).playing).toBe(true);
-      const result = await page.evaluate((frames, fps) => window.shaderEngine.record({ format: 'webm', frames, fps }), FRAMES, FPS);
+      const result = await hook(page).record({ format: 'webm', frames: FRAMES, fps: FPS });
       expect({ ...result, data: undefined }).toMatchObject({
         format: 'webm',
         frames: FRAMES,
@@ -153,12 +154,8 @@ describe('Recording', () => {
   test("raytracer.record(): a PNG sequence holds one PNG per frame, of the chosen size, each painted with its frame's iFrame, iTime and iTimeDelta", async () => {
     await withPage(async ({ page, goto }) => {
       await openClockShader(page, goto);
-      await page.evaluate(() => window.shaderEngine.pause());
-      const result = await page.evaluate(
-        (frames, fps) => window.shaderEngine.record({ format: 'png', frames, fps, width: 40, height: 30 }),
-        FRAMES,
-        FPS,
-      );
+      await hook(page).pause();
+      const result = await hook(page).record({ format: 'png', frames: FRAMES, fps: FPS, width: 40, height: 30 });
       expect(result).toMatchObject({ format: 'png', mimeType: 'application/zip', frames: FRAMES, width: 40, height: 30 });
       const images = readPngZip(new Uint8Array(Buffer.from(result.data, 'base64')));
       expect(images.map((image) => image.name)).toEqual([0, 1, 2, 3, 4, 5].map((i) => `frame-000${i}.png`));

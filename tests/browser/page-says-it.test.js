@@ -8,6 +8,7 @@ import { openPage } from '../support/page.js';
 import { sameImage } from '../support/images.js';
 import { button, info, openEditor, overlayText, readPixels, recordReadouts, withPage } from '../support/page-helpers.js';
 import { dropFile, loadNotes } from '../support/page-multipass-helpers.js';
+import { hook } from '../support/hook.js';
 
 const SIZE = 'size=64x36&time=0';
 
@@ -99,7 +100,7 @@ describe('say it on the page', () => {
         },
       );
       expect(await page.$eval('.record-status', (s) => s.textContent)).not.toMatch(/positive number/);
-      await page.evaluate(() => window.shaderEngine.cancelRecording());
+      await hook(page).cancelRecording();
     });
   });
 });
@@ -112,7 +113,7 @@ describe('the frame-time readout tells what is happening', () => {
       await recordReadouts(page);
       await page.goto(`${context.baseUrl}/?size=480x270&SAMPLES=16&ADAPTIVE_AA=0`, { waitUntil: 'load' });
       await page.waitForFunction(() => window.shaderEngine, { polling: 50 });
-      await page.evaluate(() => window.shaderEngine.ready);
+      await hook(page).ready();
       await page.waitForFunction(() => window.shaderEngine.info().frame >= 3, { polling: 100 });
       /** @type {string[]} */
       const seen = (await page.evaluate(() => /** @type {any} */ (window).__readouts)).map(([text]) => text);
@@ -134,7 +135,7 @@ describe('the frame-time readout tells what is happening', () => {
   test('at speed 0× time stands still: no frame is drawn again, and the readout says why', async () => {
     await withPage(async ({ page, goto }) => {
       await goto('?size=64x36&BOUNCES=0&SAMPLES=1');
-      await page.evaluate(() => window.shaderEngine.setSpeed(0));
+      await hook(page).setSpeed(0);
       await page.waitForFunction(() => /^Speed 0× · time stands still$/.test(document.querySelector('#toolbar .fps').textContent), {
         polling: 50,
       });

@@ -5,6 +5,7 @@
 
 import { expect, test } from 'vitest';
 import { info, withPage, sharePageAcrossTests } from '../support/page-helpers.js';
+import { hook } from '../support/hook.js';
 
 // not a test of loading the page: the tests share one, brought to each view by open()
 sharePageAcrossTests();
@@ -36,7 +37,7 @@ test("the Torus scene's panel shows the torus's controls and no other scene's; s
     for (const dead of ['Cone height', 'Cone base centre', 'Cone reflectivity', 'Cylinder radius', 'Cylinder reflectivity'])
       expect(torus, `${dead} changes nothing in the Torus scene`).not.toContain(dead);
 
-    await page.evaluate(() => window.shaderEngine.setControls({ SCENE: 0 }));
+    await hook(page).setControls({ SCENE: 0 });
     await page.waitForFunction(() => window.shaderEngine.info().controls.SCENE === 0, { polling: 50 });
     const cone = await shownControls(page);
     expect(cone).toEqual(expect.arrayContaining(['Cone height', 'Cone reflectivity']));
@@ -47,7 +48,7 @@ test("the Torus scene's panel shows the torus's controls and no other scene's; s
 test('Copy link writes a choice by its name, which reads back to the same controls', async () => {
   await withPage(async ({ page, goto }) => {
     await goto(`?${SIZE}&SCENE=2&VIEW=1`);
-    const url = new URL(await page.evaluate(() => window.shaderEngine.shareUrl()));
+    const url = new URL(await hook(page).shareUrl());
     expect([url.searchParams.get('SCENE'), url.searchParams.get('VIEW')]).toEqual(['Torus', 'Normals']);
   });
 });

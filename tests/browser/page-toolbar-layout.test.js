@@ -11,6 +11,7 @@ import { afterAll, describe, expect, test } from 'vitest';
 import { disconnect } from '../support/page.js';
 import { sharePageAcrossTests, withPage } from '../support/page-helpers.js';
 import { dropFile } from '../support/page-multipass-helpers.js';
+import { hook } from '../support/hook.js';
 
 sharePageAcrossTests();
 afterAll(disconnect);
@@ -303,7 +304,7 @@ describe('a shader with a Sound tab: its mute button and level meter crowd nothi
     await withPage(
       async ({ page, goto }) => {
         await goto(QUERY);
-        const result = await page.evaluate((json) => window.shaderEngine.setProject(json), SOUND_PROJECT);
+        const result = await hook(page).setProject(SOUND_PROJECT);
         expect(result.ok, result.error).toBe(true);
         await page.waitForFunction(() => window.shaderEngine.soundState().available, { polling: 50 });
         const where = `${width}x${height}`;
@@ -328,10 +329,10 @@ describe('a shader with a Sound tab: its mute button and level meter crowd nothi
           if (SHORT_LINES.includes(line) || width >= 800) expect(whole, `${where}: "${line}" whole in ${JSON.stringify(s.fps)}`).toBe(true);
 
         // muted: the name stays, its state is aria-pressed
-        await page.evaluate(() => window.shaderEngine.setMuted(true));
+        await hook(page).setMuted(true);
         const muted = await page.$eval('#toolbar .sound-mute', (b) => [b.getAttribute('aria-label'), b.getAttribute('aria-pressed')]);
         expect(muted).toEqual(['Mute sound', 'true']);
-        await page.evaluate(() => window.shaderEngine.setMuted(false));
+        await hook(page).setMuted(false);
         // and the toolbar's own rules still hold: two rows, labels on one line, everything inside
         const g = await toolbarGeometry(page);
         const centres = [...new Set(g.controls.map((c) => Math.round((c.top + c.bottom) / 2 / 8)))];

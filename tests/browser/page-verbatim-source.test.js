@@ -10,6 +10,7 @@ import { describe, expect, test } from 'vitest';
 import { composePassShader, hostControlBlock } from '../../src/shadertoy/header.js';
 import { pixel, readPixels, sharePageAcrossTests, withPage } from '../support/page-helpers.js';
 import { exportOf } from '../support/page-multipass-helpers.js';
+import { hook } from '../support/hook.js';
 
 sharePageAcrossTests();
 
@@ -110,7 +111,7 @@ async function runTabs(page, goto, tabs) {
   await goto(`?${SIZE}`);
   await recordCompiledSources(page);
   await takeCompiledSources(page);
-  return page.evaluate((json) => window.shaderEngine.setProject(json), exportOf(tabs));
+  return hook(page).setProject(exportOf(tabs));
 }
 
 const DRAWS = [

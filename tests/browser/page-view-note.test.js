@@ -5,6 +5,7 @@
 
 import { describe, expect, test } from 'vitest';
 import { withPage, sharePageAcrossTests } from '../support/page-helpers.js';
+import { hook } from '../support/hook.js';
 
 // not a test of loading the page: the tests share one, brought to each view by open()
 sharePageAcrossTests();
@@ -40,9 +41,9 @@ describe('the "Extra samples" view says what it shows', () => {
     await withPage(async ({ page, goto }) => {
       await goto(`?${SIZE}&VIEW=5`);
       expect(await viewNote(page)).toBe(null);
-      await page.evaluate(() => window.shaderEngine.setControls({ ADAPTIVE_AA: 0 }));
+      await hook(page).setControls({ ADAPTIVE_AA: 0 });
       expect(await viewNote(page)).toMatch(/every pixel takes all 16 samples/);
-      await page.evaluate(() => window.shaderEngine.setControls({ VIEW: 0 }));
+      await hook(page).setControls({ VIEW: 0 });
       expect(await viewNote(page)).toBe(null);
     });
   });

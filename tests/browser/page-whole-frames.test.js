@@ -13,6 +13,7 @@ import path from 'node:path';
 import { afterAll, describe, expect, test } from 'vitest';
 import { disconnect } from '../support/page.js';
 import { info, withPage, withServedDir } from '../support/page-helpers.js';
+import { hook } from '../support/hook.js';
 
 afterAll(disconnect);
 
@@ -87,7 +88,7 @@ describe('a heavy shader: built up when still or new, whole frames while playing
             { polling: 100, timeout: PLAY_TIMEOUT_MS },
             from + FRAMES,
           );
-          await page.evaluate(() => window.shaderEngine.pause());
+          await hook(page).pause();
           const playing = await shownSince(page, mark);
           const frames = new Set(playing.map((colours) => colours.join()));
           expect(frames.size, `frames shown while playing: ${JSON.stringify(playing)}`).toBeGreaterThanOrEqual(3);
@@ -95,8 +96,8 @@ describe('a heavy shader: built up when still or new, whole frames while playing
 
           // paused: a still frame (a new iMouse) builds up over the one before, as it is drawn
           const still = (await shownSince(page, 0)).length;
-          await page.evaluate(() => window.shaderEngine.setMouse([10, 10, 0, 0]));
-          await page.evaluate(() => window.shaderEngine.readPixels());
+          await hook(page).setMouse([10, 10, 0, 0]);
+          await hook(page).readPixels();
           const built = await shownSince(page, still);
           expect(torn(built).length, `the still frame shown as it built up: ${JSON.stringify(built)}`).toBeGreaterThan(0);
         },

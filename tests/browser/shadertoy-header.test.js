@@ -9,6 +9,7 @@ import { describe, expect, test } from 'vitest';
 import { composeImageShader, SHADERTOY_HEADER } from '../../src/shadertoy/header.js';
 import { renderRawShader } from '../support/raw-webgl/raw-webgl.js';
 import { sharePageAcrossTests, withPage } from '../support/page-helpers.js';
+import { hook } from '../support/hook.js';
 
 sharePageAcrossTests();
 
@@ -112,7 +113,7 @@ describe('st_assert, as the site defines it', () => {
     };
     await withPage(async ({ page, goto }) => {
       await goto('?size=8x4&time=0');
-      const outcome = await page.evaluate((j) => window.shaderEngine.setProject(j), json);
+      const outcome = await hook(page).setProject(json);
       expect(outcome.ok).toBe(false);
       expect(outcome.error).toMatch(/^Buffer A:2: error: .*st_assert/m);
     });
@@ -158,9 +159,9 @@ describe('the channel structs iCh0 … iCh3', () => {
     };
     await withPage(async ({ page, goto }) => {
       await goto('?size=8x4&time=0');
-      const outcome = await page.evaluate((j) => window.shaderEngine.setProject(j), json);
+      const outcome = await hook(page).setProject(json);
       expect(outcome.error ?? null).toBe(null);
-      const { width, data } = await page.evaluate(() => window.shaderEngine.readPixels());
+      const { width, data } = await hook(page).readPixels();
       const bytes = Buffer.from(data, 'base64');
       for (let x = 0; x < width; x++) {
         const [r, g, b, a] = bytes.subarray(x * 4, x * 4 + 4);

@@ -19,6 +19,7 @@ import { disconnect } from '../support/page.js';
 import { REPO_ROOT } from '../support/config.js';
 import { withPage } from '../support/page-helpers.js';
 import { LEAD_SECONDS, PLAY_SAMPLES, blocksToPlay, driftAt, planPlayback, sampleAt } from '../../src/player/sound/schedule.js';
+import { hook } from '../support/hook.js';
 
 afterAll(disconnect);
 
@@ -54,7 +55,7 @@ const channel = (pcm, c) => Float64Array.from({ length: pcm.length / 2 }, (_, i)
 
 /** The page's samples [time, time + duration) of the shader on it (window.shaderEngine.renderSound). */
 async function pageSound(page, time, duration) {
-  const { data } = await page.evaluate((r) => window.shaderEngine.renderSound(r), { time, duration });
+  const { data } = await hook(page).renderSound({ time, duration });
   const bytes = Buffer.from(data, 'base64');
   return new Int16Array(bytes.buffer, bytes.byteOffset, bytes.byteLength / 2);
 }
@@ -63,7 +64,7 @@ async function pageSound(page, time, duration) {
 async function onPage(sound, body) {
   await withPage(async ({ page, goto }) => {
     await goto('?size=64x36&time=0');
-    const result = await page.evaluate((json) => window.shaderEngine.setProject(json), withSound(sound));
+    const result = await hook(page).setProject(withSound(sound));
     expect(result.ok, result.error).toBe(true);
     await body(page);
   });
@@ -254,9 +255,7 @@ describe("the page: the site's blocks and packing", () => {
 
   test('a WebM recording of a shader with a Sound tab carries an Opus track as long as its frames', async () => {
     await onPage('vec2 mainSound(int samp, float time) { return vec2(0.3 * sin(6.2831853 * 440.0 * time)); }', async (page) => {
-      const recording = await page.evaluate(() =>
-        window.shaderEngine.record({ format: 'webm', frames: 15, fps: 30, width: 64, height: 36 }),
-      );
+      const recording = await hook(page).record({ format: 'webm', frames: 15, fps: 30, width: 64, height: 36 });
       expect(recording.audio).toBe('opus');
       const input = new Input({ source: new BufferSource(Buffer.from(recording.data, 'base64')), formats: ALL_FORMATS });
       const [audio] = await input.getAudioTracks();
@@ -280,7 +279,7 @@ describe("the page's playback, in step with iTime", () => {
     await withPage(async ({ page, goto }) => {
       await goto('?size=64x36&time=0');
       const json = withSound('vec2 mainSound(int samp, float time) {\n  return vec2(nope);\n}');
-      const result = await page.evaluate((j) => window.shaderEngine.setProject(j), json);
+      const result = await hook(page).setProject(json);
       expect(result.ok).toBe(false);
       expect(result.error).toMatch(/^Sound:2: error: .*nope/im);
       expect(result.error).toMatch(/return vec2\(nope\);/);
@@ -330,11 +329,11 @@ describe("the page's playback, in step with iTime", () => {
 
   test("on the page: silent and said so until a key; after a pause and a seek, the sample started is iTime's", async () => {
     await onPage(TONES, async (page) => {
-      const state = () => page.evaluate(() => window.shaderEngine.soundState());
+      const state = () => hook(page).soundState();
       expect(await state()).toMatchObject({ available: true, context: null, plan: null });
       expect(await page.$eval('#sound-note', (n) => n.textContent)).toMatch(/plays once you click or press a key/);
-      await page.evaluate(() => window.shaderEngine.pause());
-      await page.evaluate(() => window.shaderEngine.setTime(7.25));
+      await hook(page).pause();
+      await hook(page).setTime(7.25);
       await page.keyboard.press('Shift'); // the first interaction: the autoplay rule is met
       await page.waitForFunction(() => window.shaderEngine.soundState().context === 'running', { polling: 50 });
       expect(await page.$('#sound-note')).toBeNull();
@@ -348,23 +347,23 @@ describe("the page's playback, in step with iTime", () => {
         expect(Math.abs(plan.sample - (plan.time + LEAD_SECONDS * plan.rate) * SAMPLE_RATE)).toBeLessThanOrEqual(QUANTUM);
         return plan;
       };
-      await page.evaluate(() => window.shaderEngine.play());
+      await hook(page).play();
       const resumed = await inStep(7.25);
       expect(resumed.time).toBe(7.25); // paused at 7.25: it starts there, not where it was before
       await page.waitForFunction(() => window.shaderEngine.soundState().sources > 0, { polling: 20 });
 
-      await page.evaluate(() => window.shaderEngine.setTime(20)); // a seek while playing
+      await hook(page).setTime(20); // a seek while playing
       const sought = await inStep(20);
       expect(sought.time).toBeGreaterThanOrEqual(20);
 
-      await page.evaluate(() => window.shaderEngine.pause());
+      await hook(page).pause();
       await page.waitForFunction(() => window.shaderEngine.soundState().sources === 0, { polling: 20 });
       expect((await state()).plan).toBeNull();
 
-      await page.evaluate(() => window.shaderEngine.setSpeed(2));
-      await page.evaluate(() => window.shaderEngine.play());
+      await hook(page).setSpeed(2);
+      await hook(page).play();
       expect((await inStep(20)).rate).toBe(2);
-      await page.evaluate(() => window.shaderEngine.setMuted(true));
+      await hook(page).setMuted(true);
       expect(await page.$eval('#toolbar .sound-mute', (b) => b.getAttribute('aria-pressed'))).toBe('true');
       await page.evaluate(() => {
         window.shaderEngine.setMuted(false);
