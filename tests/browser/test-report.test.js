@@ -13,7 +13,7 @@ import { afterAll, beforeAll, describe, expect, test } from 'vitest';
 import { main } from '../../src/cli/main.js';
 import { io } from '../../src/api/io.js';
 import { htmlReport } from '../../src/runner/report/html-report.js';
-import { writePng } from '../../src/headless/png.js';
+import { readPng, writePng } from '../../src/headless/png.js';
 import { builtPage } from '../../src/headless/page-server.js';
 import { disconnect, openPage } from '../support/page.js';
 
@@ -105,6 +105,7 @@ describe('index.html of a test run', () => {
   test('opens from file://: every case, failures first with their images, toggles; no request leaves the page', async () => {
     write('cases/pass.glsl', GRADIENT);
     write('cases/changed.glsl', GRADIENT);
+    write('cases/dot.glsl', GRADIENT);
     write('cases/broken.glsl', 'void mainImage(out vec4 c, in vec2 f) {\n    float a = 1.0;\n    c = vec4(nope, 1.0);\n}\n');
     write('cases/allowed.json', json({ video: true }));
     write('cases/unallowed.json', json({ video: true }));
@@ -117,12 +118,24 @@ describe('index.html of a test run', () => {
       }),
     );
     const update = await shaderproof('test', path.join(folder, 'cases'), '--update', '--out', path.join(folder, 'report'));
-    expect(update.out.join('\n')).toMatch(/4 passed, 2 failed/);
+    expect(update.out.join('\n')).toMatch(/5 passed, 2 failed/);
     write('cases/changed.glsl', GRADIENT.replace('0.25', '0.75'));
+    // dot.glsl's reference differs in one pixel, (12, 7): red
+    const dotReference = path.join(folder, 'cases/__references__/dot.glsl.png');
+    const drawn = readPng(dotReference);
+    const actual = [...drawn.data.subarray((7 * 32 + 12) * 4, (7 * 32 + 12) * 4 + 4)].join(',');
+    drawn.data.set([255, 0, 0, 255], (7 * 32 + 12) * 4);
+    writePng(dotReference, drawn);
+    const onePixel = `1 pixel differs from the reference (at most 0 may) at (12, 7): reference 255,0,0,255, actual ${actual}`;
     write('cases/tone.json', tone(445));
     const run = await shaderproof('test', path.join(folder, 'cases'), '--out', path.join(folder, 'report'), '--jobs', '2');
     expect(run.code).toBe(1);
-    expect(run.out.at(-1)).toMatch(/^2 passed, 4 failed, in [\d.]+ s; junit\.xml and index\.html in /);
+    expect(run.out.at(-1)).toMatch(/^2 passed, 5 failed, in [\d.]+ s; junit\.xml and index\.html in /);
+    // one pixel, said in the singular with where it is and both values: the dot line, junit.xml
+    expect(run.out.find((line) => line.startsWith('FAIL  dot.glsl'))?.endsWith(` ms  ${onePixel}`)).toBe(true);
+    const junit = fs.readFileSync(path.join(folder, 'report', 'junit.xml'), 'utf8');
+    expect(junit).toContain(`<testcase classname="shaderproof" name="dot.glsl"`);
+    expect(junit).toContain(`<failure message="${onePixel}">`);
 
     const report = path.join(folder, 'report');
     const { page, errors, requested, open } = await openReport(path.join(report, 'index.html'), report);
@@ -137,12 +150,13 @@ describe('index.html of a test run', () => {
       expect(shown.cases).toEqual([
         ['broken.glsl', 'case fail', true],
         ['changed.glsl', 'case fail', true],
+        ['dot.glsl', 'case fail', true],
         ['tone.json', 'case fail', true],
         ['unallowed.json', 'case fail', true],
         ['allowed.json', 'case pass', false],
         ['pass.glsl', 'case pass', false],
       ]);
-      expect(shown.verdict).toBe('4 failed · 2 passed · 1 went without an input (allowed)');
+      expect(shown.verdict).toBe('5 failed · 2 passed · 1 went without an input (allowed)');
       expect(shown.facts).toMatch(/SwiftShader.*iDate at iTime 0\s*2024-01-15T12:00:00\.000Z/s);
 
       // the changed picture's three images, loaded from the files beside the page
@@ -155,11 +169,11 @@ describe('index.html of a test run', () => {
         ['Actual of changed.glsl', 32],
         ['Diff (red: pixels that differ) of changed.glsl', 32],
       ]);
-      expect(await page.$eval(`${changed} .facts`, (e) => e.textContent)).toMatch(
+      expect(await page.$eval(`${changed} .facts li`, (e) => e.textContent)).toMatch(
         /^32×18: \d+ of 576 pixels differ \([\d.]+%\); the tolerance: at most 0 pixels may, at threshold 0$/,
       );
       // the comparison: a slider, or either image whole; a zoom of whole pixels
-      const top = `${changed} .compare .stack img + img`;
+      const top = `${changed} .compare .top`;
       expect(await page.$eval(top, (img) => getComputedStyle(img).clipPath)).toBe('inset(0px 0px 0px 50%)');
       await page.$eval(`${changed} input[type="range"]`, (slider) => {
         /** @type {HTMLInputElement} */ (slider).value = '20';
@@ -206,6 +220,88 @@ describe('index.html of a test run', () => {
       await page.click('button[data-filter="failed"]');
       expect(await page.$eval(passed, (d) => getComputedStyle(d).display)).toBe('none');
 
+      // one pixel: said in the page, outlined in every view at any zoom; one zoom and one pan for all
+      const dot = '[data-case="dot.glsl"]';
+      await page.click('button[data-filter="all"]');
+      expect(await page.$eval(`${dot} summary .reason`, (e) => e.textContent)).toBe(onePixel);
+      expect(await page.$eval(`${dot} .facts li`, (e) => e.textContent)).toBe(
+        '32×18: 1 of 576 pixels differs (0.17%); the tolerance: at most 0 pixels may, at threshold 0',
+      );
+      /** Each view's image box and outline box, relative to its viewport; the shared zoom. */
+      const views = () =>
+        page.$eval(dot, (c) => ({
+          zoom: /** @type {HTMLElement} */ (c.querySelector('.images')).dataset.zoom,
+          views: [...c.querySelectorAll('.view')].map((view) => {
+            const port = view.getBoundingClientRect();
+            const box = (/** @type {Element} */ e) => {
+              const r = e.getBoundingClientRect();
+              return [r.left - port.left, r.top - port.top, r.width, r.height].map(Math.round);
+            };
+            return {
+              image: view.getAttribute('data-image'),
+              img: box(/** @type {Element} */ (view.querySelector('img'))),
+              mark: box(/** @type {Element} */ (view.querySelector('.mark'))),
+            };
+          }),
+        }));
+      const same = (/** @type {Awaited<ReturnType<typeof views>>} */ got) => {
+        expect(got.views.map((v) => v.image)).toEqual(['reference', 'actual', 'diff', 'compare']);
+        for (const view of got.views) expect(view).toEqual({ ...got.views[0], image: view.image });
+        return got.views[0];
+      };
+      // it opens at 8×, the pixel's outline around (12, 7) a few CSS pixels out
+      const opened = same(await views());
+      expect(opened.img).toEqual([0, 0, 256, 144]);
+      expect(opened.mark).toEqual([12 * 8 - 5, 7 * 8 - 5, 8 + 10, 8 + 10]);
+      // 1×: the outline still a box of 11 CSS pixels around the one pixel
+      await page.click(`${dot} button[data-zoom="1"]`);
+      const whole = same(await views());
+      expect(whole.img.slice(2)).toEqual([32, 18]);
+      expect(whole.mark).toEqual([whole.img[0] + 12 - 5, whole.img[1] + 7 - 5, 11, 11]);
+      // Ctrl+wheel over the actual zooms all four about the pointer, up to 16×: the pixel stays in view
+      await page.click(`${dot} button[data-zoom="8"]`);
+      const actualView = await page.$eval(`${dot} .view[data-image="actual"]`, (v) => {
+        const r = v.getBoundingClientRect();
+        return { x: r.left, y: r.top };
+      });
+      await page.mouse.move(actualView.x + 12.5 * 8, actualView.y + 7.5 * 8);
+      await page.keyboard.down('Control');
+      await page.mouse.wheel({ deltaY: -100 });
+      await page.keyboard.up('Control');
+      const zoomed = await views();
+      expect(zoomed.zoom).toBe('16');
+      const sixteen = same(zoomed);
+      expect(sixteen.img.slice(2)).toEqual([512, 288]);
+      expect(sixteen.img[0] + 12.5 * 16).toBeCloseTo(12.5 * 8, 0);
+      // a drag on the diff pans all four together
+      const diffView = await page.$eval(`${dot} .view[data-image="diff"]`, (v) => {
+        const r = v.getBoundingClientRect();
+        return { x: r.left + 100, y: r.top + 50 };
+      });
+      await page.mouse.move(diffView.x, diffView.y);
+      await page.mouse.down();
+      await page.mouse.move(diffView.x - 60, diffView.y - 30, { steps: 3 });
+      await page.mouse.up();
+      const panned = same(await views());
+      expect([panned.img[0] - sixteen.img[0], panned.img[1] - sixteen.img[1]]).toEqual([-60, -30]);
+      // the pixel under the pointer, read in the three images (from dot.glsl-pixels.js)
+      await page.click(`${dot} button[data-goto]`);
+      const pixel = await page.$eval(`${dot} .view[data-image="reference"]`, (v) => {
+        const r = v.getBoundingClientRect();
+        return { x: r.left + 12.5 * 8, y: r.top + 7.5 * 8 };
+      });
+      const readout = async () => {
+        // the first move loads the values; each move reads them again
+        for (let i = 0; i < 50; i++) {
+          await page.mouse.move(pixel.x + (i % 2), pixel.y);
+          const text = await page.$eval(`${dot} .readout`, (e) => e.textContent);
+          if (!/reading/.test(text ?? '')) return text;
+          await new Promise((resolve) => setTimeout(resolve, 100));
+        }
+        return 'still reading after 5 s';
+      };
+      expect(await readout()).toBe(`(12, 7) · reference 255,0,0,255 · actual ${actual} · diff 255,0,0,255`);
+
       const outside = requested.filter((url) => !stays(url, report));
       expect(outside, 'no request leaves the report folder').toEqual([]);
       expect(requested.filter((url) => url.startsWith('file:')).length).toBeGreaterThan(1);
@@ -238,6 +334,8 @@ describe('index.html of a test run', () => {
         notes: [],
         ms: 100 + i,
         diffPixels: ok ? 0 : 1000 + i,
+        // one pixel at (250, 150): the page opens there, at 8×
+        where: ok ? null : { box: { left: 250, top: 150, right: 250, bottom: 150 }, first: [] },
         size: { width: 320, height: 180 },
         tolerance: { threshold: 0, maxDiffPixels: 0 },
         files,
@@ -259,8 +357,19 @@ describe('index.html of a test run', () => {
       const opened = Date.now() - started;
       expect(count).toBe(500);
       // issue 47's bound, on this 2-core machine beside other work
+      console.log(`opened in ${opened} ms, ${requested.length} requests`);
       expect(opened, `opened in ${opened} ms`).toBeLessThan(2_000);
       expect(requested.length, 'lazy images: only those in view are loaded').toBeLessThan(50);
+      // each failure opens at its difference: (250, 150) outlined in every view, within its viewport
+      const first = await page.$eval('[data-case="group-0/case-003.glsl"] .images', (viewer) => ({
+        zoom: /** @type {HTMLElement} */ (viewer).dataset.zoom,
+        marks: [...viewer.querySelectorAll('.view')].map((view) => {
+          const [port, mark] = [view, /** @type {Element} */ (view.querySelector('.mark'))].map((e) => e.getBoundingClientRect());
+          return [mark.left - port.left, mark.top - port.top, mark.width, mark.height].map(Math.round);
+        }),
+      }));
+      expect(first).toEqual({ zoom: '8', marks: Array(4).fill([160 - 4 - 5, 90 - 4 - 5, 18, 18]) });
+      console.log(`500 cases: index.html ${(html.length / 1024).toFixed(0)} KiB, opened in ${opened} ms`);
       expect(errors).toEqual([]);
     } finally {
       await page.close();
