@@ -156,7 +156,7 @@ ${MEDIA_HELP}
   },
   test: {
     summary: 'render every shader of a folder and compare with its reference',
-    usage: `${NAME} test DIR [--update] [--shard i/n] [--jobs N] [--reporter dot,junit,html] [options]
+    usage: `${NAME} test DIR|CASE... [-g PATTERN] [--last-failed] [--watch] [--update] [--shard i/n] [options]
 
 Every .glsl and .json file under DIR is a case, drawn at ${TEST_SIZE.width}x${TEST_SIZE.height} and iTime 0 (render draws
 640x360) unless DIR/shaderproof.json (optional) sets its view; it sets tolerance and checks too:
@@ -186,7 +186,24 @@ What draws: --renderer R, else the renderer that drew the references (--update r
 DIR/__references__/drawn-by.json; references written before that record are SwiftShader's).
 --update, and a folder with no references yet, draw as render does.
 
-  --update              write the references (and pass)
+Choosing cases: give files, sub-folders or view names of one test folder (the nearest folder
+above, or the folder itself, with a shaderproof.json or __references__), and filter them:
+
+  ${NAME} test shaders/waves.glsl shaders/sky/   a case and a sub-folder's cases, one run
+  ${NAME} test tests/golden -g '^view-'          the cases whose name matches
+  ${NAME} test shaders --last-failed             what failed in the last run, again
+  ${NAME} test shaders --watch                   again on each save; Ctrl-C ends
+
+  -g, --grep PATTERN    only the cases whose name (path under DIR, or view name) matches a
+                        regular expression, case-insensitive (/PATTERN/ as written)
+  --grep-invert PATTERN only the cases whose name does not match
+  --last-failed         only the cases that failed in the last run (OUT/.last-run.json,
+                        written by every run); none failed: says so and exits 0
+  --watch               run, then rerun a case when its shader, its manifest entry, its
+                        reference or a channel's image is saved, in the same browsers; the
+                        reports follow each rerun; Ctrl-C exits 1 if a case fails, else 0
+  --update              write the references (and pass): of the chosen cases only, the
+                        others' files left as they are
   --shard i/n           run the i-th of n shares of the cases (1-based)
   --jobs N              cases drawn at once, each worker its own Chromium (default ${DEFAULT_JOBS} here)
   --reporter R          dot (a line a case), junit (junit.xml), html (index.html, to open in a
@@ -206,6 +223,10 @@ ${COMMON_HELP}`,
       jobs: { type: 'string' },
       reporter: { type: 'string', multiple: true },
       out: { type: 'string' },
+      grep: { type: 'string', short: 'g' },
+      'grep-invert': { type: 'string' },
+      'last-failed': { type: 'boolean' },
+      watch: { type: 'boolean' },
     },
     run: runTest,
   },

@@ -26,6 +26,10 @@ beforeAll(() => {
   shader = path.join(folder, 'a.glsl');
   fs.writeFileSync(shader, 'void mainImage(out vec4 c, in vec2 f) { c = vec4(1.0); }\n');
   fs.mkdirSync(path.join(folder, 'somedir'));
+  // two test folders: one with a manifest, one with references
+  fs.mkdirSync(path.join(folder, 'one'));
+  fs.writeFileSync(path.join(folder, 'one', 'shaderproof.json'), '{}');
+  fs.mkdirSync(path.join(folder, 'two', '__references__'), { recursive: true });
 });
 afterAll(() => fs.rmSync(folder, { recursive: true, force: true }));
 
@@ -82,7 +86,19 @@ describe('a bad flag or value: one line, exit 2, the flag named, before any brow
     ['no -o', ['render', '<shader>'], /-o is required: the file to write, OUT\.png, OUT\.pfm or OUT\.wav/],
     ['record: no -o', ['record', '<shader>'], /-o OUT\.webm or -o OUT\.zip is required/],
     ['record: --time', ['record', '<shader>', '-o', 'x.zip', '--time', '1'], /--time and --frame are a render's/],
-    ['test: two folders', ['test', '<folder>', '<folder>'], /expected one DIR, got /],
+    [
+      'test: two test folders',
+      ['test', '<one>', '<two>'],
+      /one and \S+two are cases of two test folders \(.*\): run shaderproof test once for each/,
+    ],
+    ['test: no DIR', ['test'], /expected a DIR, or cases of one \(shader files, sub-folders, view names\), got none/],
+    ['test: --grep not a pattern', ['test', '<folder>', '-g', 'a('], /--grep a\(: not a regular expression/],
+    [
+      'test: --grep-invert not a pattern',
+      ['test', '<folder>', '--grep-invert', '[z-a]'],
+      /--grep-invert \[z-a\]: not a regular expression/,
+    ],
+    ['test: --watch --update', ['test', '<folder>', '--watch', '--update'], /--watch and --update: give one/],
     [
       '--channel0 a shader',
       render('--channel0', '<shader>'),
@@ -98,7 +114,8 @@ describe('a bad flag or value: one line, exit 2, the flag named, before any brow
     ['open: --port', ['open', '<shader>', '--port', 'x'], /--port x/],
   ];
   test.each(CASES)('%s', async (_, argv, said) => {
-    const args = argv.map((a) => (a === '<shader>' ? shader : a === '<folder>' ? folder : a));
+    const places = { '<shader>': shader, '<folder>': folder, '<one>': path.join(folder, 'one'), '<two>': path.join(folder, 'two') };
+    const args = argv.map((a) => places[a] ?? a);
     const { code, err } = await shaderproof(args);
     const lines = err.filter(Boolean);
     expect(code, lines.join('\n')).toBe(2);
