@@ -86,8 +86,9 @@ ${VIEW_HELP}
                         at iTime N/F (default 60)
   --tile PX             draw in tiles of PX pixels (even): a still larger than the browser
                         draws at once, the same pixels as one draw where both fit
-  --converge N          the raytracer only: N progressive samples a pixel (its "Converge
-                        when still"), a print-quality still
+  --converge N          N progressive samples a pixel (the page's "Converge when still"), a
+                        print-quality still: for a shader with a progressive form (today the
+                        studio's built-in shader and its edits); another is an error
   -o, --output FILE     OUT.png, or OUT.pfm: the colours in float as the shader wrote them
                         (Portable FloatMap, unclamped), or OUT.wav: the Sound tab (mainSound)
                         as stereo 16-bit at 44100 Hz, from --time (required)

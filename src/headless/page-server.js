@@ -14,7 +14,7 @@
 //                          changes (watch()); the page reloads that shader in place (main.js)
 //   anything else          the built page's files; an unknown path answers 404
 //
-// With fileEvents (`open`), index.html gets one <meta name="raytracer-file-events"> so the page
+// With fileEvents (`open`), index.html gets one <meta name="shaderproof-file-events"> so the page
 // knows to listen. A test run serves the same page through it, with the harness's routes first
 // (tests/support/page-server.js). Nothing here writes to disk.
 
@@ -166,7 +166,7 @@ export async function startPageServer({ root, port = 0, fileEvents = false, rout
 
   const page = fs.readFileSync(path.join(root, 'index.html'), 'utf8');
   const index = fileEvents
-    ? page.replace(/<meta charset[^>]*>|<head>/i, (tag) => `${tag}\n    <meta name="raytracer-file-events" content="${EVENTS_ROUTE}" />`)
+    ? page.replace(/<meta charset[^>]*>|<head>/i, (tag) => `${tag}\n    <meta name="shaderproof-file-events" content="${EVENTS_ROUTE}" />`)
     : page;
 
   const server = http.createServer((req, res) => routes(req, res, () => answer(req, res)));
