@@ -71,7 +71,8 @@ const COMMON_HELP = `  --renderer R          what draws: llvmpipe (Mesa, on the 
                         machine or a stopped process does not count, and a frame that
                         finishes bands goes on. On a GPU, and where /proc is missing, S
                         seconds of the wall clock
-  --verbose             an internal error's stack too
+  --verbose             an internal error's stack too, and the page's build log when it is
+                        built first
   -h, --help            this help`;
 
 const VERBS = {

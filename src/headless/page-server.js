@@ -22,6 +22,7 @@ import fs from 'node:fs';
 import http from 'node:http';
 import path from 'node:path';
 import { fileURLToPath } from 'node:url';
+import { buildPage } from './page-build.js';
 
 const PACKAGE_ROOT = fileURLToPath(new URL('../..', import.meta.url));
 const BUILT_PAGE_DIR = path.join(PACKAGE_ROOT, 'dist');
@@ -109,18 +110,18 @@ export function staleSources(dir) {
 /**
  * The folder of the built page, built now when this is a clone whose dist/ is missing or older
  * than the page's sources (with Vite, a dev dependency a clone has). `say` tells the person why
- * the first run takes longer.
- * @param {{say?: (line: string) => void}} [options]
+ * the first run takes longer, in one line; the build's own log only with `verbose`, or when it
+ * fails (page-build.js).
+ * @param {{say?: (line: string) => void, verbose?: boolean}} [options]
  * @returns {Promise<string>}
  */
-export async function builtPage({ say = () => {} } = {}) {
+export async function builtPage({ say = () => {}, verbose = false } = {}) {
   const index = path.join(BUILT_PAGE_DIR, 'index.html');
   const inClone = fs.existsSync(path.join(PACKAGE_ROOT, 'vite.config.js'));
   const built = fs.existsSync(index) ? fs.statSync(index).mtimeMs : 0;
   if (built && !(inClone && staleSources(BUILT_PAGE_DIR).length)) return BUILT_PAGE_DIR;
-  let vite;
   try {
-    vite = await import('vite');
+    await import('vite');
   } catch {
     throw new Error(
       built
@@ -129,7 +130,7 @@ export async function builtPage({ say = () => {} } = {}) {
     );
   }
   say(built ? 'the page changed since it was built: building it again (vite build)…' : 'building the page (vite build), once…');
-  await vite.build({ configFile: path.join(PACKAGE_ROOT, 'vite.config.js'), logLevel: 'warn' });
+  await buildPage({ configFile: path.join(PACKAGE_ROOT, 'vite.config.js'), verbose, say });
   return BUILT_PAGE_DIR;
 }
 
