@@ -144,12 +144,16 @@ ${COMMON_HELP}`,
 Serves the page on SHADER (from anywhere on disk) and prints its URL; opens no browser. Saving
 the file recompiles it on every page that has it open. Ctrl-C stops. With --fetch-media,
 what the shader names is downloaded when open starts (run it again for media a later save names).
+It answers only requests for 127.0.0.1, localhost or [::1] on its port: another host name gets
+403, so that no other site can read it by pointing its name at this machine (DNS rebinding).
 
   --port P              the port to listen on (default: a free one)
 ${MEDIA_HELP}
+  --verbose             the page's build log, when it is built first
   -h, --help            this help`,
     flags: {
       help: { type: 'boolean', short: 'h' },
+      verbose: { type: 'boolean' },
       port: { type: 'string' },
       media: { type: 'string' },
       'fetch-media': { type: 'boolean' },

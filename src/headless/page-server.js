@@ -14,6 +14,11 @@
 //                          changes (watch()); the page reloads that shader in place (main.js)
 //   anything else          the built page's files; an unknown path answers 404
 //
+// It answers only a request for its own host (Host: 127.0.0.1:PORT, localhost:PORT or
+// [::1]:PORT), and refuses any other with 403: a page on another site whose name was made to
+// point at 127.0.0.1 (DNS rebinding) reads nothing of it, as Vite's dev server refuses one
+// (server.allowedHosts).
+//
 // With fileEvents (`open`), index.html gets one <meta name="shaderproof-file-events"> so the page
 // knows to listen. A test run serves the same page through it, with the harness's routes first
 // (tests/support/page-server.js). Nothing here writes to disk.
@@ -170,7 +175,18 @@ export async function startPageServer({ root, port = 0, fileEvents = false, rout
     ? page.replace(/<meta charset[^>]*>|<head>/i, (tag) => `${tag}\n    <meta name="shaderproof-file-events" content="${EVENTS_ROUTE}" />`)
     : page;
 
-  const server = http.createServer((req, res) => routes(req, res, () => answer(req, res)));
+  /** The Host headers it answers (lower case), once it listens. @type {Set<string>} */
+  const ownHosts = new Set();
+  let baseUrl = '';
+  const server = http.createServer((req, res) => {
+    const host = req.headers.host?.toLowerCase();
+    if (!host || !ownHosts.has(host)) {
+      res.writeHead(403, { 'content-type': 'text/plain; charset=utf-8' });
+      res.end(`This server answers only for its own host (127.0.0.1, localhost or [::1] on its port): open ${baseUrl}/\n`);
+      return;
+    }
+    routes(req, res, () => answer(req, res));
+  });
   /** @param {import('node:http').IncomingMessage} req @param {import('node:http').ServerResponse} res */
   function answer(req, res) {
     const url = new URL(req.url ?? '/', 'http://page');
@@ -253,7 +269,8 @@ export async function startPageServer({ root, port = 0, fileEvents = false, rout
     server.listen(port, '127.0.0.1', () => resolve(undefined));
   });
   const { port: chosen } = /** @type {import('node:net').AddressInfo} */ (server.address());
-  const baseUrl = `http://127.0.0.1:${chosen}`;
+  baseUrl = `http://127.0.0.1:${chosen}`;
+  for (const name of ['127.0.0.1', 'localhost', '[::1]']) ownHosts.add(`${name}:${chosen}`);
 
   return {
     baseUrl,
