@@ -71,7 +71,8 @@ const COMMON_HELP = `  --renderer R          what draws: llvmpipe (Mesa, on the 
                         machine or a stopped process does not count, and a frame that
                         finishes bands goes on. On a GPU, and where /proc is missing, S
                         seconds of the wall clock
-  --verbose             an internal error's stack too
+  --verbose             an internal error's stack too, and the page's build log when it is
+                        built first
   -h, --help            this help`;
 
 const VERBS = {
@@ -86,8 +87,9 @@ ${VIEW_HELP}
                         at iTime N/F (default 60)
   --tile PX             draw in tiles of PX pixels (even): a still larger than the browser
                         draws at once, the same pixels as one draw where both fit
-  --converge N          the raytracer only: N progressive samples a pixel (its "Converge
-                        when still"), a print-quality still
+  --converge N          N progressive samples a pixel (the page's "Converge when still"), a
+                        print-quality still: for a shader with a progressive form (today the
+                        studio's built-in shader and its edits); another is an error
   -o, --output FILE     OUT.png, or OUT.pfm: the colours in float as the shader wrote them
                         (Portable FloatMap, unclamped), or OUT.wav: the Sound tab (mainSound)
                         as stereo 16-bit at 44100 Hz, from --time (required)
@@ -142,12 +144,16 @@ ${COMMON_HELP}`,
 Serves the page on SHADER (from anywhere on disk) and prints its URL; opens no browser. Saving
 the file recompiles it on every page that has it open. Ctrl-C stops. With --fetch-media,
 what the shader names is downloaded when open starts (run it again for media a later save names).
+It answers only requests for 127.0.0.1, localhost or [::1] on its port: another host name gets
+403, so that no other site can read it by pointing its name at this machine (DNS rebinding).
 
   --port P              the port to listen on (default: a free one)
 ${MEDIA_HELP}
+  --verbose             the page's build log, when it is built first
   -h, --help            this help`,
     flags: {
       help: { type: 'boolean', short: 'h' },
+      verbose: { type: 'boolean' },
       port: { type: 'string' },
       media: { type: 'string' },
       'fetch-media': { type: 'boolean' },

@@ -58,11 +58,13 @@ const START_VIEW = `${ENGINE_PAGE}?size=2x2&time=0`;
 /**
  * @param {{renderer?: import('./renderers.js').RendererName, hangMs?: number, compileHangMs?: number,
  *   loopLimit?: import('../api/loop-limit.js').LoopLimitMode,
- *   say?: (line: string) => void, progress?: (state: import('./view.js').ViewProgress | null) => void}} [options]
+ *   say?: (line: string) => void, verbose?: boolean,
+ *   progress?: (state: import('./view.js').ViewProgress | null) => void}} [options]
  *   hangMs: a band of a frame that costs the GPU process this long in CPU time (the wall clock
  *   where that cannot be read) fails (the watchdog: watchdog.js); compileHangMs: the same for a
  *   program's first draw, which compiles it; loopLimit: what a loop cut by llvmpipe's limit does
- *   (loop-limit.js); progress: hears how far each view has got, every 0.1 s while it draws
+ *   (loop-limit.js); progress: hears how far each view has got, every 0.1 s while it draws;
+ *   verbose: `say` hears the page's build log too, when it is built (page-build.js)
  */
 export async function startSession({
   renderer = 'swiftshader',
@@ -70,6 +72,7 @@ export async function startSession({
   hangMs = WATCHDOG_LIMITS[renderer].hangMs,
   compileHangMs = WATCHDOG_LIMITS[renderer].compileHangMs,
   say = () => {},
+  verbose = false,
   progress = () => {},
 } = {}) {
   const limits = { hangMs, compileHangMs };
@@ -80,7 +83,7 @@ export async function startSession({
   } catch (error) {
     throw new CliError(error.message);
   }
-  const root = await builtPage({ say }).catch((error) => {
+  const root = await builtPage({ say, verbose }).catch((error) => {
     throw new CliError(error.message);
   });
   mark('built page found');

@@ -6,6 +6,7 @@
 
 import { execFile, spawn } from 'node:child_process';
 import fs from 'node:fs';
+import http from 'node:http';
 import os from 'node:os';
 import path from 'node:path';
 import { promisify } from 'node:util';
@@ -283,6 +284,13 @@ describe('shaderproof, installed from its tarball', () => {
         child.on('exit', (code) => reject(new Error(`open exited with ${code}`)));
       });
       expect(url).toMatch(/^http:\/\/127\.0\.0\.1:\d+\/\?shader=\/__files\/\d+\/live\.glsl$/);
+      // another host name (DNS rebinding) is refused: page-server-host.test.js has the cases
+      const refused = await new Promise((resolve, reject) =>
+        http
+          .get(url, { headers: { host: `evil.example:${new URL(url).port}` } }, (res) => resolve(res.resume().statusCode))
+          .on('error', reject),
+      );
+      expect(refused).toBe(403);
       const { page } = await openPage();
       try {
         await page.goto(`${url}&size=32x18&time=0`, { waitUntil: 'load' });

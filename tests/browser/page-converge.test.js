@@ -29,8 +29,9 @@ describe('Converge when still', () => {
       await goto(`?size=${WIDTH}x${HEIGHT}&time=0`);
       await hook(page).setConverging(true, { frames: FRAMES });
       expect((await info(page)).controls.SHOW_SAMPLE_COUNT).toBe(1); // the count is shown
-      // without the count drawn over it: the picture Screenshot saves
-      await hook(page).setControls({ SHOW_SAMPLE_COUNT: 0 });
+      // without the count drawn over it (the form's on-screen overlay, off as a render asks): the picture alone
+      await hook(page).setConverging(true, { frames: FRAMES, overlays: false });
+      expect((await info(page)).controls.SHOW_SAMPLE_COUNT).toBe(0);
       // the compiles settle (the live controls end as constants); a Restart then clears the sum
       await page.waitForFunction(() => window.shaderEngine.info().liveControls === 'constants', { polling: 100 });
       await hook(page).restart();

@@ -298,7 +298,7 @@ describe('a shader that never finishes', () => {
       try {
         const page = await browser.newPage();
         await page.evaluateOnNewDocument((chosen) => {
-          /** @type {any} */ (window).__raytracerTimeouts = chosen;
+          /** @type {any} */ (window).__shaderEngineTimeouts = chosen;
         }, OWN_BROWSER_TIMEOUTS);
         await page.goto(`${baseUrl}/?shader=${base}/heavy.glsl&${SIZE}&WORK=0`, { waitUntil: 'load' });
         await page.waitForFunction(() => window.shaderEngine, { polling: 50 });

@@ -46,7 +46,7 @@ describe('an endless loop pasted over an untitled shader (in a browser of its ow
     page = await browser.newPage();
     await page.setViewport({ width: 800, height: 600, deviceScaleFactor: 1 });
     await page.evaluateOnNewDocument((chosen) => {
-      /** @type {any} */ (window).__raytracerTimeouts = chosen;
+      /** @type {any} */ (window).__shaderEngineTimeouts = chosen;
     }, OWN_BROWSER_TIMEOUTS);
     await page.browserContext().overridePermissions(baseUrl, ['clipboard-read', 'clipboard-write', 'clipboard-sanitized-write']);
     await page.goto(`${baseUrl}/?shader=examples/pattern.glsl&${SIZE}`, { waitUntil: 'load' });

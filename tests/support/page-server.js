@@ -8,7 +8,7 @@
 // examples/pattern.glsl at 32x18 each way), and ~220 loads a run add up. It is also the page a
 // person deploys. The dev server stays for what only it does: a server that watches the files and
 // hot-updates the page (startWatchingServer, tests/browser/page-lifecycle.test.js), and, with
-// RAYTRACER_TEST_SERVER=dev, for a whole run (to debug with unbundled modules).
+// SHADERPROOF_TEST_SERVER=dev, for a whole run (to debug with unbundled modules).
 //
 // Either way the harness's own routes (routes.js: a request that hangs, a redirect, files the
 // tests write into public/ served at once) are plugged in.
@@ -82,12 +82,12 @@ async function startBuiltServer() {
   return { baseUrl: server.baseUrl, close: () => server.close() };
 }
 
-/** The page server of a test run: the build (or the dev server with RAYTRACER_TEST_SERVER=dev). */
+/** The page server of a test run: the build (or the dev server with SHADERPROOF_TEST_SERVER=dev). */
 export function startPageServer(env = process.env) {
-  const chosen = env.RAYTRACER_TEST_SERVER ?? 'build';
+  const chosen = env.SHADERPROOF_TEST_SERVER ?? 'build';
   if (chosen === 'dev') return startDevServer();
   if (chosen === 'build') return startBuiltServer();
-  throw new Error(`RAYTRACER_TEST_SERVER=${chosen}: expected "build" (the default) or "dev".`);
+  throw new Error(`SHADERPROOF_TEST_SERVER=${chosen}: expected "build" (the default) or "dev".`);
 }
 
 /** Another page server, in the test worker, with file watching and hot updates on. Close it after. */

@@ -12,6 +12,8 @@ import { PageHook } from '../../src/studio/page-hook.js';
 import { hookMethods, installFailedHook } from '../../src/player/hook/failed-hook.js';
 
 const ROOT = path.resolve(import.meta.dirname, '..', '..');
+/** package.json's "imports": what a `#name` specifier is (the engine page's plug-ins). */
+const PACKAGE_IMPORTS = JSON.parse(fs.readFileSync(path.join(ROOT, 'package.json'), 'utf8')).imports ?? {};
 
 /** The .js files under `folder` (relative to the repository). @param {string} folder */
 function sources(folder) {
@@ -66,7 +68,7 @@ const WORKER_MODULE = /new\s+URL\(\s*['"]([^'"]+)['"]\s*,\s*import\.meta\.url\s*
 /**
  * The modules `entry` loads (repository paths): its static imports, and the render worker's
  * modules it starts (new Worker(new URL(…))), followed through; a query (`?raw`) kept off the
- * path, a package left out. `lazy`: the import()s among them, "from -> to", which load a chunk
+ * path, a `#name` as package.json's "imports" has it, a package left out. `lazy`: the import()s among them, "from -> to", which load a chunk
  * of their own when asked for.
  * @param {string} entry
  */
@@ -79,8 +81,10 @@ function importClosure(entry) {
     modules.add(file);
     if (!file.endsWith('.js')) return; // a shader's text, a stylesheet
     const text = code(fs.readFileSync(path.join(ROOT, file), 'utf8'));
-    const target = (/** @type {string} */ spec) =>
-      spec.startsWith('.') ? path.posix.normalize(path.posix.join(path.posix.dirname(file), spec.replace(/\?.*$/, ''))) : null;
+    const target = (/** @type {string} */ spec) => {
+      if (spec.startsWith('#')) return spec in PACKAGE_IMPORTS ? path.posix.normalize(PACKAGE_IMPORTS[spec]) : null;
+      return spec.startsWith('.') ? path.posix.normalize(path.posix.join(path.posix.dirname(file), spec.replace(/\?.*$/, ''))) : null;
+    };
     for (const [, from, bare] of text.matchAll(STATIC_IMPORT)) {
       const next = target(from ?? bare);
       if (next) visit(next);
@@ -106,14 +110,16 @@ describe('the engine page loads no widget and no raytracer', () => {
 
   it('its imports reach nothing of src/studio/, src/raytracer/ or shaders/*.glsl', () => {
     expect(engine.modules).toContain('src/player/gpu/render-worker.js'); // the worker is followed
+    expect(engine.modules).toContain('src/engine-plug-ins.js'); // and #engine-plug-ins
     expect(engine.modules.filter((file) => NOT_ENGINE.test(file))).toEqual([]);
   });
 
   it('the raytracer comes in only as the converge a command asks for, a chunk of its own', () => {
     // --converge drives the raytracer's "Converge when still" on the engine page: its form is
-    // plugged in lazily (engine-main.js), and nothing else of it is loaded, even lazily
+    // plugged in lazily from outside the player (src/engine-plug-ins.js), and nothing else of it
+    // is loaded, even lazily
     expect(engine.lazy.filter((edge) => NOT_ENGINE.test(edge.split(' -> ')[1]))).toEqual([
-      'src/player/engine-main.js -> src/raytracer/convergence.js',
+      'src/engine-plug-ins.js -> src/raytracer/convergence.js',
     ]);
     expect(importClosure('src/raytracer/convergence.js').modules.filter((file) => /^src\/(player|studio)\//.test(file))).toEqual([]);
   });
@@ -125,6 +131,34 @@ describe('the engine page loads no widget and no raytracer', () => {
         page.some((file) => file.startsWith(where)),
         where,
       ).toBe(true);
+  });
+});
+
+// ---- the raytracer is one shader among others (the player and Node's side name none) -------
+
+/** The rooms that draw, drive or test any shader: none names the built-in one. */
+const SHADER_NEUTRAL = ['src/player', 'src/headless', 'src/api', 'src/runner', 'src/cli', 'bin'];
+/** The raytracer by name: src/raytracer/, shaders/raytrace.glsl, "the raytracer". */
+const RAYTRACER = /raytrac/i;
+
+describe('the player, headless, api, runner, cli and bin name no raytracer', () => {
+  // comments included: what those rooms say of a shader holds for every shader
+  it('not in any module, code or comment', () => {
+    const files = SHADER_NEUTRAL.flatMap(sources);
+    expect(files).toContain('bin/shaderproof.js');
+    expect(files.filter((file) => RAYTRACER.test(fs.readFileSync(path.join(ROOT, file), 'utf8')))).toEqual([]);
+  });
+
+  it('nor in the pages they serve (the engine page, its status line)', () => {
+    const pages = fs.readdirSync(path.join(ROOT, 'src/player')).filter((file) => /\.(html|css)$/.test(file));
+    expect(pages).toContain('engine.html');
+    expect(pages.filter((file) => RAYTRACER.test(fs.readFileSync(path.join(ROOT, 'src/player', file), 'utf8')))).toEqual([]);
+  });
+
+  it('the check finds the name where it is', () => {
+    expect(
+      ['src/raytracer', 'src/studio'].flatMap(sources).some((file) => RAYTRACER.test(fs.readFileSync(path.join(ROOT, file), 'utf8'))),
+    ).toBe(true);
   });
 });
 
@@ -143,6 +177,8 @@ describe('the lint rules by room keep each room to its own', () => {
     ['src/player/hook/engine-hook.js', '../../studio/page-hook.js', /studio/],
     ['src/player/app/converge.js', '../../raytracer/progressive.js', /raytracer/],
     ['src/player/gpu/probe.js', '../../raytracer/path-probe.js', /raytracer/],
+    // the engine page's plug-ins: a shader family's code only lazily (import())
+    ['src/engine-plug-ins.js', './raytracer/convergence.js', /raytracer/],
     ['src/player/io/recorder.js', '../../reference/render.js', /float64 reference/],
     ['src/player/app/app.js', '../../headless/client.js', /Chromium/],
     // a room of the player's worker (gpu/bands/) reaching the page's state
