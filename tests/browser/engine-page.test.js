@@ -1,16 +1,10 @@
 // The engine page (engine.html, src/player/engine-main.js) on its own, as the command line loads it:
-// no widget and no raytracer (issue 46). With no ?shader= it runs its own start shader; a shader
+// no widget and no raytracer. With no ?shader= it runs its own start shader; a shader
 // it cannot have rejects `ready`, never another drawn in its place; what stands in the way of its
-<<<<<<< HEAD:tests/browser/engine-page.test.js
-// picture is one line on the page; and the raytracer's "Converge when still" (--converge) is a
-// chunk it fetches only when a converge is asked for. tests/unit/lint-rooms.test.js checks its
-// imports; this checks what the built page loads and does.
-=======
 // picture is one line on the page; and the raytracer's "Converge when still" (--converge),
 // plugged in from outside the player (src/engine-plug-ins.js), is a chunk it fetches only when a
 // converge is asked for. tests/unit/lint-rooms.test.js checks its imports; this checks what the built
 // page loads and does.
->>>>>>> names:tests/browser/engine-page.test.js
 
 import { afterAll, describe, expect, test } from 'vitest';
 import { disconnect } from '../support/page.js';
