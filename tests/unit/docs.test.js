@@ -37,6 +37,15 @@ describe('every path the docs name exists', () => {
     expect(missing(text)).toEqual([]);
   });
 
+  it.each(DOCS)('%s: its relative links lead to files that exist', (doc) => {
+    const text = fs.readFileSync(path.join(ROOT, doc), 'utf8');
+    const broken = [...text.matchAll(/\]\(([^)#\s]+)(?:#[^)]*)?\)/g)]
+      .map(([, target]) => target)
+      .filter((target) => !/^[a-z]+:/.test(target))
+      .filter((target) => !fs.existsSync(path.join(ROOT, path.dirname(doc), target)));
+    expect(broken).toEqual([]);
+  });
+
   it('the docs name paths at all (the pattern reads them)', () => {
     expect(namedPaths(fs.readFileSync(path.join(ROOT, 'docs/architecture.md'), 'utf8')).length).toBeGreaterThan(40);
   });
