@@ -1,6 +1,6 @@
 // ESLint (flat config): the recommended rules, the globals each room runs with, and what each
 // room may import (docs/architecture.md, "The rooms"). The rules are by folder: a new module in
-// a room is under its room's rule without being listed (tests/lint-rooms.test.js crosses each).
+// a room is under its room's rule without being listed (tests/unit/lint-rooms.test.js crosses each).
 import js from '@eslint/js';
 import globals from 'globals';
 
@@ -13,7 +13,7 @@ const KEEP_OUT = {
   raytracer: {
     group: [...room('raytracer'), '**/*.glsl', '**/*.glsl?raw'],
     message:
-      'The built-in raytracer (src/raytracer/, shaders/) is one shader among others: only the studio plugs it in (docs/architecture.md).',
+      'The built-in raytracer (src/raytracer/, shaders/) is one shader among others: only the studio plugs it in, and src/engine-plug-ins.js with import() (docs/architecture.md).',
   },
   reference: {
     group: room('reference'),
@@ -89,6 +89,13 @@ export default [
       group: ['../io/*', '../hook/*', '../open-view.js'],
       message: 'app/ is the state the rest of the player uses: it emits events and is given what it needs, never imports them.',
     }),
+  },
+  // The engine page's plug-ins (the player imports it as #engine-plug-ins: package.json "imports"):
+  // what it names of a shader family, it loads lazily (import()), never up front.
+  {
+    files: ['src/engine-plug-ins.js'],
+    languageOptions: { globals: globals.browser },
+    rules: restricted(KEEP_OUT.studio, KEEP_OUT.raytracer, KEEP_OUT.reference, KEEP_OUT.headless, KEEP_OUT.node),
   },
   // The studio: the page around the player. It plugs the raytracer in; the reference only lazily.
   { files: ['src/studio/**/*.js'], rules: restricted(KEEP_OUT.reference, KEEP_OUT.headless, KEEP_OUT.node) },

@@ -6,7 +6,7 @@
 //     `node tests/bench/*.js`, `vitest run --config tests/vitest.config.js`);
 //   - its Vite plugin: vite.config.js, whose root src/player/ holds index.html, whose script is
 //     src/studio/main.js;
-//   - its Vitest plugin: tests/vitest.config.js, its include (tests/**/*.test.js) and its
+//   - its Vitest plugin: tests/vitest.config.js, its projects' include (tests/unit/, tests/browser/) and the
 //     globalSetup (tests/support/setup.js);
 //   - its ESLint plugin: eslint.config.js;
 //   - imports, including new Worker(new URL('./x.js', import.meta.url)) and

@@ -5,13 +5,12 @@
 //
 // Reading guide. The lecture's template is all here, in its order: the intersectors, the scene
 // and its one walk (traceScene: nearest hit, and a shadow ray's any hit), the materials, the
-// local shading, the bounce loop (radiance) and the camera (mainImage). What was added to it:
+// local shading, the bounce loop (radiance) and the camera and image (mainImage). Added to it:
 // - controls: one block that Shadertoy compiles as it is and the page turns into a panel;
 // - the new object (cone, cylinder or torus): one section, "the new object", behind one
 //   interface, chosen by the one #if SCENE;
-// - near misses and edges: the adaptive anti-aliasing's tests of the ray cones of a pixel's
-//   centre ray, from the hit radiance records of it ("what a path records", the one place where
-//   the edge tests, the Bounces view and the page's inspector hook into the loop);
+// - adaptive anti-aliasing: a pixel whose first sample lies near an edge takes more samples.
+//   "near misses" and "edges" hold its tests, "what a path records" what they read of the path;
 // - the debug views (VIEW 1 to 5), compiled only when chosen.
 //
 // Numerical choices, each explained where it is made:
@@ -26,29 +25,15 @@
 //   reflected silhouette) takes the n x n grid when ADAPTIVE_AA is on: found by its own rays'
 //   near-miss tests and by derivatives over its 2x2 pixel quad.
 //
-// The cost model the code is written for: the two CPU renderers that draw it with no GPU.
-// SwiftShader (the tests' and the goldens') runs a 2x2 pixel quad as four SIMD lanes, Mesa's
-// llvmpipe (the command line's default) a 4x2 block as eight. Both execute both sides of every
-// `if` (llvmpipe too: its `if` is an execution mask, even on a uniform condition; it never jumps
-// over code that no lane needs), and end a loop only at its bottom, once no lane is left in it,
-// so a loop that no lane needs still runs its body once. A frame costs the code on its path
-// times the loop trips of each block's slowest pixel. Hence: selects instead of branches and
-// early returns; all()/any() of a bvec instead of && and || (SwiftShader turns those into
-// branches; llvmpipe costs the same either way); loops written `for (;;)` with the exit at the
-// bottom; every object asked for every ray. A GPU, which does skip a branch no lane of a warp
-// takes, rewards the same things but the last: less code on the path, one copy of the trace.
-// Each branchy form was timed in this shader against its form here, on both renderers
-// interleaved (npm run bench:forms, 640x360; the branchy form's time over this one's, median of
-// the per-round ratios, SwiftShader / llvmpipe): && and || for all() and any() 1.30x / 0.98x;
-// early returns in the intersectors 1.16x / 1.01x (torus scene 1.01x / 1.04x); the new object
-// behind a bounding-sphere `if` 1.13x / 0.99x (torus scene 0.98x / 1.04x); the adaptive frame's
-// extra samples in a loop of their own 1.37x / 1.14x. None is faster on both, or by more than
-// 2% on either, where most cost SwiftShader 13-37%: the forms here stay. The measurements, and the
-// commands that make them: docs/benchmark.md ("What the CPU renderers reward").
+// The code avoids branches: it computes both answers and picks one with a select (mix, ?:),
+// joins conditions with all() and any() of a bvec rather than && and ||, and ends each loop at
+// its bottom, on its last needed trip. Every object is asked for every ray.
+// Why each form, and what it costs: docs/numerics.md in the repository.
 
 // ---- controls --------------------------------------------------------------------------------
-// Shadertoy compiles this block as it stands; a host defines HOST_CONTROLS and declares the same
-// names itself (a #define is compile-time, a const becomes a uniform). Syntax: src/shadertoy/controls.js.
+// Shadertoy compiles this block as it stands. The page defines HOST_CONTROLS and declares the
+// same names itself (a #define is compile-time, a const becomes a uniform), each `// ui:` comment
+// making a control of its panel.
 #ifndef HOST_CONTROLS
 #define SAMPLES 16                                     // ui: Samples per (edge) pixel | 1, 4, 9, 16
 #define ADAPTIVE_AA 1                                  // ui: Adaptive anti-aliasing | toggle
@@ -104,8 +89,7 @@ const vec4 MISS = vec4(-1.0, 0.0, 0.0, 0.0);
 // how a scene walk passes the nearest hit so far (and a shadow ray the light's distance); 0
 // rejects everything.
 //
-// Written without branches (the cost model, at the top; early returns measured 1.16x / 1.01x the
-// frame, SwiftShader / llvmpipe): every quantity is computed and the answer chosen by selects, so
+// Written without early returns: every quantity is computed and the answer chosen by selects, so
 // a value that is not a number where the test fails (a division by a zero that the test rules
 // out) is never returned.
 
@@ -154,7 +138,7 @@ vec4 intersectSphere(vec3 ro, vec3 rd, vec3 center, float radius, float tMax) {
 // slab plane, so a zero direction component (+0 or -0) is handled by hand: the ray is inside
 // that slab for all t, or never. The normal is the single axis that sets the entry (or, from
 // inside, the exit) time, so it is exactly unit length even at an edge or corner. Written on
-// whole vectors: per-component loops with dynamic indexing cost SwiftShader far more.
+// whole vectors, with no per-component loop.
 vec4 intersectBox(vec3 ro, vec3 rd, vec3 center, vec3 halfSize, float tMax) {
     vec3 o = ro - center;
     bvec3 parallel = equal(rd, vec3(0.0));
@@ -260,9 +244,9 @@ vec4 intersectCone(vec3 ro, vec3 rd, Cone cone, float tMax) {
     // vanish there): b^2 - a c is 0 in exact arithmetic, and in float only the rounding of its
     // two products and their difference (within 2 ulps of the larger term, 4 EPS32). Taken as
     // is, that rounding's sign would choose between the exact root -b/a and two roots sqrt(it)
-    // away (2e-4 at t = 3: SwiftShader and llvmpipe round it to opposite signs on the apex rays
-    // of tests/intersector-cases/cone.js). A discriminant known no better than its rounding gives
-    // roots known no better than its square root either way, so within it the double root is taken.
+    // away (2e-4 at t = 3), and two renderers may round it to opposite signs. A discriminant
+    // known no better than its rounding gives roots known no better than its square root either
+    // way, so within it the double root is taken.
     float disc = b * b - a * c;
     disc = disc > 4.0 * EPS32 * (b * b + abs(a * c)) ? disc : min(disc, 0.0);
     vec2 nearest = nearestCapped(a, b, c, disc, yo, yd, oPerp, dPerp, cone.height, cone.ra, cone.rb, min(tMax - tShift, T_INFINITY));
@@ -410,8 +394,7 @@ void torusBend(TorusRay ray, vec3 t, out vec3 dF, out vec3 ddF) {
 }
 
 // The torus by root isolation, never by a closed-form quartic (a resolvent cubic's small root
-// loses most of its digits in float32: 60% relative error in one published test, and fake hits in
-// the hole). Every root is a sign change of the unexpanded g, found in a bracket where g is
+// loses most of its digits in float32, and gives fake hits in the hole). Every root is a sign change of the unexpanded g, found in a bracket where g is
 // monotone, so a hit off the surface cannot be returned. The brackets come from the shape of F:
 // F'' = 2 - 2 a m2 / rho^3 is negative only where rho^3 < a m2, an interval tc +- s about the
 // closest approach to the axis (empty when m2 >= a^2). So F' rises on the outer pieces and falls
@@ -424,9 +407,6 @@ void torusBend(TorusRay ray, vec3 t, out vec3 dF, out vec3 ddF) {
 // The two roots that can be the first past the origin are solved as one vec2. The origin is
 // first moved to the bounding sphere (Wald, Ray Tracing Gems II ch. 34), then everything runs in
 // units of R.
-// Measured (tests/intersectors.test.js, 1,800 hard rays): worst t error 0.3 K u S on transversal
-// hits; a textbook Ferrari solve of the expanded quartic in its place gets 81% of rays from 1e3,
-// 16% of a tube r = 1e-3 R and 32% of near-axial rays wrong (those all fake hits in the hole).
 vec4 intersectTorus(vec3 ro, vec3 rd, Torus torus, float tMax) {
     // (the sphere touches the torus all along its outer equator, where a radial ray's entry root
     // is the sphere's point: shiftToBound stops short of it)
@@ -462,8 +442,7 @@ vec4 intersectTorus(vec3 ro, vec3 rd, Torus torus, float tMax) {
     float hi = min(-bo + h, level ? T_INFINITY : max(slabA, slabB));
     bool inRange = all(bvec3(h2 >= 0.0, lo < hi, any(bvec2(!level, abs(ray.yo) <= slab))));
     // A ray with no range gets the empty one, [lo, lo]: both loops below end on their first trip
-    // (and clamp() never sees its ends crossed, which GLSL leaves undefined). Without this, pixels
-    // that miss ran the loops on nonsense and the torus cost 7 cones instead of 3.
+    // (and clamp() never sees its ends crossed, which GLSL leaves undefined).
     hi = all(bvec2(inBound, inRange)) ? hi : lo;
 
     // The pieces of F': [lo, tc - s], [tc - s, tc + s], [tc + s, hi], clipped to the range. The
@@ -484,10 +463,8 @@ vec4 intersectTorus(vec3 ro, vec3 rd, Torus torus, float tMax) {
     // its sign says nothing more.
     float tNoise = 8.0 * EPS32 * (hi + 1.0);
     float gNoise = 2.0 * EPS32 * (hi + 1.0);
-    // Trips (tests/intersectors.test.js counts them on the 1,600 of its torus rays that reach
-    // this loop): 5 or fewer for 98%, at most 8 but for a triple zero of F' (a ray whose closest
-    // approach to the axis is also an inflection, m2 = a^2), which Newton approaches linearly and
-    // the cap of 12 stops. The loop ends on its last needed trip (the cost model, at the top).
+    // Newton takes a few trips; a triple zero of F' (a ray whose closest approach to the axis is
+    // also an inflection, m2 = a^2) it approaches only linearly, and the cap of 12 stops it.
     for (int trip = 1;; trip++) {
         vec3 dF, ddF;
         torusBend(ray, crit, dF, ddF);
@@ -521,8 +498,7 @@ vec4 intersectTorus(vec3 ro, vec3 rd, Torus torus, float tMax) {
     float first = min(min(firstGaps.x, firstGaps.y), min(firstGaps.z, firstGaps.w));
     // So at most two gaps are solved: that first one, and before it one that crosses from t = 0
     // (the ends only grow, and a gap of no width cannot cross: g is the same at both of its ends,
-    // so at most one crossing gap starts at 0). As a vec2 the loop below does half the work of
-    // all four gaps (SwiftShader runs each component as an operation of its own).
+    // so at most one crossing gap starts at 0). The loop below solves the two as one vec2.
     vec4 zeroGaps = mix(vec4(4.0), GAP, bvec4(vec4(crosses) * vec4(lessThanEqual(left, vec4(0.0))) * vec4(lessThan(GAP, vec4(first)))));
     float fromZero = min(min(zeroGaps.x, zeroGaps.y), min(zeroGaps.z, zeroGaps.w));
     bvec2 solved = lessThan(vec2(fromZero, first), vec2(4.0));
@@ -530,10 +506,8 @@ vec4 intersectTorus(vec3 ro, vec3 rd, Torus torus, float tMax) {
     vec2 lo2 = vec2(left[gap.x], left[gap.y]), hi2 = vec2(right[gap.x], right[gap.y]);
     vec2 gLo = vec2(gLeft[gap.x], gLeft[gap.y]), gHi = vec2(gRight[gap.x], gRight[gap.y]);
     bvec2 insideLo = lessThan(gLo, vec2(0.0));
-    // Start where the chord across the gap crosses 0: g is a distance, close to linear. Trips on
-    // the test rays: 5 or fewer for 92%, at most 11 (near-tangent rays, where Newton's convergence
-    // is linear); the cap of 16 is never reached there. Its cost against the cone's and against a
-    // closed form: docs/numerics.md ("Per primitive: speed against error").
+    // Start where the chord across the gap crosses 0: g is a distance, close to linear. Newton
+    // converges only linearly on near-tangent rays; the cap of 16 trips is past their need.
     vec2 root = mix(0.5 * (lo2 + hi2), lo2 + (hi2 - lo2) * gLo / (gLo - gHi), solved);
     for (int trip = 1;; trip++) {
         vec2 g = torusDistance(ray, root, slope);
@@ -577,7 +551,7 @@ vec4 intersectTorus(vec3 ro, vec3 rd, Torus torus, float tMax) {
     return hitOrMiss(all(bvec4(inBound, inRange, t < T_INFINITY, tHit < tMax)), tHit, n);
 }
 
-// ---- near misses: how close a ray cone passes to each primitive's outline ---------------------
+// ---- near misses: how close a ray cone passes to each primitive's outline --------------------
 // The adaptive anti-aliasing's edge tests (below, EDGE_TESTS) ask these of a pixel's own rays:
 // closed forms per primitive, no extra trace.
 
@@ -676,7 +650,7 @@ bool nearHorizon(RayCone c, vec4 plane) {
 //                                the ground and the convex solids (the scene walk then skips
 //                                them); the torus can (its hole, its inner wall), so such a ray
 //                                starts a few ulps off the surface, outside, and the torus stays
-//                                in the walk (tests/intersector-properties.test.js checks this)
+//                                in the walk
 //   nearObject(cone, o)          whether a ray cone passes near its outline (the edge tests)
 const int ID_NONE = -1;
 const int ID_GROUND = 0;
@@ -782,9 +756,8 @@ bool reenters(int id) {
 
 // The torus's outline has no cheap closed form (its distance from a line is a quartic's root
 // again). By its definition, the cone hitting the torus with its tube grown by the cone's width
-// and missing it shrunk, it took two more solves per ray: six per sample, and SwiftShader runs a
-// quad's every trip through them (the torus scene's adaptive frame went from seconds to over 90 s
-// at 320x180). So the torus's edges are the quad's to find.
+// and missing it shrunk, it takes two more torus solves per ray, far too slow. So the torus's
+// edges are left to the quad's derivative test (mainImage).
 bool nearObject(RayCone c, Object torus) {
     return false;
 }
@@ -841,7 +814,7 @@ float maxAbs(vec3 v) {
 // How far from the ground's plane (in units of float32's unit roundoff times the size of the
 // numbers involved) a hit point may lie and still be in that plane. An intersector puts its hit
 // within about K u S of its surface, S the distance from the ray's origin plus the object's
-// size (tests/intersectors.test.js holds them to K = 32; the height of a point on a face is off
+// size (K = 32 is what the intersectors are tested to; the height of a point on a face is off
 // by that however grazing the ray, as the error in t runs along the ray); the plane's own height
 // is off by u |w|. Twice that, so that both sides of a tie land in the band.
 const float GROUND_BAND_ULPS = 64.0;
@@ -858,20 +831,15 @@ const float GROUND_BAND_ULPS = 64.0;
 // decided by the last bits of two different computations, and from below the ground (the eye
 // under it) the cone's and the cube's colours show through in speckles. So a hit whose point is
 // within the rounding band of the ground's plane, on a ray that meets the ground, is the
-// ground's (the float64 reference decides it the same way).
+// ground's.
 //
-// Every object is asked, whatever the ray: a bounding-sphere skip (an object's code behind an
-// `if`, or in a loop of 0 or 1 trips) makes nothing cheaper on SwiftShader or llvmpipe, and the
-// loop costs a block that needs it two bodies (the cost model, at the top; behind an `if`, the
-// cone scene 1.13x / 0.99x and the torus scene 0.98x / 1.04x, SwiftShader / llvmpipe). A GPU
-// skips such a branch; there it would pay for the torus.
+// Every object is asked, whatever the ray: no bounding-sphere skip.
 Hit traceScene(Scene s, vec3 ro, vec3 rd, int skipId, float tMax) {
     vec4 ground = intersectPlane(ro, rd, s.ground, skipId == ID_GROUND ? 0.0 : tMax);
     // The objects are asked only for hits nearer than the ground's by more than the band: along
     // the ray a point's height above the plane is |n.rd| (tGround - t), so "within the band of
     // the plane" is "within band / |n.rd| of the ground's t". Same test as checking the height
-    // of the nearest object's point afterwards, and only a float kept across the walk (checking
-    // afterwards kept the ground's whole hit across it, and cost a tenth of the frame).
+    // of the nearest object's point afterwards, and only a float kept across the walk.
     float band = GROUND_BAND_ULPS * EPS32 * (ground.x + maxAbs(ro) + abs(s.ground.w));
     float tGround = ground.x;
     Hit hit = Hit(tGround > 0.0 ? tGround - band / abs(dot(s.ground.xyz, rd)) : tMax, vec3(0.0), ID_NONE);
@@ -883,7 +851,7 @@ Hit traceScene(Scene s, vec3 ro, vec3 rd, int skipId, float tMax) {
 }
 
 // ---- materials and texture -------------------------------------------------------------------
-// Plain `const` lines: the float64 reference (src/reference/) reads these values from this file.
+// Plain `const` lines, one value each: the project's float64 reference reads them from this file.
 const vec3  SPHERE_COLOR = vec3(0.85, 0.18, 0.12);
 const vec3  CUBE_COLOR = vec3(0.15, 0.35, 0.85);
 const vec3  CONE_COLOR = vec3(0.85, 0.2, 0.75);        // magenta, as in the assignment
@@ -1030,19 +998,18 @@ vec3 offsetAlong(vec3 p, vec3 n) {
 
 // A point on the torus's surface (re-projected: its error a few roundings of its coordinates)
 // moved outward by 16 ulps: past that error, and 16 times less than offsetAlong's step, which
-// seen from 1e3 away is 3e-2, two pixels of a telephoto view (measured: reflections off a torus
-// 1e3 away, 0.67% of pixels over 2/255 against float64 with offsetAlong, 0.04% with this; the
-// property test holds either way).
+// seen from 1e3 away is 3e-2, two pixels of a telephoto view.
 vec3 leaveTorus(vec3 p, vec3 n) {
     return offsetByUlps(p, n, 16.0);
 }
 
 // ---- what a path records ---------------------------------------------------------------------
-// radiance is the lecture's loop. What else needs to know about a pixel's first path (the edge
-// tests of the adaptive anti-aliasing, the Bounces view, the page's pixel inspector) radiance
-// tells these four functions, at four moments of the path; each keeps only what the host
-// compiles in (EDGE_TESTS, VIEW 4, PROBE_PATH: the inspector's src/raytracer/path-probe.js
-// defines probeRay and probeLit), and with none of them they are empty.
+// radiance (below) is the lecture's loop. It tells these four functions what its path did, at
+// four moments; each keeps only what is compiled in, and with none of it they are empty:
+// - EDGE_TESTS: the eye ray's hit, which the adaptive anti-aliasing's edge tests read;
+// - VIEW 4: the number of bounces, for the Bounces view;
+// - PROBE_PATH: never defined on Shadertoy. The page's pixel inspector defines it, with probeRay
+//   and probeLit, to record one pixel's path ray by ray.
 #ifndef EDGE_TESTS
 #define EDGE_TESTS (ADAPTIVE_AA == 1 && SAMPLES > 1)
 #endif
@@ -1089,114 +1056,7 @@ void recordPathEnd(int bounces) {
 #endif
 }
 
-// ---- edges: the centre ray's own near-miss tests ---------------------------------------------
-// With adaptive anti-aliasing a pixel takes the n x n grid of samples when its centre lies near
-// an edge it cannot resolve. Each pixel tests its own rays: the eye ray stands for a cone as wide
-// as the pixel's footprint (the ray cone the texture filter uses), and the pixel is near a
-// silhouette when an object's outline passes within that width of the ray, in front of what the
-// ray hit; near a shadow boundary when the shadow ray's cone (from the footprint on the surface
-// to a point at the light) grazes an occluder; near a reflected silhouette when the reflected
-// ray's cone grazes an outline. Closed forms per primitive, from the eye ray's hit alone. (A host
-// may define EDGE_TESTS 0 before the file: the progressive form, whose samples are points.)
-
-#if EDGE_TESTS
-// What the tests read of the centre ray's first surface: the shadow ray's and the reflected
-// ray's cones start there as radiance would start them (from the point as traced, not
-// re-projected: the cones are far wider than its rounding).
-struct FirstHit {
-    float t;            // the eye ray's hit (T_INFINITY for the sky)
-    int id;
-    vec3 p, l;          // the hit point, the direction to the light
-    float lightDist;
-    bool facesLight;    // n.l > 0: only then can a shadow boundary cross it
-    float width;        // the eye ray's cone width at p
-    vec3 reflected;     // the reflected ray's direction
-    float spread;       // its cone's widening per unit of distance (radiance's, curvature included)
-    bool reflects;      // radiance reflects there: weight of at least 1/255 and a bounce left
-};
-
-FirstHit firstHitOf(Scene s, vec3 dir, Hit hit, float pixelSpread) {
-    FirstHit f;
-    f.t = hit.t;
-    f.id = hit.id;
-    bool sky = hit.id == ID_NONE;
-    f.p = sky ? vec3(0.0) : hit.t * dir;
-    vec3 toLight = s.light - f.p;
-    f.lightDist = length(toLight);
-    f.l = toLight / f.lightDist;
-    f.facesLight = all(bvec2(!sky, dot(hit.n, f.l) > 0.0));
-    f.width = pixelSpread * hit.t;
-    f.reflected = reflect(dir, hit.n);
-    float sphereSpread = 2.0 * f.width / s.sphereRadius;
-    float objectSpread = 2.0 * f.width / max(objectMirrorRadius(s.object, f.p), f.width);
-    f.spread = pixelSpread + (hit.id == ID_SPHERE ? sphereSpread : (hit.id == ID_OBJECT ? objectSpread : 0.0));
-    f.reflects = all(bvec3(!sky, BOUNCES > 0, s.reflectivity[clamp(hit.id, 0, 3)] >= 1.0 / 255.0));
-    return f;
-}
-
-// Whether the cone passes near an outline of the scene: every object but `skipId` (the convex
-// solid a secondary ray leaves, whose own outline is not in its way).
-bool nearOutline(Scene s, RayCone c, int skipId) {
-    bool sphere = all(bvec2(skipId != ID_SPHERE, nearSphere(c, s.sphereCenter, s.sphereRadius)));
-    bool cube = all(bvec2(skipId != ID_CUBE, nearBox(c, s.cubeCenter, s.cubeHalfSize)));
-    bool object = all(bvec2(skipId != ID_OBJECT, nearObject(c, s.object)));
-    return any(bvec4(sphere, cube, object, nearHorizon(c, s.ground)));
-}
-
-// How near an outline must pass, in units of the cone's width (a sample's footprint, 1 pixel for
-// the first sample): an outline that crosses the pixel passes within 0.5 of its centre across it
-// (0.71 at its corners). Measured at 640x360 against the converged reference, 16 samples at
-// edges: reach 0.5, RMSE 0.0034 with 1.9% of pixels marked by these tests; 0.65, 0.0033 and 2.6%;
-// 0.8, 0.0033 and 3.0%; 1, 0.0032 and 3.7% (then with the reflected cone ending at its hit). The
-// quad's sharing (mainImage) gives back what 0.5 leaves at the corners.
-const float EDGE_REACH = 0.5;
-
-// The centre ray's edge tests, from its hit: (silhouette, shadow boundary, reflected silhouette),
-// each 1 when its cone grazes an outline. pixelSpread is the angle the pixel subtends. The
-// reflected ray's hit is not recorded: its cone runs on past it, which marks at least the pixels
-// a test that stopped there would (3.48% of the pixels against 3.45% at 640x360, the same RMSE).
-vec3 centreEdges(Scene s, vec3 eyeDir, Hit hit, float pixelSpread) {
-    FirstHit f = firstHitOf(s, eyeDir, hit, pixelSpread);
-    float w = EDGE_REACH * f.width;
-    bool silhouette = nearOutline(s, RayCone(vec3(0.0), eyeDir, 0.0, EDGE_REACH * pixelSpread, f.t), ID_NONE);
-    int leaving = reenters(f.id) ? ID_NONE : f.id;  // the torus may shade and mirror itself
-    bool shadow = all(bvec2(f.facesLight, nearOutline(s, RayCone(f.p, f.l, w, -w / f.lightDist, f.lightDist), leaving)));
-    bool reflection = all(bvec2(f.reflects, nearOutline(s, RayCone(f.p, f.reflected, w, EDGE_REACH * f.spread, T_INFINITY), leaving)));
-    return vec3(silhouette, shadow, reflection);
-}
-#endif
-
-// ---- debug views -----------------------------------------------------------------------------
-// VIEW 1 to 5 show what the picture is made of (they paste into Shadertoy too); only the chosen
-// view's code is compiled, and VIEW 0, the picture, has none of it.
-#if VIEW >= 1 && VIEW <= 3
-// A debug view's colour for the first surface the pixel centre's ray meets (the Normals, Depth
-// and Object views): its outward normal as a colour, its distance on a scale that shows the
-// whole scene (t / (t + the camera's distance): half grey at the camera's distance, white the
-// sky), or each object's own flat colour (the ground a sand colour, the sky pale blue).
-vec3 firstHitView(Scene s, vec3 dir) {
-    Hit hit = traceScene(s, vec3(0.0), dir, ID_NONE, T_INFINITY);
-    bool sky = hit.id == ID_NONE;
-#if VIEW == 1
-    return sky ? vec3(0.0) : 0.5 + 0.5 * hit.n;
-#elif VIEW == 2
-    return vec3(sky ? 1.0 : hit.t / (hit.t + CAMERA_DISTANCE));
-#else
-    vec3 own = hit.id == ID_GROUND ? vec3(0.76, 0.6, 0.42) : objectColor(hit.id);
-    return sky ? vec3(0.75, 0.85, 1.0) : own;
-#endif
-}
-#endif
-
-#if VIEW == 4
-// The Bounces view's colour for a path that traced `bounces` reflections (0: the eye ray's surface
-// alone, or the sky): dark blue, blue, green, yellow, red for 0 to 4.
-vec3 bouncesView(int bounces) {
-    const vec3 STEPS[5] = vec3[5](vec3(0.1, 0.1, 0.35), vec3(0.1, 0.4, 0.9), vec3(0.1, 0.75, 0.3), vec3(0.95, 0.85, 0.1), vec3(0.9, 0.15, 0.1));
-    return STEPS[min(bounces, 4)];
-}
-#endif
-
+// ---- the bounce loop: radiance ---------------------------------------------------------------
 // An eye ray, and how its direction changes across the footprint of its sample along image x and
 // y: ray differentials (Igehy, "Tracing ray differentials", 1999). They give the exact
 // footprint of the sample where the eye ray meets the ground.
@@ -1212,9 +1072,8 @@ struct EyeRay {
 // the object it hit, whether that point is lit, and the object its reflection hit; and the
 // normal there.
 //
-// Written for the cost model (at the top): the bounce loop ends at its bottom, on its last needed
-// trip; the ground colour is computed for every hit and chosen by a select; the shadow ray is
-// traced for every hit, lit or not (behind `lit &&` it cost more than it saved).
+// Branch-free as the rest: the loop ends at its bottom, on its last needed trip; the ground
+// colour is computed for every hit and chosen by a select; every hit traces its shadow ray.
 vec3 radiance(Scene s, EyeRay eye, float coneSpread, out vec3 key, out vec3 keyNormal) {
     vec3 rd = eye.dir;
     vec3 ro = vec3(0.0);
@@ -1298,22 +1157,84 @@ vec3 radiance(Scene s, EyeRay eye, float coneSpread, out vec3 key, out vec3 keyN
     return color;
 }
 
-// ---- camera and image ------------------------------------------------------------------------
-#if SAMPLES == 1
-#define SAMPLES_PER_AXIS 1
-#elif SAMPLES == 4
-#define SAMPLES_PER_AXIS 2
-#elif SAMPLES == 9
-#define SAMPLES_PER_AXIS 3
-#else
-#define SAMPLES_PER_AXIS 4
+// ---- edges: the centre ray's own near-miss tests ---------------------------------------------
+// With adaptive anti-aliasing a pixel takes the n x n grid of samples when its centre lies near
+// an edge it cannot resolve. Each pixel tests its own rays: the eye ray stands for a cone as wide
+// as the pixel's footprint (the ray cone the texture filter uses), and the pixel is near a
+// silhouette when an object's outline passes within that width of the ray, in front of what the
+// ray hit; near a shadow boundary when the shadow ray's cone (from the footprint on the surface
+// to a point at the light) grazes an occluder; near a reflected silhouette when the reflected
+// ray's cone grazes an outline. Closed forms per primitive, from the eye ray's hit alone.
+
+#if EDGE_TESTS
+// What the tests read of the centre ray's first surface: the shadow ray's and the reflected
+// ray's cones start there as radiance would start them (from the point as traced, not
+// re-projected: the cones are far wider than its rounding).
+struct FirstHit {
+    float t;            // the eye ray's hit (T_INFINITY for the sky)
+    int id;
+    vec3 p, l;          // the hit point, the direction to the light
+    float lightDist;
+    bool facesLight;    // n.l > 0: only then can a shadow boundary cross it
+    float width;        // the eye ray's cone width at p
+    vec3 reflected;     // the reflected ray's direction
+    float spread;       // its cone's widening per unit of distance (radiance's, curvature included)
+    bool reflects;      // radiance reflects there: weight of at least 1/255 and a bounce left
+};
+
+FirstHit firstHitOf(Scene s, vec3 dir, Hit hit, float pixelSpread) {
+    FirstHit f;
+    f.t = hit.t;
+    f.id = hit.id;
+    bool sky = hit.id == ID_NONE;
+    f.p = sky ? vec3(0.0) : hit.t * dir;
+    vec3 toLight = s.light - f.p;
+    f.lightDist = length(toLight);
+    f.l = toLight / f.lightDist;
+    f.facesLight = all(bvec2(!sky, dot(hit.n, f.l) > 0.0));
+    f.width = pixelSpread * hit.t;
+    f.reflected = reflect(dir, hit.n);
+    float sphereSpread = 2.0 * f.width / s.sphereRadius;
+    float objectSpread = 2.0 * f.width / max(objectMirrorRadius(s.object, f.p), f.width);
+    f.spread = pixelSpread + (hit.id == ID_SPHERE ? sphereSpread : (hit.id == ID_OBJECT ? objectSpread : 0.0));
+    f.reflects = all(bvec3(!sky, BOUNCES > 0, s.reflectivity[clamp(hit.id, 0, 3)] >= 1.0 / 255.0));
+    return f;
+}
+
+// Whether the cone passes near an outline of the scene: every object but `skipId` (the convex
+// solid a secondary ray leaves, whose own outline is not in its way).
+bool nearOutline(Scene s, RayCone c, int skipId) {
+    bool sphere = all(bvec2(skipId != ID_SPHERE, nearSphere(c, s.sphereCenter, s.sphereRadius)));
+    bool cube = all(bvec2(skipId != ID_CUBE, nearBox(c, s.cubeCenter, s.cubeHalfSize)));
+    bool object = all(bvec2(skipId != ID_OBJECT, nearObject(c, s.object)));
+    return any(bvec4(sphere, cube, object, nearHorizon(c, s.ground)));
+}
+
+// How near an outline must pass, in units of the cone's width (a sample's footprint, 1 pixel for
+// the first sample): an outline that crosses the pixel passes within 0.5 of its centre across it
+// (0.71 at its corners). The quad's sharing (mainImage) gives back what 0.5 leaves at the corners.
+const float EDGE_REACH = 0.5;
+
+// The centre ray's edge tests, from its hit: (silhouette, shadow boundary, reflected silhouette),
+// each 1 when its cone grazes an outline. pixelSpread is the angle the pixel subtends. The
+// reflected ray's hit is not recorded: its cone runs on past it, which marks at least the pixels
+// a test that stopped there would.
+vec3 centreEdges(Scene s, vec3 eyeDir, Hit hit, float pixelSpread) {
+    FirstHit f = firstHitOf(s, eyeDir, hit, pixelSpread);
+    float w = EDGE_REACH * f.width;
+    bool silhouette = nearOutline(s, RayCone(vec3(0.0), eyeDir, 0.0, EDGE_REACH * pixelSpread, f.t), ID_NONE);
+    int leaving = reenters(f.id) ? ID_NONE : f.id;  // the torus may shade and mirror itself
+    bool shadow = all(bvec2(f.facesLight, nearOutline(s, RayCone(f.p, f.l, w, -w / f.lightDist, f.lightDist), leaving)));
+    bool reflection = all(bvec2(f.reflects, nearOutline(s, RayCone(f.p, f.reflected, w, EDGE_REACH * f.spread, T_INFINITY), leaving)));
+    return vec3(silhouette, shadow, reflection);
+}
 #endif
 
+// ---- camera ----------------------------------------------------------------------------------
 // sin and cos of an angle in radians, to float32 accuracy. The built-ins are not held to any
-// accuracy by GLSL ES; SwiftShader's are off by up to ~1e-4 relative (cos(0.314) = 0.95093 for
-// 0.95106), which turns the camera by half a pixel at 640x360. Reduce to |r| <= pi/4 with a
-// two-part pi/2 (Cody and Waite), then Taylor series to r^9 and r^10: the first omitted terms
-// are below 2e-9 there.
+// accuracy by GLSL ES; some are off by ~1e-4 relative, which turns the camera by half a pixel.
+// Reduce to |r| <= pi/4 with a two-part pi/2 (Cody and Waite), then Taylor series to r^9 and
+// r^10: the first omitted terms are below 2e-9 there.
 vec2 sinCos(float angle) {
     float quadrant = floor(angle / (0.5 * PI) + 0.5);
     float r = (angle - quadrant * 1.5707963705062866) + quadrant * 4.3711388286737929e-8;
@@ -1386,11 +1307,59 @@ View frameView() {
 
 // The radiance of one sample through image point `pixel` (in pixels), standing for a square
 // `footprint` pixels on a side (1: the whole pixel; 0: a point). mainImage's one-sample form
-// takes it, and so do the page's pixel inspector (src/raytracer/path-probe.js) and the
-// progressive form (src/raytracer/progressive.js), which include this file.
+// takes it, and so do the page's pixel inspector and progressive form (the page's hooks, below).
 vec3 sampleRadiance(View v, vec2 pixel, float footprint, out vec3 key, out vec3 keyNormal) {
     return radiance(v.scene, eyeRay(v.camera, pixel, footprint), v.pixelSpread * footprint, key, keyNormal);
 }
+
+// ---- debug views, and the page's hooks (not needed for the picture) --------------------------
+// VIEW 1 to 5 show what the picture is made of (they paste into Shadertoy too); only the chosen
+// view's code is compiled, and VIEW 0, the picture, has none of it. mainImage draws them.
+// The studio page compiles this file in ways of its own. What it relies on (Shadertoy defines
+// none of these macros, and needs none of it but the two functions, which mainImage calls):
+// - HOST_CONTROLS (controls): the page declares the controls itself, from its panel;
+// - PROBE_PATH (what a path records): its pixel inspector records one pixel's path;
+// - EDGE_TESTS 0 (what a path records): its progressive form, whose samples are points;
+// - frameView and sampleRadiance (camera): its inspector and progressive form trace one sample;
+// - VIEW 5, "Extra samples": its inspector shows the pixels that took extra samples.
+#if VIEW >= 1 && VIEW <= 3
+// A debug view's colour for the first surface the pixel centre's ray meets (the Normals, Depth
+// and Object views): its outward normal as a colour, its distance on a scale that shows the
+// whole scene (t / (t + the camera's distance): half grey at the camera's distance, white the
+// sky), or each object's own flat colour (the ground a sand colour, the sky pale blue).
+vec3 firstHitView(Scene s, vec3 dir) {
+    Hit hit = traceScene(s, vec3(0.0), dir, ID_NONE, T_INFINITY);
+    bool sky = hit.id == ID_NONE;
+#if VIEW == 1
+    return sky ? vec3(0.0) : 0.5 + 0.5 * hit.n;
+#elif VIEW == 2
+    return vec3(sky ? 1.0 : hit.t / (hit.t + CAMERA_DISTANCE));
+#else
+    vec3 own = hit.id == ID_GROUND ? vec3(0.76, 0.6, 0.42) : objectColor(hit.id);
+    return sky ? vec3(0.75, 0.85, 1.0) : own;
+#endif
+}
+#endif
+
+#if VIEW == 4
+// The Bounces view's colour for a path that traced `bounces` reflections (0: the eye ray's surface
+// alone, or the sky): dark blue, blue, green, yellow, red for 0 to 4.
+vec3 bouncesView(int bounces) {
+    const vec3 STEPS[5] = vec3[5](vec3(0.1, 0.1, 0.35), vec3(0.1, 0.4, 0.9), vec3(0.1, 0.75, 0.3), vec3(0.95, 0.85, 0.1), vec3(0.9, 0.15, 0.1));
+    return STEPS[min(bounces, 4)];
+}
+#endif
+
+// ---- image -----------------------------------------------------------------------------------
+#if SAMPLES == 1
+#define SAMPLES_PER_AXIS 1
+#elif SAMPLES == 4
+#define SAMPLES_PER_AXIS 2
+#elif SAMPLES == 9
+#define SAMPLES_PER_AXIS 3
+#else
+#define SAMPLES_PER_AXIS 4
+#endif
 
 void mainImage(out vec4 fragColor, in vec2 fragCoord) {
     View view = frameView();
@@ -1422,27 +1391,12 @@ void mainImage(out vec4 fragColor, in vec2 fragCoord) {
         EyeRay ray = eyeRay(camera, fragCoord + (i == 0 ? vec2(0.0) : offset), footprint);
         vec3 c = radiance(s, ray, pixelSpread * footprint, key, keyNormal);
         if (i == 0) {
-            // Near an edge the first sample cannot resolve? Each pixel asks its own rays
-            // (centreEdges: a silhouette, a shadow boundary, a reflected silhouette within reach
-            // of the cones of its centre ray, from the hit that ray recorded), and the 2x2 quad
-            // adds, from the derivatives of what each of its pixels' first samples saw, what those
-            // cannot see: a crease (a normal that turns by more than a crease would: the sum of
-            // the absolute changes of its components over the quad, at most ~0.1 across a pixel
-            // of the sphere at 640x360, at least 1 across an edge of the cube), two surfaces
-            // meeting, and any change of object, of lit or shadowed, or of the object in the first
-            // reflection. Derivatives are defined only in uniform control flow: trip 0 is, since
-            // no pixel can leave the loop before its first exit test, at the bottom. SwiftShader
-            // and llvmpipe run this body on every trip, so a marked quad pays the tests on each;
-            // before the loop they would need a trace of their own, which measured slower in the
-            // torus scene, and the extra samples in a loop of their own after this one measured
-            // 1.37x / 1.14x the frame (SwiftShader / llvmpipe: every block pays that loop's one
-            // body; docs/benchmark.md). The ground's stripes are already filtered over each pixel's
-            // footprint: they are in neither test. Measured (640x360, the default view, the "Extra
-            // samples" view): the tests of its own rays mark 1.8% of the pixels (silhouettes 0.7%,
-            // shadow boundaries 0.2%, reflected silhouettes 0.9%), the quad's derivatives 1.0%
-            // more, the quad's sharing (below) 0.7%: 3.5% in all; the quad test alone marked 2.1%
-            // and missed the edges that run between quads.
+            // Near an edge the first sample cannot resolve? The pixel's own rays test for
+            // silhouettes, shadow boundaries and reflected silhouettes (centreEdges); the 2x2
+            // quad's derivatives of key add a change of object, of lit, or of reflected object.
+            // Derivatives are defined here: no pixel leaves the loop before its bottom.
             vec3 keyStep = abs(dFdx(key)) + abs(dFdy(key));
+            // A crease: the normal turns by more than 0.5 over the quad (a curved face, ~0.1).
             float normalStep = dot(abs(dFdx(keyNormal)) + abs(dFdy(keyNormal)), vec3(1.0));
             bool quad = any(bvec2(any(greaterThan(keyStep, vec3(0.0))), normalStep > 0.5));
 #if EDGE_TESTS
@@ -1450,9 +1404,7 @@ void mainImage(out vec4 fragColor, in vec2 fragCoord) {
 #else
             edges = vec4(0.0, 0.0, 0.0, float(quad));
 #endif
-            // SwiftShader runs a quad's four pixels together through the trips any of them
-            // takes: once one of them takes the extra samples, the others take them too, at no
-            // cost (an edge found in one pixel of a quad runs on into its neighbours).
+            // A quad shares its mark: an edge found in one pixel often runs into its neighbours.
             float own = float(any(greaterThan(edges, vec4(0.0))));
             float marked = max(own, abs(dFdx(own)));
             marked = max(marked, abs(dFdy(marked)));

@@ -54,7 +54,7 @@ declare global {
   interface Window {
     /** The page's hook (src/player/hook/: engine-hook.js, and page-hook.js on the interactive page). */
     shaderEngine: WindowHook;
-    /** The longest gap between 10 ms timer ticks (tests/page-heavy.test.js). */
+    /** The longest gap between 10 ms timer ticks (tests/browser/page-heavy.test.js). */
     __longestGap: number;
     /** The raw WebGL2 page's functions (tests/support/raw-webgl/raw-webgl-page.js). */
     __rawWebGL: import('./support/raw-webgl/raw-webgl-page.js').RawWebGL;
@@ -66,14 +66,14 @@ declare global {
     __nextFrame: ReturnType<WindowHook['nextFrame']>;
     /** Set by page-heavy.test.js's compile test: hold back the next compiling band's messages this long. */
     __holdCompileMs: number;
-    /** Set by the first-pin test (tests/page-inspector.test.js): the complete readout to come. */
+    /** Set by the first-pin test (tests/browser/page-inspector.test.js): the complete readout to come. */
     __complete: ReturnType<WindowHook['inspect']>;
-    /** Set by the lost-context test (tests/page-lifecycle.test.js). */
-    /** Set by the file-watching tests (tests/page-lifecycle.test.js): still true if the page did not reload. */
+    /** Set by the lost-context test (tests/browser/page-lifecycle.test.js). */
+    /** Set by the file-watching tests (tests/browser/page-lifecycle.test.js): still true if the page did not reload. */
     __sameDocument: boolean;
-    /** Set by the pointer test (tests/page-shaders.test.js): the last pointer event's position. */
+    /** Set by the pointer test (tests/browser/page-shaders.test.js): the last pointer event's position. */
     __pointer: { clientX: number; clientY: number };
-    /** Set by tests/page-whole-frames.test.js: each picture the canvas was shown, as its distinct colours (at most 4). */
+    /** Set by tests/browser/page-whole-frames.test.js: each picture the canvas was shown, as its distinct colours (at most 4). */
     __shown: number[][];
   }
 }

@@ -20,18 +20,29 @@ try {
 // its default (llvmpipe where Mesa is installed) does not change what the suite compares.
 process.env.SHADERPROOF_RENDERER ||= 'swiftshader';
 
+/** What both projects share. */
+const COMMON = { environment: /** @type {const} */ ('node'), testTimeout: 120_000, hookTimeout: 120_000, teardownTimeout: 30_000 };
+
 export default defineConfig({
   root: fileURLToPath(new URL('..', import.meta.url)),
   test: {
-    environment: 'node',
-    include: ['tests/**/*.test.js'],
-    // Starts one headless Chromium (SwiftShader) and serves the built page for the whole run.
-    globalSetup: ['tests/support/setup.js'],
-    // The browser is shared and SwiftShader uses every core: one test file at a time.
-    fileParallelism: false,
-    maxWorkers: 1,
-    testTimeout: 120_000,
-    hookTimeout: 120_000,
-    teardownTimeout: 30_000,
+    projects: [
+      // Node alone (tests/unit/): the contract, the runner's logic, the reference, the docs'
+      // checks. No browser: their files run in parallel, on every core.
+      { test: { ...COMMON, name: 'unit', include: ['tests/unit/**/*.test.js'] } },
+      // Through headless Chromium (tests/browser/, and the benchmark's peers): one browser and
+      // one page server for the whole run (tests/support/setup.js). SwiftShader uses every
+      // core and the browser is shared: one file at a time.
+      {
+        test: {
+          ...COMMON,
+          name: 'browser',
+          include: ['tests/browser/**/*.test.js', 'tests/bench/**/*.test.js'],
+          globalSetup: ['tests/support/setup.js'],
+          fileParallelism: false,
+          maxWorkers: 1,
+        },
+      },
+    ],
   },
 });

@@ -54,7 +54,7 @@ export { ShaderproofError };
 
 /**
  * @typedef {ViewOptions & {converge?: number, tile?: number}} RenderOptions converge: N progressive
- *   samples of the raytracer; tile: draw in tiles of this many pixels (even)
+ *   samples a pixel, for a shader with a progressive form; tile: draw in tiles of this many pixels (even)
  */
 
 /** @typedef {ViewOptions & {frames?: number, format?: 'webm' | 'zip'}} RecordOptions */
@@ -270,7 +270,8 @@ export async function test(folder, options = {}) {
     failed,
     /** each case's result: name, ok, failures, notes, diffPixels, files (in `out`) ... */
     cases: run.results,
-    renderer: run.environment.label,
+    /** what drew them (null when no case ran: --last-failed after a run with none failed) */
+    renderer: run.environment?.label ?? null,
     out: run.out,
     reports: run.reports,
   };
@@ -283,12 +284,20 @@ export async function test(folder, options = {}) {
  * @param {Image} reference
  * @param {{threshold?: number, maxDiffPixels?: number}} [tolerance]
  * @returns {{ok: boolean, diffPixels: number | null, failure: string | null,
+ *   where: import('../headless/compare.js').Where | null,
  *   diff: {width: number, height: number, data: Uint8Array, png: () => Buffer} | null}}
+ *   where: the differing pixels' bounding box and the first few, with their values
  */
 export function compare(actual, reference, tolerance = {}) {
   const judged = judgeImage(readImage(actual, 'actual'), readImage(reference, 'reference'), { ...DEFAULT_TOLERANCE, ...tolerance });
   const diff = judged.diff;
-  return { ok: judged.ok, diffPixels: judged.diffPixels, failure: judged.failure, diff: diff && { ...diff, png: () => pngBytes(diff) } };
+  return {
+    ok: judged.ok,
+    diffPixels: judged.diffPixels,
+    failure: judged.failure,
+    where: judged.where,
+    diff: diff && { ...diff, png: () => pngBytes(diff) },
+  };
 }
 
 /** @param {Image} image @param {string} what */

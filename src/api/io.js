@@ -82,8 +82,9 @@ export function progressBar(unit) {
 /**
  * What a verb's session draws with and how long it waits: the renderer (--renderer, --gpu, else
  * `fallback`: 'auto' is llvmpipe where Mesa is installed, else SwiftShader) and the watchdog
- * (--watchdog S for every band, else the renderer's own limits: watchdog.js).
- * @param {{renderer?: string, gpu?: boolean, watchdog?: string}} values
+ * (--watchdog S for every band, else the renderer's own limits: watchdog.js), and whether a build
+ * of the page says its log (--verbose).
+ * @param {{renderer?: string, gpu?: boolean, watchdog?: string, verbose?: boolean}} values
  * @param {import('../headless/renderers.js').RendererName | 'auto'} fallback
  */
 export function sessionOptions(values, fallback) {
@@ -101,7 +102,7 @@ export function sessionOptions(values, fallback) {
   const asked = Boolean(values.gpu || values.renderer || process.env[RENDERER_ENV]) || fallback !== 'auto';
   /** @type {import('./loop-limit.js').LoopLimitMode} */
   const loopLimit = asked ? 'fail' : 'fallback';
-  return { renderer, loopLimit, ...watchdogFor(renderer, seconds) };
+  return { renderer, loopLimit, verbose: Boolean(values.verbose), ...watchdogFor(renderer, seconds) };
 }
 
 /** A frame slower than this gets a progress line on a terminal. */

@@ -16,21 +16,14 @@ import { ShaderproofError, shaderKind } from '../headless/session.js';
 import { UsageError, viewQuery } from './view-options.js';
 
 /**
- * The live controls a converge sets before its samples: the raytracer's sample count drawn over
- * the picture (its SHOW_SAMPLE_COUNT, which "Converge when still" turns on for a person: the
- * page's src/player/app/converge.js) off, since a render is the picture alone. A shader without it
- * ignores it.
- */
-const CONVERGE_CONTROLS = { SHOW_SAMPLE_COUNT: 0 };
-
-/**
  * Draws the shader `file` at `view` and returns the image and what the page said.
  * @param {import('../headless/session.js').Session} session
  * @param {string} file
  * @param {import('./view-options.js').ViewOptions} view
  * @param {{converge?: number | null, progress?: boolean, say?: (line: string) => void}} [options]
- *   converge: N progressive samples of the raytracer; progress: a bar on a terminal for long
- *   work; say: hears what is fetched for the shader (media.js)
+ *   converge: N progressive samples a pixel (the page's "Converge when still", for a shader with
+ *   a progressive form); progress: a bar on a terminal for long work; say: hears what is fetched
+ *   for the shader (media.js)
  * @returns {Promise<{width: number, height: number, data: Uint8Array, info: any,
  *   notes: import('../headless/view.js').PageNote[]}>}
  */
@@ -68,7 +61,7 @@ export async function renderShader(session, file, view, { converge = null, progr
   try {
     const work =
       converge !== null
-        ? { method: /** @type {const} */ ('converge'), request: null, total: converge, controls: CONVERGE_CONTROLS }
+        ? { method: /** @type {const} */ ('converge'), request: null, total: converge }
         : {
             method: /** @type {const} */ ('frameAt'),
             request: { frame: view.frame, fps: view.fps, width: view.size.width, height: view.size.height },

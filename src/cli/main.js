@@ -68,7 +68,8 @@ const COMMON_HELP = `  --renderer R          what draws: llvmpipe (Mesa, on the 
                         machine or a stopped process does not count, and a frame that
                         finishes bands goes on. On a GPU, and where /proc is missing, S
                         seconds of the wall clock
-  --verbose             an internal error's stack too
+  --verbose             an internal error's stack too, and the page's build log when it is
+                        built first
   -h, --help            this help`;
 
 const VERBS = {
@@ -83,8 +84,9 @@ ${VIEW_HELP}
                         at iTime N/F (default 60)
   --tile PX             draw in tiles of PX pixels (even): a still larger than the browser
                         draws at once, the same pixels as one draw where both fit
-  --converge N          the raytracer only: N progressive samples a pixel (its "Converge
-                        when still"), a print-quality still
+  --converge N          N progressive samples a pixel (the page's "Converge when still"), a
+                        print-quality still: for a shader with a progressive form (today the
+                        studio's built-in shader and its edits); another is an error
   -o, --output FILE     OUT.png, or OUT.pfm: the colours in float as the shader wrote them
                         (Portable FloatMap, unclamped), or OUT.wav: the Sound tab (mainSound)
                         as stereo 16-bit at 44100 Hz, from --time (required)
@@ -139,12 +141,16 @@ ${COMMON_HELP}`,
 Serves the page on SHADER (from anywhere on disk) and prints its URL; opens no browser. Saving
 the file recompiles it on every page that has it open. Ctrl-C stops. With --fetch-media,
 what the shader names is downloaded when open starts (run it again for media a later save names).
+It answers only requests for 127.0.0.1, localhost or [::1] on its port: another host name gets
+403, so that no other site can read it by pointing its name at this machine (DNS rebinding).
 
   --port P              the port to listen on (default: a free one)
 ${MEDIA_HELP}
+  --verbose             the page's build log, when it is built first
   -h, --help            this help`,
     flags: {
       help: { type: 'boolean', short: 'h' },
+      verbose: { type: 'boolean' },
       port: { type: 'string' },
       media: { type: 'string' },
       'fetch-media': { type: 'boolean' },
@@ -153,7 +159,7 @@ ${MEDIA_HELP}
   },
   test: {
     summary: 'render every shader of a folder and compare with its reference',
-    usage: `${NAME} test DIR [--update] [--shard i/n] [--jobs N] [--reporter dot,junit,html] [options]
+    usage: `${NAME} test DIR|CASE... [-g PATTERN] [--last-failed] [--watch] [--update] [--shard i/n] [options]
 
 Every .glsl and .json file under DIR is a case, drawn at ${TEST_SIZE.width}x${TEST_SIZE.height} and iTime 0 (render draws
 640x360) unless DIR/shaderproof.json (optional) sets its view; it sets tolerance and checks too:
@@ -183,7 +189,24 @@ What draws: --renderer R, else the renderer that drew the references (--update r
 DIR/__references__/drawn-by.json; references written before that record are SwiftShader's).
 --update, and a folder with no references yet, draw as render does.
 
-  --update              write the references (and pass)
+Choosing cases: give files, sub-folders or view names of one test folder (the nearest folder
+above, or the folder itself, with a shaderproof.json or __references__), and filter them:
+
+  ${NAME} test shaders/waves.glsl shaders/sky/   a case and a sub-folder's cases, one run
+  ${NAME} test tests/golden -g '^view-'          the cases whose name matches
+  ${NAME} test shaders --last-failed             what failed in the last run, again
+  ${NAME} test shaders --watch                   again on each save; Ctrl-C ends
+
+  -g, --grep PATTERN    only the cases whose name (path under DIR, or view name) matches a
+                        regular expression, case-insensitive (/PATTERN/ as written)
+  --grep-invert PATTERN only the cases whose name does not match
+  --last-failed         only the cases that failed in the last run (OUT/.last-run.json,
+                        written by every run); none failed: says so and exits 0
+  --watch               run, then rerun a case when its shader, its manifest entry, its
+                        reference or a channel's image is saved, in the same browsers; the
+                        reports follow each rerun; Ctrl-C exits 1 if a case fails, else 0
+  --update              write the references (and pass): of the chosen cases only, the
+                        others' files left as they are
   --shard i/n           run the i-th of n shares of the cases (1-based)
   --jobs N              cases drawn at once, each worker its own Chromium (default ${DEFAULT_JOBS} here)
   --reporter R          dot (a line a case), junit (junit.xml), html (index.html, to open in a
@@ -203,6 +226,10 @@ ${COMMON_HELP}`,
       jobs: { type: 'string' },
       reporter: { type: 'string', multiple: true },
       out: { type: 'string' },
+      grep: { type: 'string', short: 'g' },
+      'grep-invert': { type: 'string' },
+      'last-failed': { type: 'boolean' },
+      watch: { type: 'boolean' },
     },
     run: runTest,
   },

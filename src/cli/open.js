@@ -19,7 +19,7 @@ export async function runOpen({ values, positionals }, { stopped } = {}) {
   shaderKind(file);
   const media = readMediaOptions(values);
   const port = values.port === undefined ? 0 : readNumber(values.port, '--port', { min: 0, whole: true });
-  const root = await builtPage({ say: io.err }).catch((error) => {
+  const root = await builtPage({ say: io.err, verbose: Boolean(values.verbose) }).catch((error) => {
     throw new ShaderproofError(error.message);
   });
   const server = await startPageServer({ root, port, fileEvents: true }).catch((error) => {

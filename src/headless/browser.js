@@ -190,7 +190,7 @@ export async function startBrowser({
   const renderer = gpu ? 'gpu' : (asked ?? 'swiftshader');
   const mesa = renderer === 'llvmpipe' ? findIt() : null;
   if (mesa && mesa.missing.length) throw new Error(mesaMissingLine(mesa.missing));
-  const userDataDir = fs.mkdtempSync(path.join(os.tmpdir(), 'raytracer-chromium-'));
+  const userDataDir = fs.mkdtempSync(path.join(os.tmpdir(), 'shaderproof-chromium-'));
   const removeProfile = () => removeChromiumProfile(userDataDir);
   let browser;
   try {

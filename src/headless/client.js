@@ -172,14 +172,13 @@ export function engineClient(page) {
 
     /**
      * Starts long work on the page: `record` or `frameAt` with `request`, or a converge of `total`
-     * still frames, whose live controls are first set to `controls` (what the shader's
-     * convergence needs: the raytracer's, src/raytracer/convergence.js, are given by the caller).
+     * still frames, the picture alone (its progressive form's on-screen overlays off).
      * @param {LongMethod} method
-     * @param {{request: any, total: number, controls?: Record<string, number>}} work
+     * @param {{request: any, total: number}} work
      */
-    startLong(method, { request, total, controls = {} }) {
+    startLong(method, { request, total }) {
       return page.evaluate(
-        (m, r, t, c) => {
+        (m, r, t) => {
           const hook = /** @type {any} */ (/** @type {HookedWindow} */ (window).shaderEngine);
           const slot = { settled: /** @type {any} */ (null) };
           /** @type {any} */ (window).__longWork = slot;
@@ -192,8 +191,7 @@ export function engineClient(page) {
           const started =
             m === 'converge'
               ? hook
-                  .setConverging(true, { frames: t })
-                  .then(() => hook.setControls(c))
+                  .setConverging(true, { frames: t, overlays: false })
                   .then(constants)
                   .then(() => hook.restart())
               : hook[m](r);
@@ -205,7 +203,6 @@ export function engineClient(page) {
         method,
         request,
         total,
-        controls,
       );
     },
 
@@ -309,6 +306,6 @@ export async function beforeEachLoad(page, scripts, timeouts) {
   for (const script of scripts) await page.evaluateOnNewDocument(script);
   if (timeouts)
     await page.evaluateOnNewDocument((chosen) => {
-      /** @type {any} */ (window).__raytracerTimeouts = chosen;
+      /** @type {any} */ (window).__shaderEngineTimeouts = chosen;
     }, /** @type {any} */ (timeouts));
 }

@@ -12,10 +12,10 @@ import { CLOSE_TIMEOUT_MS, withTimeout } from './watch.js';
 /**
  * The built page (built now where a clone's is stale: page-server.js builtPage) on a free
  * loopback port, with `routes` answered first.
- * @param {{routes?: import('./page-server.js').Routes, say?: (line: string) => void}} [options]
+ * @param {{routes?: import('./page-server.js').Routes, say?: (line: string) => void, verbose?: boolean}} [options]
  */
-export async function servePage({ routes, say } = {}) {
-  const root = await builtPage({ say });
+export async function servePage({ routes, say, verbose = false } = {}) {
+  const root = await builtPage({ say, verbose });
   return startPageServer({ root, routes });
 }
 

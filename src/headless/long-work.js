@@ -15,18 +15,17 @@ const POLL_MS = 250;
  * Runs `method` of window.shaderEngine with `request` on the page of `client` until it settles, and
  * returns its value. `progress` is called after each ask with the work's count so far
  * (window.shaderEngine's `progressOf` reading: 'recording' for record and frameAt, 'stillFrames'
- * for a converge). A converge sets the live `controls` it is given first (the raytracer's
- * sample-count overlay off: the caller knows its shader). Rejects with the page's error, or with
- * `hung` set when the watchdog gave up on the shader: with `limits` (the command line's watchdog),
- * a band that costs more than they allow on `clock` (view.js drawView), whether or not the page
- * still answers; without, the page's own watchdog.
+ * for a converge). A converge is of the picture alone (its form's on-screen overlays off).
+ * Rejects with the page's error, or with `hung` set when the watchdog gave up on the shader:
+ * with `limits` (the command line's watchdog), a band that costs more than they allow on `clock`
+ * (view.js drawView), whether or not the page still answers; without, the page's own watchdog.
  * @param {import('./client.js').EngineClient} client
  * @param {{method: import('./client.js').LongMethod, request: any, total: number,
- *   controls?: Record<string, number>, progress?: (done: number, total: number) => void,
+ *   progress?: (done: number, total: number) => void,
  *   limits?: import('./view.js').ProgressLimits | null, clock?: import('./watchdog/gpu-time.js').WorkClock}} work
  */
-export async function runLong(client, { method, request, total, controls = {}, progress = () => {}, limits = null, clock = WALL_CLOCK }) {
-  await client.startLong(method, { request, total, controls });
+export async function runLong(client, { method, request, total, progress = () => {}, limits = null, clock = WALL_CLOCK }) {
+  await client.startLong(method, { request, total });
   const watch = limits ? new BandWatch(limits, clock) : null;
   const hung = (/** @type {string} */ said) =>
     Object.assign(new Error(`the watchdog gave up on the shader${said ? ` ("${said}")` : ''}`), { hung: true });

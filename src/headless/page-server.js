@@ -14,7 +14,12 @@
 //                          changes (watch()); the page reloads that shader in place (main.js)
 //   anything else          the built page's files; an unknown path answers 404
 //
-// With fileEvents (`open`), index.html gets one <meta name="raytracer-file-events"> so the page
+// It answers only a request for its own host (Host: 127.0.0.1:PORT, localhost:PORT or
+// [::1]:PORT), and refuses any other with 403: a page on another site whose name was made to
+// point at 127.0.0.1 (DNS rebinding) reads nothing of it, as Vite's dev server refuses one
+// (server.allowedHosts).
+//
+// With fileEvents (`open`), index.html gets one <meta name="shaderproof-file-events"> so the page
 // knows to listen. A test run serves the same page through it, with the harness's routes first
 // (tests/support/page-server.js). Nothing here writes to disk.
 
@@ -22,6 +27,7 @@ import fs from 'node:fs';
 import http from 'node:http';
 import path from 'node:path';
 import { fileURLToPath } from 'node:url';
+import { buildPage } from './page-build.js';
 
 const PACKAGE_ROOT = fileURLToPath(new URL('../..', import.meta.url));
 const BUILT_PAGE_DIR = path.join(PACKAGE_ROOT, 'dist');
@@ -109,18 +115,18 @@ export function staleSources(dir) {
 /**
  * The folder of the built page, built now when this is a clone whose dist/ is missing or older
  * than the page's sources (with Vite, a dev dependency a clone has). `say` tells the person why
- * the first run takes longer.
- * @param {{say?: (line: string) => void}} [options]
+ * the first run takes longer, in one line; the build's own log only with `verbose`, or when it
+ * fails (page-build.js).
+ * @param {{say?: (line: string) => void, verbose?: boolean}} [options]
  * @returns {Promise<string>}
  */
-export async function builtPage({ say = () => {} } = {}) {
+export async function builtPage({ say = () => {}, verbose = false } = {}) {
   const index = path.join(BUILT_PAGE_DIR, 'index.html');
   const inClone = fs.existsSync(path.join(PACKAGE_ROOT, 'vite.config.js'));
   const built = fs.existsSync(index) ? fs.statSync(index).mtimeMs : 0;
   if (built && !(inClone && staleSources(BUILT_PAGE_DIR).length)) return BUILT_PAGE_DIR;
-  let vite;
   try {
-    vite = await import('vite');
+    await import('vite');
   } catch {
     throw new Error(
       built
@@ -129,7 +135,7 @@ export async function builtPage({ say = () => {} } = {}) {
     );
   }
   say(built ? 'the page changed since it was built: building it again (vite build)…' : 'building the page (vite build), once…');
-  await vite.build({ configFile: path.join(PACKAGE_ROOT, 'vite.config.js'), logLevel: 'warn' });
+  await buildPage({ configFile: path.join(PACKAGE_ROOT, 'vite.config.js'), verbose, say });
   return BUILT_PAGE_DIR;
 }
 
@@ -166,10 +172,21 @@ export async function startPageServer({ root, port = 0, fileEvents = false, rout
 
   const page = fs.readFileSync(path.join(root, 'index.html'), 'utf8');
   const index = fileEvents
-    ? page.replace(/<meta charset[^>]*>|<head>/i, (tag) => `${tag}\n    <meta name="raytracer-file-events" content="${EVENTS_ROUTE}" />`)
+    ? page.replace(/<meta charset[^>]*>|<head>/i, (tag) => `${tag}\n    <meta name="shaderproof-file-events" content="${EVENTS_ROUTE}" />`)
     : page;
 
-  const server = http.createServer((req, res) => routes(req, res, () => answer(req, res)));
+  /** The Host headers it answers (lower case), once it listens. @type {Set<string>} */
+  const ownHosts = new Set();
+  let baseUrl = '';
+  const server = http.createServer((req, res) => {
+    const host = req.headers.host?.toLowerCase();
+    if (!host || !ownHosts.has(host)) {
+      res.writeHead(403, { 'content-type': 'text/plain; charset=utf-8' });
+      res.end(`This server answers only for its own host (127.0.0.1, localhost or [::1] on its port): open ${baseUrl}/\n`);
+      return;
+    }
+    routes(req, res, () => answer(req, res));
+  });
   /** @param {import('node:http').IncomingMessage} req @param {import('node:http').ServerResponse} res */
   function answer(req, res) {
     const url = new URL(req.url ?? '/', 'http://page');
@@ -252,7 +269,8 @@ export async function startPageServer({ root, port = 0, fileEvents = false, rout
     server.listen(port, '127.0.0.1', () => resolve(undefined));
   });
   const { port: chosen } = /** @type {import('node:net').AddressInfo} */ (server.address());
-  const baseUrl = `http://127.0.0.1:${chosen}`;
+  baseUrl = `http://127.0.0.1:${chosen}`;
+  for (const name of ['127.0.0.1', 'localhost', '[::1]']) ownHosts.add(`${name}:${chosen}`);
 
   return {
     baseUrl,

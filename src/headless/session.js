@@ -3,7 +3,7 @@
 // llvmpipe or the machine's GPU, src/headless/renderers.js), and a page on it brought to each view
 // through the same drawView as the render tests (src/headless/view.js). The watchdog counts the
 // work of that browser's GPU process (src/headless/watchdog/gpu-time.js), not the wall clock. A shader that
-// never finishes holds the GPU process for good (tests/page-heavy.test.js): the session then
+// never finishes holds the GPU process for good (tests/browser/page-heavy.test.js): the session then
 // kills that browser and starts another for whatever comes next.
 
 import fs from 'node:fs';
@@ -61,11 +61,13 @@ const START_VIEW = `${ENGINE_PAGE}?size=2x2&time=0`;
 /**
  * @param {{renderer?: import('./renderers.js').RendererName, hangMs?: number, compileHangMs?: number,
  *   loopLimit?: import('../api/loop-limit.js').LoopLimitMode,
- *   say?: (line: string) => void, progress?: (state: import('./view.js').ViewProgress | null) => void}} [options]
+ *   say?: (line: string) => void, verbose?: boolean,
+ *   progress?: (state: import('./view.js').ViewProgress | null) => void}} [options]
  *   hangMs: a band of a frame that costs the GPU process this long in CPU time (the wall clock
  *   where that cannot be read) fails (the watchdog: watchdog.js); compileHangMs: the same for a
  *   program's first draw, which compiles it; loopLimit: what a loop cut by llvmpipe's limit does
- *   (loop-limit.js); progress: hears how far each view has got, every 0.1 s while it draws
+ *   (loop-limit.js); progress: hears how far each view has got, every 0.1 s while it draws;
+ *   verbose: `say` hears the page's build log too, when it is built (page-build.js)
  */
 export async function startSession({
   renderer = 'swiftshader',
@@ -73,6 +75,7 @@ export async function startSession({
   hangMs = WATCHDOG_LIMITS[renderer].hangMs,
   compileHangMs = WATCHDOG_LIMITS[renderer].compileHangMs,
   say = () => {},
+  verbose = false,
   progress = () => {},
 } = {}) {
   const limits = { hangMs, compileHangMs };
@@ -83,7 +86,7 @@ export async function startSession({
   } catch (error) {
     throw new ShaderproofError(error.message);
   }
-  const server = await servePage({ say }).catch((error) => {
+  const server = await servePage({ say, verbose }).catch((error) => {
     throw new ShaderproofError(error.message);
   });
   mark('server');

@@ -3,7 +3,7 @@
 // line's (src/api/render.js, which draws the goldens too: tests/support/goldens.js). A view is a query of the page's URL contract
 // (src/shared/url-params.js: ?shader=…&size=…&time=…&NAME=value); a fresh page loads it, a page
 // that is already loaded is brought to it by window.shaderEngine.open(), which gives what a fresh
-// load gives (tests/page-open.test.js).
+// load gives (tests/browser/page-open.test.js).
 
 /**
  * What drawView found: the frame's pixels (base64 RGBA8, rows top to bottom) and their iFrame (0:

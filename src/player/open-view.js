@@ -3,7 +3,7 @@
 // the edits kept for it (the interactive page's kept-work.js, given as `keep`), and the notes on
 // what it could not have. Both pages' own loads (main.js, engine-main.js) and
 // window.shaderEngine.open() (hook/engine-hook.js) go through openView, so that a page put in a
-// state by open() is the page a fresh load of that URL gives (tests/page-open.test.js holds the
+// state by open() is the page a fresh load of that URL gives (tests/browser/page-open.test.js holds the
 // two pixel-identical).
 //
 // It shows nothing itself: what a person should be told comes out as the app's events, as data
@@ -36,12 +36,12 @@ import { singlePass } from '../shadertoy/multipass.js';
 
 /**
  * The page's built-in shader: what it runs with no ?shader= and no #source=, and in place of one
- * that cannot be had on its own load. The interactive page's is the raytracer (main.js, which
+ * that cannot be had on its own load. The studio gives its own (src/studio/main.js, which
  * imports its text `?raw` and accepts its hot updates under `npm run dev`: a second importer
  * that does not would make Vite reload the whole page instead); the engine page's is a black
- * start shader (engine-main.js), so that it never loads the raytracer.
+ * start shader (engine-main.js), so that it never loads the studio's.
  * @typedef {{name: string, text: string, what: string}} BuiltinShader name: its file name; what:
- *   how a notice names it ("the built-in raytracer")
+ *   how a notice names it ("the built-in shader")
  */
 /** @type {BuiltinShader} */
 let builtinShader = { name: 'builtin.glsl', text: '', what: 'the built-in shader' };

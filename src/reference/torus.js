@@ -1,5 +1,5 @@
 // The torus of shaders/raytrace.glsl in float64, the ground truth its GLSL tests measure against;
-// checked on its own against an independent root finder in tests/torus-reference.test.js. Same
+// checked on its own against an independent root finder in tests/unit/torus-reference.test.js. Same
 // API as the other twins: [t, nx, ny, nz], the nearest hit with t > 0 and the unit outward normal;
 // a miss has t < 0; a ray starting inside the tube hits its far side.
 //

@@ -8,7 +8,7 @@
 import fs from 'node:fs';
 import path from 'node:path';
 import { compareImages, judgeImage } from '../headless/compare.js';
-import { readPng, writePng } from '../headless/png.js';
+import { readPng, writePng, writeWhole } from '../headless/png.js';
 import { allowedMissing } from '../api/io.js';
 import { sayOnce } from '../shared/said-once.js';
 import { renderShader } from '../api/render.js';
@@ -21,6 +21,8 @@ import { halve, thumbnail } from './scale.js';
 import { compileDetail } from './compile-detail.js';
 import { toleranceFor } from './manifest.js';
 import { rmsDifference, spectrumDifference, spectrumOutline } from './sound-compare.js';
+import { pixelCount, verb } from '../shared/differences.js';
+import { pixelsScript } from './report/viewer.js';
 
 /**
  * What a case's sound comparison found: the two figures and their tolerances, each spectrum's
@@ -39,9 +41,11 @@ import { rmsDifference, spectrumDifference, spectrumOutline } from './sound-comp
  * @property {string[]} notes
  * @property {number} ms
  * @property {number | null} diffPixels
+ * @property {import('../headless/compare.js').Where | null} where where the pixels differ: their
+ *   box and the first few with both images' values (null when none differs, or not compared)
  * @property {{width: number, height: number} | null} size the render's
  * @property {{threshold: number, maxDiffPixels: number} | null} tolerance
- * @property {Partial<Record<'actual' | 'reference' | 'diff' | 'half' | 'thumb' | 'actualWav' | 'referenceWav', string>>} files
+ * @property {Partial<Record<keyof typeof SUFFIXES, string>>} files
  * @property {{line: string, allowed: boolean}[]} missing what the case went without
  * @property {import('./compile-detail.js').CompileDetail | null} compile
  * @property {SoundFigures | null} sound
@@ -60,6 +64,7 @@ const SUFFIXES = /** @type {const} */ ({
   thumb: '-thumb.png',
   actualWav: '-actual.wav',
   referenceWav: '-reference.wav',
+  pixels: '-pixels.js',
 });
 
 /**
@@ -76,6 +81,7 @@ export function caseResult(testCase, outcome) {
     notes: [],
     ms: 0,
     diffPixels: null,
+    where: null,
     size: null,
     tolerance: testCase.tolerance,
     files: {},
@@ -107,7 +113,16 @@ export async function runCase(session, testCase, { update, out, thumbnails, rend
     files[kind] = testCase.name + SUFFIXES[kind];
   };
   for (const kind of /** @type {(keyof typeof SUFFIXES)[]} */ (Object.keys(SUFFIXES))) fs.rmSync(file(kind), { force: true });
-  const finish = () => Object.assign(result, { ok: failures.length === 0, ms: Date.now() - started });
+  const finish = () => {
+    // the kept images again, for the HTML report's pixel readout (a page from file:// cannot read its PNGs)
+    if (thumbnails && files.actual) {
+      const kept = /** @type {const} */ (['reference', 'actual', 'diff']).filter((kind) => files[kind]);
+      const pngs = Object.fromEntries(kept.map((kind) => [kind, fs.readFileSync(file(kind))]));
+      writeWhole(file('pixels'), Buffer.from(pixelsScript(pngs)));
+      files.pixels = testCase.name + SUFFIXES.pixels;
+    }
+    return Object.assign(result, { ok: failures.length === 0, ms: Date.now() - started });
+  };
   let image;
   try {
     image = await renderShader(session, testCase.file, testCase.view);
@@ -152,7 +167,7 @@ export async function runCase(session, testCase, { update, out, thumbnails, rend
   } else {
     const reference = readPng(testCase.reference);
     const judged = judgeImage(image, reference, tolerance);
-    if (judged.diffPixels !== null) result.diffPixels = judged.diffPixels;
+    if (judged.diffPixels !== null) Object.assign(result, { diffPixels: judged.diffPixels, where: judged.where });
     if (!judged.ok) {
       failures.push(/** @type {string} */ (judged.failure));
       keep('actual', image);
@@ -197,7 +212,9 @@ async function runChecks(session, testCase, image, { update, result, keep, file 
     const { diffPixels: off } = compare(half, halve(image), checks.halfSize.threshold);
     const allowed = Math.floor(half.width * half.height * checks.halfSize.maxDiffFraction);
     if (off > allowed) {
-      failures.push(`halfSize: ${off} pixels of the half-size render differ from the full render halved (at most ${allowed} may)`);
+      failures.push(
+        `halfSize: ${pixelCount(off)} of the half-size render ${verb(off, 'differs', 'differ')} from the full render halved (at most ${allowed} may)`,
+      );
       keep('half', half);
     }
   }
@@ -207,7 +224,7 @@ async function runChecks(session, testCase, image, { update, result, keep, file 
     let bad = 0;
     for (let i = 0; i < data.length; i += 4)
       if (!(Number.isFinite(data[i]) && Number.isFinite(data[i + 1]) && Number.isFinite(data[i + 2]))) bad++;
-    if (bad) failures.push(`noNaN: ${bad} pixels have a NaN or infinite colour`);
+    if (bad) failures.push(`noNaN: ${pixelCount(bad)} ${verb(bad, 'has', 'have')} a NaN or infinite colour`);
   }
   if (testCase.sound) await soundCase(session, testCase, testCase.sound, { update, result, file });
   if (checks.maxFrameMs !== undefined) {

@@ -1,4 +1,5 @@
-// The cases of `shaderproof test DIR`: every .glsl and .json file under DIR, and every view the
+// The cases of `shaderproof test DIR`: every .glsl and .json file under DIR (not a dot-file, as
+// OUT/.last-run.json is, nor in a dot-folder), and every view the
 // manifest names (sorted together, so shards are stable across machines), with what
 // DIR/shaderproof.json says of each:
 //
@@ -37,10 +38,10 @@ import { readViewOptions } from '../api/view-options.js';
 import { RENDERER_NAMES } from '../headless/renderers.js';
 import { DEFAULT_SOUND_TOLERANCE } from './sound-compare.js';
 
-const MANIFEST = 'shaderproof.json';
+export const MANIFEST = 'shaderproof.json';
 export const REFERENCE_DIR = '__references__';
 /** Folders that are never cases: references, dot-folders, installed packages. */
-const SKIPPED_DIRS = /^(\.|__|node_modules$)/;
+export const SKIPPED_DIRS = /^(\.|__|node_modules$)/;
 
 /** The default tolerance: SwiftShader draws the same bytes on every machine with the same Chromium. */
 export const DEFAULT_TOLERANCE = Object.freeze({ threshold: 0, maxDiffPixels: 0 });
@@ -69,7 +70,7 @@ const CASE_KEYS = [
 /** A case named by a view: its name is its reference's file name, with "/" for sub-folders. */
 const VIEW_NAME = /^[A-Za-z0-9_][\w.-]*(\/[A-Za-z0-9_][\w.-]*)*$/;
 /** A shader file: a case of its own under DIR, or what a view draws. */
-const SHADER_FILE = /\.(glsl|json)$/i;
+export const SHADER_FILE = /\.(glsl|json)$/i;
 /** A sound case's default span: short, each second is a second of the GPU's time and of the file's. */
 const DEFAULT_SOUND_SPAN = Object.freeze({ time: 0, duration: 2 });
 const CHECK_KEYS = ['noNaN', 'deterministic', 'halfSize', 'maxFrameMs'];
@@ -136,7 +137,7 @@ function shaderFiles(dir, under = '') {
     const relative = path.join(under, entry.name);
     if (entry.isDirectory()) {
       if (!SKIPPED_DIRS.test(entry.name)) found.push(...shaderFiles(dir, relative));
-    } else if (/\.(glsl|json)$/i.test(entry.name) && relative !== MANIFEST) found.push(relative);
+    } else if (SHADER_FILE.test(entry.name) && !entry.name.startsWith('.') && relative !== MANIFEST) found.push(relative);
   }
   return found;
 }

@@ -24,7 +24,7 @@
 //   preview file "/media/previz/cubemap00.png"; iChannelResolution (1024, 1024, 1).
 // The corners put the texel at (s, t) of face f on the direction a samplerCube lookup takes to
 // that texel (the OpenGL ES 3.0 specification's table "Cube Map Texture Selection"), so texture(iChannel, d) reads
-// back what mainCubemap wrote for d (tests/cube-a.test.js computes it).
+// back what mainCubemap wrote for d (tests/browser/cube-a.test.js computes it).
 
 /** The side of every face, in texels (EffectPass.Paint: ResizeCubemapBuffer(…, 1024, 1024)). */
 export const CUBE_A_SIZE = 1024;

@@ -1,7 +1,7 @@
 // How long the page waits before it says that something is wrong, in one place. A test harness
 // shortens them (it must not wait out a production timeout) by defining
-// window.__raytracerTimeouts before the page's scripts run (tests/support/page.js); the page
-// never reads them from its URL, so a link cannot change them. tests/timeouts.test.js holds the
+// window.__shaderEngineTimeouts before the page's scripts run (tests/support/page.js); the page
+// never reads them from its URL, so a link cannot change them. tests/unit/timeouts.test.js holds the
 // production values.
 
 /**
@@ -37,4 +37,4 @@ export function timeoutsWith(overrides) {
 }
 
 /** @type {Readonly<Timeouts>} */
-export const TIMEOUTS = timeoutsWith(/** @type {any} */ (globalThis).__raytracerTimeouts);
+export const TIMEOUTS = timeoutsWith(/** @type {any} */ (globalThis).__shaderEngineTimeouts);

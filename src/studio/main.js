@@ -118,7 +118,7 @@ if (import.meta.hot) {
 
 // Served by the command line's `open` (src/headless/page-server.js), the page hears of a saved file
 // through Server-Sent Events at the address this tag names.
-const fileEvents = document.querySelector('meta[name="raytracer-file-events"]')?.getAttribute('content');
+const fileEvents = document.querySelector('meta[name="shaderproof-file-events"]')?.getAttribute('content');
 if (fileEvents) {
   new EventSource(fileEvents).addEventListener('message', (event) => {
     const { url } = JSON.parse(event.data);

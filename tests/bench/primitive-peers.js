@@ -2,7 +2,7 @@
 // author writes from Inigo Quilez's published formulas) and how any set of intersectors is judged
 // on the project's hard cases (tests/intersector-cases/) with the project's own verdict
 // (judge() in tests/support/tables/intersector-kinds.js). Shared by the per-primitive benchmark (primitives.js)
-// and its test (tests/primitive-peers.test.js).
+// and its test (tests/browser/primitive-peers.test.js).
 //
 // A peer file is appended after shaders/raytrace.glsl; its #defines rename the project's calls in
 // whatever follows (the test main of intersector-kinds.js, the timing main of primitives.js), so
@@ -21,7 +21,7 @@ const iqPeer = (kind) => fs.readFileSync(new URL(`./peers/iq/${kind}.glsl`, impo
 /** The project's shader with the iq peers of `kinds` appended (their #defines then rename the calls that follow). */
 export const withIqPeers = (kinds = PRIMITIVE_KINDS, source = shaderSource()) => [source, ...kinds.map(iqPeer)].join('\n');
 
-/** The hard cases of one primitive, every number rounded to float32 (as tests/intersectors.test.js does). */
+/** The hard cases of one primitive, every number rounded to float32 (as tests/browser/intersectors.test.js does). */
 const hardCases = (kind) =>
   INTERSECTOR_CASES.filter((c) => c.kind === kind).map((c) => ({ ...c, ro: f32(c.ro), rd: f32(c.rd), params: f32(c.params) }));
 

@@ -137,7 +137,7 @@ await withHarness(async (context) => {
   console.log('done');
   const ourWrong = PRIMITIVE_KINDS.filter((kind) => errors.ours[kind].wrong > 0);
   if (ourWrong.length)
-    throw new Error(`the project's intersectors got hard cases wrong (${ourWrong.join(', ')}): run tests/intersectors.test.js`);
+    throw new Error(`the project's intersectors got hard cases wrong (${ourWrong.join(', ')}): run tests/browser/intersectors.test.js`);
 
   const markdown = primitivesMarkdown({
     timed,

@@ -21,7 +21,7 @@
 //   grazing      the angle (radians) at which the ray meets the surface, when it is so small that
 //                the hit is ill-conditioned: t is held to K u S / sin(grazing) as well
 //
-// All numbers are rounded to float32 before either side sees them (tests/intersectors.test.js),
+// All numbers are rounded to float32 before either side sees them (tests/browser/intersectors.test.js),
 // so the comparison measures the intersector's arithmetic, not the rounding of its inputs.
 
 import { PLANE_CASES } from './plane.js';

@@ -177,7 +177,7 @@ function originFamily(label, s, inTube, count, seed) {
 
 const thin2 = shape([0, 0, 0], [0, 1, 0], 1, 1e-2);
 const thin3 = shape([0, 0, 0], [0, 1, 0], 1, 1e-3);
-/** The families on which a plain closed-form quartic is shown to fail (tests/intersectors.test.js). */
+/** The families on which a plain closed-form quartic is shown to fail (tests/browser/intersectors.test.js). */
 export const NAIVE_TORUS_FAMILIES = ['torus from 1e3', 'torus thin r=1e-3', 'torus near-axial, tilt 0 to 1e-6'];
 TORUS_CASES.push(
   ...axialFamily('torus near-axial, tilt 0 to 1e-6', T, (random) => (random() < 0.2 ? 0 : 10 ** (-9 + 3 * random())), 0.5, 100, 21),

@@ -15,6 +15,7 @@ import { REPO_ROOT, rel } from '../support/config.js';
 import { assertNotBlank, writePng } from '../support/images.js';
 import { harnessContext, openPage, renderView } from '../support/page.js';
 import { withHarness } from '../support/setup.js';
+import { hook } from '../support/hook.js';
 
 const VIEW = { name: 'readme', params: { time: 0 }, size: [960, 540] };
 const DEBUG_VIEW_SIZE = [320, 180];
@@ -66,10 +67,10 @@ await withHarness(async (context) => {
     await page.setViewport(PAGE_VIEWPORT);
     await page.goto(`${(await harnessContext()).baseUrl}/?time=0`, { waitUntil: 'load' });
     await page.waitForFunction(() => window.shaderEngine, { polling: 50 }); // installed once the render worker runs
-    await page.evaluate(() => window.shaderEngine.ready);
+    await hook(page).ready();
     const edit = await page.$('::-p-aria([name="Edit shader"])');
     if (edit) await edit.click();
-    await page.evaluate(() => window.shaderEngine.readPixels()); // one more frame, with the editor open
+    await hook(page).readPixels(); // one more frame, with the editor open
     const pageFile = path.join(REPO_ROOT, 'public', 'page.png');
     await page.screenshot({ path: pageFile });
     if (errors.length) throw new Error(`the page logged errors:\n  ${errors.join('\n  ')}`);
@@ -88,11 +89,11 @@ async function inspectorPicture() {
     await page.setViewport(PAGE_VIEWPORT);
     await page.goto(`${(await harnessContext()).baseUrl}/?time=0`, { waitUntil: 'load' });
     await page.waitForFunction(() => window.shaderEngine, { polling: 50 });
-    await page.evaluate(() => window.shaderEngine.ready);
-    const compared = await page.evaluate(() => window.shaderEngine.compareWithFloat64());
+    await hook(page).ready();
+    const compared = await hook(page).compareWithFloat64();
     const { width, height } = compared;
     const [x, y] = pixelOf(PINNED, width, height);
-    const readout = await page.evaluate((px, py) => window.shaderEngine.inspect(px, py), x, y);
+    const readout = await hook(page).inspect(x, y);
     const box = await page.$eval('#view', (c) => {
       const r = c.getBoundingClientRect();
       return { left: r.left, top: r.top, width: r.width, height: r.height };

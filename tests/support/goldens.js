@@ -2,7 +2,7 @@
 // manifest, runCases, runCase, the guard) in the test process, as MapLibre runs its render
 // tests: tests/golden/ is a `test` folder (shaderproof.json, __references__/), each of its cases
 // is drawn on the engine page by a command-line session, and a vitest test of its own
-// (tests/render.test.js) fails with the runner's words and the paths of its images.
+// (tests/browser/render.test.js) fails with the runner's words and the paths of its images.
 //
 // The references are written by the runner's --update, which `npm run test:update`
 // (UPDATE_GOLDENS=1) turns on, and by nothing else; always by SwiftShader (setup.js refuses

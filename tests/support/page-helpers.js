@@ -7,6 +7,7 @@ import path from 'node:path';
 import { afterAll, expect } from 'vitest';
 import { REPO_ROOT } from './config.js';
 import { decodeRgba, openPage } from './page.js';
+import { hook } from './hook.js';
 
 export const EXAMPLES_DIR = path.join(REPO_ROOT, 'public', 'examples');
 export const exampleSource = (name) => fs.readFileSync(path.join(EXAMPLES_DIR, `${name}.glsl`), 'utf8');
@@ -43,7 +44,7 @@ export async function withServedDir(prefix, body) {
 /**
  * Whether this test file's withPage calls share one page (sharePageAcrossTests): the second and
  * later `goto`s bring it to their view with window.shaderEngine.open(), which gives what a fresh
- * load of that URL gives (tests/page-open.test.js), instead of loading the page again.
+ * load of that URL gives (tests/browser/page-open.test.js), instead of loading the page again.
  */
 let sharing = false;
 /** The page this file's tests share, once one has loaded it. @type {{page: import('puppeteer-core').Page, errors: string[], warnings: string[], context: any, loaded: boolean} | null} */
@@ -152,7 +153,7 @@ export async function withControl(page, key) {
 
 /** window.shaderEngine.readPixels(): a new frame, rows top to bottom. */
 export async function readPixels(page) {
-  const r = await page.evaluate(() => window.shaderEngine.readPixels());
+  const r = await hook(page).readPixels();
   return { width: r.width, height: r.height, data: decodeRgba(r.data, r.width, r.height, 'readPixels') };
 }
 
@@ -172,7 +173,7 @@ export async function nextFrame(page) {
 }
 
 export async function info(page) {
-  return page.evaluate(() => window.shaderEngine.info());
+  return hook(page).info();
 }
 
 /** RGB of the pixel at (x, y), y counted from the top. */
@@ -283,7 +284,7 @@ export async function openEditor(page) {
 
 /** The editor's whole text (compiled or not). */
 export async function editorText(page) {
-  return page.evaluate(() => window.shaderEngine.editorSource());
+  return hook(page).editorSource();
 }
 
 /**

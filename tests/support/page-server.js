@@ -7,8 +7,8 @@
 // takes ~0.5 s to its first frame where the dev server took ~1.3 s (measured: 5 loads of
 // examples/pattern.glsl at 32x18 each way), and ~220 loads a run add up. It is also the page a
 // person deploys. The dev server stays for what only it does: a server that watches the files and
-// hot-updates the page (startWatchingServer, tests/page-lifecycle.test.js), and, with
-// RAYTRACER_TEST_SERVER=dev, for a whole run (to debug with unbundled modules).
+// hot-updates the page (startWatchingServer, tests/browser/page-lifecycle.test.js), and, with
+// SHADERPROOF_TEST_SERVER=dev, for a whole run (to debug with unbundled modules).
 //
 // Either way the harness's own routes (routes.js: a request that hangs, a redirect, files the
 // tests write into public/ served at once) are plugged in.
@@ -66,7 +66,7 @@ async function startDevServer({ watch = false } = {}) {
 
 /**
  * The production build in dist/ (built now when it is missing or older than its sources: as
- * `npm run build` makes it, so tests/cli.test.js packs it without building it again), served by
+ * `npm run build` makes it, so tests/browser/cli.test.js packs it without building it again), served by
  * the command line's own server (src/headless/core.js servePage) on a free loopback port, with the
  * harness's routes first; close() stops it.
  * @returns {Promise<{baseUrl: string, close: () => Promise<void>}>}
@@ -79,12 +79,12 @@ async function startBuiltServer() {
   }
 }
 
-/** The page server of a test run: the build (or the dev server with RAYTRACER_TEST_SERVER=dev). */
+/** The page server of a test run: the build (or the dev server with SHADERPROOF_TEST_SERVER=dev). */
 export function startPageServer(env = process.env) {
-  const chosen = env.RAYTRACER_TEST_SERVER ?? 'build';
+  const chosen = env.SHADERPROOF_TEST_SERVER ?? 'build';
   if (chosen === 'dev') return startDevServer();
   if (chosen === 'build') return startBuiltServer();
-  throw new Error(`RAYTRACER_TEST_SERVER=${chosen}: expected "build" (the default) or "dev".`);
+  throw new Error(`SHADERPROOF_TEST_SERVER=${chosen}: expected "build" (the default) or "dev".`);
 }
 
 /** Another page server, in the test worker, with file watching and hot updates on. Close it after. */

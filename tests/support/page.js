@@ -115,7 +115,7 @@ export function decodeRgba(base64, width, height, what) {
 /**
  * The page renderView draws on, kept for the rest of the test file: loaded at the first view's
  * URL, then brought to each next view by window.shaderEngine.open() (src/player/open-view.js), which
- * gives what a fresh load of that URL gives (tests/page-open.test.js) without loading the page
+ * gives what a fresh load of that URL gives (tests/browser/page-open.test.js) without loading the page
  * again. Closed by disconnect(), and after a view that failed (the next one gets a fresh page).
  * @type {{page: import('puppeteer-core').Page, errors: string[], context: any} | null}
  */

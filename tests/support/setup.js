@@ -17,7 +17,7 @@ import { WAIT_TIMEOUT_MS } from '../../src/headless/watch.js';
 import { openPage } from '../../src/headless/page-open.js';
 
 /**
- * Loads the page once before any test. On the dev server (RAYTRACER_TEST_SERVER=dev) Vite then
+ * Loads the page once before any test. On the dev server (SHADERPROOF_TEST_SERVER=dev) Vite then
  * has transformed every module and pre-bundled every dependency (one it discovers during a test's
  * page load makes it reload that page mid-test); on either, the built-in shader has compiled once.
  * Best effort: a page that fails here fails, with a message, in the tests.

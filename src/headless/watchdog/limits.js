@@ -15,9 +15,9 @@ import { PRODUCTION_TIMEOUTS } from '../../shared/timeouts.js';
 /**
  * Per renderer: `hangMs` for a band, `compileHangMs` for a band with a program's first draw.
  * SwiftShader and a GPU keep the page's own limits (src/shared/timeouts.js: the heaviest
- * scene of the raytracer compiles in 3.5 s on SwiftShader here, a large public shader in ~15 s).
- * LLVM compiles more slowly than SwiftShader's Subzero (the raytracer's first draw: docs/renderers.md),
- * so llvmpipe gets twice SwiftShader's limit for a first draw.
+ * scene of the studio's built-in shader compiles in 3.5 s on SwiftShader here, a large public
+ * shader in ~15 s). LLVM compiles more slowly than SwiftShader's Subzero (that shader's first
+ * draw: docs/renderers.md), so llvmpipe gets twice SwiftShader's limit for a first draw.
  * @type {Record<import('../renderers.js').RendererName, {hangMs: number, compileHangMs: number}>}
  */
 export const WATCHDOG_LIMITS = Object.freeze({

@@ -369,7 +369,7 @@ export class ShaderApp extends Emitter {
     this.frames.request();
   }
 
-  /** iMouse back to how the page opened (the raytracer's camera back to its rest view). */
+  /** iMouse back to how the page opened (a camera that follows the mouse back to its rest view). */
   resetView() {
     this.inputs.resetMouse();
     this.emit('state');

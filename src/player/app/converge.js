@@ -1,13 +1,12 @@
-// "Converge when still" (app.converge): a shader that has a progressive form runs as it (the
-// built-in raytracer, or an edit that keeps its camera and radiance functions: Buffer A adds one
-// jittered sample per pixel per frame while nothing changes; Image shows the mean and the sample
-// count), with the clock paused so that the view is still; off, the shader as it was, with its
+// "Converge when still" (app.converge): a shader that has a progressive form runs as it (a
+// multipass form that adds a sample per pixel each frame while nothing changes and shows their
+// mean), with the clock paused so that the view is still; off, the shader as it was, with its
 // control values. It owns whether the app converges, the shader it converges from, and how many
 // still frames it asks for; the frame loop asks it whether another frame is wanted.
 //
-// Which shaders have a progressive form, and what it is, is not the engine's to know: the
-// raytracer's side plugs it in (use(): src/raytracer/convergence.js), the interactive page at
-// its start, the engine page when a converge is first asked for (a chunk loaded then).
+// Which shaders have a progressive form, and what it is, is not the engine's to know: it is
+// plugged in from outside the player (use()), the interactive page's at its start, the engine
+// page's when a converge is first asked for (src/engine-plug-ins.js: a chunk loaded then).
 
 /** @typedef {import('./app.js').ShaderApp} ShaderApp */
 /** @typedef {import('./app.js').ShaderVersion} ShaderVersion */
@@ -28,17 +27,19 @@
  */
 
 /**
- * A shader family's progressive form, plugged in by its side (src/raytracer/convergence.js).
+ * A shader family's progressive form, plugged in by its side.
  * @typedef {object} ProgressiveForm
- * @property {string} name what converges, in errors ("the raytracer")
- * @property {string} file the shader it is the form of ("shaders/raytrace.glsl")
+ * @property {string} name what converges, in errors ("the X shader")
+ * @property {string} file the shader it is the form of (its path in the repository)
  * @property {number} maxSamples the most still frames a converge draws (and its default)
  * @property {(source: string) => string[]} missing what a single-pass shader's text lacks to
  *   converge (empty: it can)
  * @property {(source: string) => {model: import('../../shadertoy/multipass.js').MultipassShader}} form
  *   the shader's progressive multipass form
- * @property {Record<string, unknown>} controls control values set when it starts (the sample
- *   count drawn over the picture)
+ * @property {Record<string, unknown>} controls control values set when it starts, for a person
+ *   (a sample count drawn over the picture)
+ * @property {string[]} overlays its live controls that draw over the picture (such as that
+ *   count): a render that wants the picture alone sets them to 0 (overlaysOff)
  */
 /** @typedef {ProgressiveForm | (() => Promise<ProgressiveForm>)} FormSource */
 
@@ -68,6 +69,16 @@ export class Converge {
   async _loadForm() {
     if (typeof this._form === 'function') this._form = await this._form();
     return this._form;
+  }
+
+  /**
+   * The on-screen overlays of the form the shader converges as, each at 0 ({NAME: 0}; none
+   * while it does not converge).
+   * @returns {Record<string, number>}
+   */
+  get overlaysOff() {
+    const form = this.on ? /** @type {ProgressiveForm} */ (this._form) : null;
+    return Object.fromEntries((form?.overlays ?? []).map((control) => [control, 0]));
   }
 
   /** Whether "Converge when still" can run the app's shader (a progressive form, loaded, that takes it). */

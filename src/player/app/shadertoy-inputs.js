@@ -124,8 +124,8 @@ export class ShadertoyInputs {
 
   /**
    * iMouse as the page opened with it (all 0, or the link's mouse=): a click or a drag on the
-   * canvas sets iMouse as Shadertoy does, and for the raytracer that turns the camera; this puts
-   * it back.
+   * canvas sets iMouse as Shadertoy does, and for many a shader that turns the camera; this
+   * puts it back.
    */
   resetMouse() {
     this._mouse = { x: 0, y: 0, clickX: 0, clickY: 0, down: false, clicked: false, pointerId: null };

@@ -3,7 +3,7 @@
 export class WebGL2UnavailableError extends Error {
   constructor() {
     super(
-      'This browser or GPU provides no WebGL2 context, which the raytracer needs. Try a current Chrome, Firefox or Safari with hardware acceleration switched on.',
+      'This browser or GPU provides no WebGL2 context, which drawing a shader needs. Try a current Chrome, Firefox or Safari with hardware acceleration switched on.',
     );
     this.name = 'WebGL2UnavailableError';
   }

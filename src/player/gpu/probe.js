@@ -1,10 +1,10 @@
 // The pixel inspector's GPU work, in the render worker (bands/band-scheduler.js runs it as a job between
 // frames, so the buffers hold a whole frame): one pixel of the last frame drawn again, read in
-// float before the 8-bit rounding, with the value of every buffer there; and, for the raytracer,
-// the path probe (src/raytracer/path-probe.js), a compile of the same file that writes the path
-// of the pixel's ray into a float target. What the path probe writes, and how wide, is the page's
+// float before the 8-bit rounding, with the value of every buffer there; and, for a shader whose
+// path probe the studio plugs in, that probe, a compile of the same file that writes the path of
+// the pixel's ray into a float target. What the path probe writes, and how wide, is the page's
 // to know (inspect/probe-program.js sends the width with the compile; inspect/inspector.js reads
-// the records): the worker draws and reads, and imports nothing of the raytracer.
+// the records): the worker draws and reads, and imports nothing of the shader's side.
 //
 // The Image pass is drawn again with the material on screen, over the 2×2 quad of the pixel only
 // (scissored: the quad is the one the frame drew, so screen-space derivatives, which the adaptive

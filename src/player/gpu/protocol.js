@@ -83,7 +83,7 @@ import { ShaderCompileError, WebGL2UnavailableError } from './errors.js';
  *   same frame's Image pass in RGBA32F, its colours as the shader wrote them (unclamped), rows top
  *   to bottom
  * @property {[{project: MultipassShader, hostBlock: string, fileName: string, key: string, texels: number}, null]} compileProbe
- *   the path probe (src/raytracer/path-probe.js), never shown; `key` comes back with each probe
+ *   a shader's path probe (plugged in by the studio), never shown; `key` comes back with each probe
  * @property {[{x: number, y: number}, ProbedPixel]} probe pixel (x, y) of the last frame drawn (y
  *   from the bottom), read after the frames before it; rejects before the first frame
  * @property {[{first: number, count: number, date: number[]}, Uint16Array]} sound samples [first,

@@ -32,8 +32,10 @@
 //   setSource(glsl)       Promise<{ok, error?}>: compiles another Image-tab source.
 //   setProject(json)      Promise<{ok, error?, notes}>: runs a multipass shader given as
 //                         Shadertoy's JSON export (an object or its text).
-//   setConverging(on, {frames}?)  Promise: "Converge when still" on or off (app.setConverging):
-//                         frames: how many still frames to draw (default 4096).
+//   setConverging(on, {frames, overlays}?)  Promise: "Converge when still" on or off
+//                         (app.converge): frames: how many still frames to draw (default: the
+//                         form's most); overlays false: the form's on-screen overlays off (a
+//                         sample count drawn over the picture), for a render of the picture alone.
 //   play(), pause(), togglePlay(), restart(), setTime(seconds), setSpeed(s), setMouse([x, y, z, w]),
 //   resetView()          iMouse back to how the page opened (the toolbar's "Reset view")
 //   nextFrame()           Promise<{width, height, data, iFrame}>: the next frame the page draws by
@@ -227,10 +229,13 @@ export class EngineHook {
     }
   }
 
-  /** @param {boolean} on @param {{frames?: number}} [options] */
-  async setConverging(on, options = {}) {
+  /** @param {boolean} on @param {{frames?: number, overlays?: boolean}} [options] */
+  async setConverging(on, { frames, overlays = true } = {}) {
     await this.settled();
-    await this.#app.converge.set(Boolean(on), options);
+    const converge = this.#app.converge;
+    await converge.set(Boolean(on), { frames });
+    const off = converge.overlaysOff;
+    if (!overlays && Object.keys(off).length) await this.#app.setControls(off, 'setConverging');
   }
 
   play() {

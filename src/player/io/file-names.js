@@ -1,5 +1,5 @@
 // The names of a shader and of the files the page saves from it, in one place: an edited
-// shader's name ("raytrace.glsl (edited)"), a name as a file-name stem ("raytrace-edited"), and
+// shader's name ("scene.glsl (edited)"), a name as a file-name stem ("scene-edited"), and
 // each download's name built from that stem (a tab, a screenshot, a recording, a JSON export).
 
 const EDITED = ' (edited)';
@@ -19,7 +19,7 @@ export function editedName(name) {
 }
 
 /**
- * A shader's name as a file-name stem (no folders, no extension): "raytrace", "raytrace-edited",
+ * A shader's name as a file-name stem (no folders, no extension): "scene", "scene-edited",
  * "untitled".
  * @param {string} name
  */

@@ -1,11 +1,11 @@
 // Work is never lost, and an edited shader has a name of its own.
 //
 // While the editor's text differs from the file the page loads on a reload (the ?shader= file or
-// the built-in raytracer), it is kept in the browser's localStorage under that file's name; a
+// the page's built-in shader), it is kept in the browser's localStorage under that file's name; a
 // reload restores it, with a note whose "Discard" goes back to the file. A link opened afresh
 // opens what it names: edits kept for that file are set aside (a slot of their own, so that new
 // edits do not overwrite them) and offered, never run in its place. The kept text carries its
-// name: the file it came from marked as edited ("raytrace.glsl (edited)"), or "untitled" after a
+// name: the file it came from marked as edited ("scene.glsl (edited)"), or "untitled" after a
 // paste that replaced the whole text.
 
 import { editedName } from './file-names.js';

@@ -8,8 +8,8 @@
 // the dev server's limit on a request's headers (it answers HTTP 431 to an over-long URL) does
 // not apply; the page reads it on open (main.js).
 //
-// An edit of a shader the page ships (the built-in raytracer, a ?shader= file) goes as a patch
-// against that file instead, when that is shorter: the raytracer is ~34,000 characters deflated
+// An edit of a shader the page ships (its built-in shader, a ?shader= file) goes as a patch
+// against that file instead, when that is shorter: the studio's is ~34,000 characters deflated
 // and base64url'd, past MAX_LINK_LENGTH, and a few changed lines are a few hundred
 // (#patch=...&base=builtin|URL&hash=...&name=...). The patch is a unified diff (jsdiff); `hash`
 // names the version it was made against, and a page with another version says so, and applies it
@@ -84,7 +84,7 @@ async function decodeSource(encoded) {
   }
 }
 
-/** The `base` of a patch link for the built-in raytracer (any other base is the ?shader= URL). */
+/** The `base` of a patch link for the page's built-in shader (any other base is the ?shader= URL). */
 export const BUILTIN_BASE = 'builtin';
 /** Lines of context around each change in a patch: enough to place it in a file that moved on. */
 const PATCH_CONTEXT = 3;
@@ -108,7 +108,7 @@ export async function sourceFromHash(hash, baseText = () => Promise.reject(new E
   const patch = fields.get('patch');
   if (!patch) return null;
   const base = fields.get('base') || BUILTIN_BASE;
-  const baseName = base === BUILTIN_BASE ? 'the built-in raytracer' : base;
+  const baseName = base === BUILTIN_BASE ? "the page's built-in shader" : base;
   const diff = await decodeSource(patch).catch((error) => {
     throw new Error(error.message.replace('#source=', '#patch='), { cause: error });
   });

@@ -1,30 +1,23 @@
 // index.html, the test run as a page people look at (issue 47): a summary (passed, failed,
 // skipped, what went without an input, the renderer, the date the clocks ran at, when and how
 // long), then every case, failures first, each with what it has: the reference, the actual and
-// the diff side by side and a comparison of the first two (a slider, or either whole), a zoom
-// that keeps pixels sharp, the pixel count against the tolerance, what it went without, the
-// compile error at its line, the sound's figures; passed cases collapsed, with a thumbnail.
-// The images are files beside it, linked and loaded lazily, never inlined: a report of a thousand
-// cases opens at once. Nothing is fetched from anywhere else (its Content-Security-Policy says
-// so), so it works offline, from file://, as a CI artifact.
+// the diff and a comparison of the first two, zoomed and panned together and opened at the
+// difference (viewer.js), the pixel count and where they differ against the tolerance, what it
+// went without, the compile error at its line, the sound's figures; passed cases collapsed, with
+// a thumbnail. The images are files beside it, linked and loaded lazily, never inlined: a report
+// of a thousand cases opens at once; a case's pixel values (its -pixels.js) load when the pointer
+// first comes over its images. Nothing is fetched from anywhere else (its Content-Security-Policy
+// says so), so it works offline, from file://, as a CI artifact.
 
 import { REPORT_STYLE, reportScript } from './report-page.js';
+import { VIEWER_STYLE, viewerScript } from './viewer-page.js';
+import { viewerHtml } from './viewer.js';
+import { escape, href } from './html-text.js';
+import { pixelCount, pixelText, verb, whereText } from '../../shared/differences.js';
 import { THUMBNAIL } from '../scale.js';
-
-/** @param {unknown} text */
-const escape = (text) =>
-  String(text).replace(/[<>&"']/g, (c) => ({ '<': '&lt;', '>': '&gt;', '&': '&amp;', '"': '&quot;', "'": '&#39;' })[c] ?? c);
-
-/** A file of the output folder as a relative URL (a case's name may hold folders). @param {string} name */
-const href = (name) => name.split('/').map(encodeURIComponent).join('/');
 
 /** Volatile text (times): the same run twice differs there only. @param {string} text */
 const volatile = (text) => `<span data-volatile>${escape(text)}</span>`;
-
-/** The zooms offered: a pixel stays a square of 1, 2, 4 or 8. */
-const ZOOMS = [1, 2, 4, 8];
-/** The width a small render is first shown at, at most (a zoom of whole pixels). */
-const SHOWN_WIDTH = 320;
 
 /**
  * @typedef {object} RunFacts
@@ -65,9 +58,9 @@ export function htmlReport(results, run) {
 <head>
 <meta charset="utf-8">
 <meta name="viewport" content="width=device-width, initial-scale=1">
-<meta http-equiv="Content-Security-Policy" content="default-src 'none'; img-src 'self' file:; media-src 'self' file:; style-src 'unsafe-inline'; script-src 'unsafe-inline'">
+<meta http-equiv="Content-Security-Policy" content="default-src 'none'; img-src 'self' file: data:; media-src 'self' file:; style-src 'unsafe-inline'; script-src 'unsafe-inline' 'self' file:">
 <title>shaderproof test: ${escape(counts)}</title>
-<style>${REPORT_STYLE}</style>
+<style>${REPORT_STYLE}${VIEWER_STYLE}</style>
 </head>
 <body data-filter="all">
 <header>
@@ -92,7 +85,7 @@ ${section('failed', 'Failed', failed)}
 ${section('passed', 'Passed', passed)}
 ${section('skipped', 'Skipped', skipped)}
 </main>
-<script>(${reportScript.toString()})();</script>
+<script>(${reportScript.toString()})();(${viewerScript.toString()})();</script>
 </body>
 </html>
 `;
@@ -114,7 +107,7 @@ function caseHtml(r) {
     r.missing.length
       ? `<p>Went without:</p><ul class="missing">${r.missing.map((m) => `<li class="${m.allowed ? 'allowed' : 'unallowed'}">${escape(m.line)}${m.allowed ? ' (allowed)' : ' (allow it with "allowMissing" in shaderproof.json, or give the input)'}</li>`).join('')}</ul>`
       : '',
-    images(r),
+    viewerHtml(r, thumbSize(r)),
     r.compile ? compileHtml(r.compile, r.name) : '',
     r.sound || r.files.actualWav ? soundHtml(r) : '',
     notesHtml(r),
@@ -141,47 +134,23 @@ function thumbSize(r) {
   return { width: Math.max(1, Math.round(width * scale)), height: Math.max(1, Math.round(height * scale)) };
 }
 
-/** The size, the pixel count against the tolerance. @param {import('../case.js').CaseResult} r */
+/** The size, the pixel count and where they differ against the tolerance. @param {import('../case.js').CaseResult} r */
 function facts(r) {
   if (r.skipped || !r.size || !r.tolerance) return '';
   const { width, height } = r.size;
   const { threshold, maxDiffPixels } = r.tolerance;
+  const count = r.diffPixels;
+  const share = count ? (100 * count) / (width * height) : 0;
+  // where they are, unless the failure's line just said it
+  const where = count && r.where ? whereText(count, r.where) : '';
+  const said = where && r.failures.some((f) => f.endsWith(where));
   const differ =
-    r.diffPixels === null
+    count === null
       ? 'not compared'
-      : `${r.diffPixels} of ${width * height} pixels differ (${((100 * r.diffPixels) / (width * height)).toFixed(2)}%)`;
-  return `<ul class="facts"><li>${width}×${height}: ${differ}; the tolerance: at most ${maxDiffPixels} pixels may, at threshold ${threshold}</li></ul>`;
-}
-
-/** The case's images side by side, the comparison and the zoom. @param {import('../case.js').CaseResult} r */
-function images(r) {
-  const { files } = r;
-  if (!files.actual && !files.half && !(r.ok && files.thumb)) return '';
-  const { width, height } = r.size ?? { width: 0, height: 0 };
-  const img = (file, alt, size = { width, height }) =>
-    `<img src="${href(file)}" alt="${escape(alt)}" loading="lazy" width="${size.width}" height="${size.height}" style="--w:${size.width}px;--h:${size.height}px">`;
-  const figure = (file, caption) => `<figure><figcaption>${caption}</figcaption>${img(file, `${caption} of ${r.name}`)}</figure>`;
-  const shown = [];
-  if (files.reference) shown.push(figure(files.reference, 'Reference'));
-  if (files.actual) shown.push(figure(files.actual, 'Actual'));
-  if (files.diff) shown.push(figure(files.diff, 'Diff (red: pixels that differ)'));
-  if (files.half)
-    shown.push(
-      `<figure><figcaption>Half-size render</figcaption>${img(files.half, 'half-size render', { width: Math.floor(width / 2), height: Math.floor(height / 2) })}</figure>`,
-    );
-  if (!files.actual && files.thumb)
-    shown.push(`<figure><figcaption>Thumbnail</figcaption>${img(files.thumb, 'thumbnail', thumbSize(r))}</figure>`);
-  const comparable = files.reference && files.actual && r.size;
-  const compare = comparable
-    ? `<figure class="compare" data-mode="slider" style="--w:${width}px"><figcaption>Reference ◀ ▶ Actual</figcaption><div class="stack">${img(files.reference, 'reference')}${img(files.actual, 'actual')}</div><input type="range" min="0" max="100" value="50" aria-label="Reference on the left, actual on the right: where they meet"></figure>`
-    : '';
-  // a small render starts enlarged, to about SHOWN_WIDTH
-  const zoom = ZOOMS.filter((z) => z === 1 || width * z <= SHOWN_WIDTH).at(-1);
-  const zooms = ZOOMS.map((z) => `<button type="button" data-zoom="${z}" aria-pressed="${z === zoom}">${z}×</button>`).join('');
-  const modes = comparable
-    ? `<span>Compare</span><span class="modes">${['slider', 'reference', 'actual'].map((m) => `<button type="button" data-mode="${m}" aria-pressed="${m === 'slider'}">${m[0].toUpperCase() + m.slice(1)}</button>`).join('')}</span>`
-    : '';
-  return `<div class="tools"><span>Zoom</span><span class="zooms">${zooms}</span>${modes}</div><div class="images" style="--zoom:${zoom}">${shown.join('')}${compare}</div>`;
+      : `${count.toLocaleString('en-US')} of ${pixelCount(width * height)} ${verb(count, 'differs', 'differ')} (${share && share < 0.01 ? 'under 0.01' : share.toFixed(2)}%)${where && !said ? ` ${where}` : ''}`;
+  const first =
+    count && count > 1 && r.where ? `<li>The first, row by row: ${r.where.first.map((p) => escape(pixelText(p))).join('; ')}</li>` : '';
+  return `<ul class="facts"><li>${width}×${height}: ${escape(differ)}; the tolerance: at most ${pixelCount(maxDiffPixels)} may, at threshold ${threshold}</li>${first}</ul>`;
 }
 
 /** @param {import('../compile-detail.js').CompileDetail} detail @param {string} name the case's */

@@ -1,7 +1,8 @@
 // The HTML report's own style and script (html-report.js writes them into index.html): no file
 // beside them, no font, no request, so that the page opens from file:// offline, in Chromium and
-// Firefox alike. The script only adds what a static page cannot do: the zoom, the reference /
-// actual comparison (a slider, or a toggle of either whole), the filter, expand and collapse all.
+// Firefox alike. The script only adds what a static page cannot do: the reference / actual
+// comparison's mode (a slider, or either whole), the filter, expand and collapse all. The images'
+// zoom, pan and pixel readout are viewer-page.js's.
 
 export const REPORT_STYLE = `
 :root { color-scheme: light dark; --fail: #c62828; --pass: #2e7d32; --skip: #757575; --line: #8884; --soft: #8881; }
@@ -36,18 +37,6 @@ summary .ms { margin-left: auto; color: var(--skip); font-variant-numeric: tabul
 .failures { margin: 4px 0; padding-left: 18px; color: var(--fail); white-space: pre-wrap; overflow-wrap: anywhere; }
 .facts, .notes, .missing { margin: 4px 0; padding-left: 18px; }
 .missing .unallowed { color: var(--fail); }
-.tools { display: flex; flex-wrap: wrap; gap: 6px; align-items: center; margin: 8px 0; }
-.tools span { color: var(--skip); margin-left: 8px; }
-.images { display: flex; flex-wrap: wrap; gap: 12px; align-items: flex-start; overflow: auto; max-height: 80vh; }
-figure { margin: 0; }
-figcaption { font-size: 12px; color: var(--skip); }
-.images img { display: block; width: calc(var(--w) * var(--zoom)); height: calc(var(--h) * var(--zoom)); image-rendering: pixelated; background: repeating-conic-gradient(#8883 0% 25%, transparent 0% 50%) 0 0 / 16px 16px; }
-.stack { position: relative; width: calc(var(--w) * var(--zoom)); }
-.stack img + img { position: absolute; inset: 0; clip-path: inset(0 0 0 var(--cut, 50%)); }
-.compare[data-mode="reference"] .stack img + img { visibility: hidden; }
-.compare[data-mode="actual"] .stack img + img { clip-path: none; }
-.compare:not([data-mode="slider"]) input[type="range"] { visibility: hidden; }
-.compare input[type="range"] { width: calc(var(--w) * var(--zoom)); margin: 4px 0 0; }
 .source { font: 12px/1.5 ui-monospace, monospace; margin: 6px 0; padding: 6px 0; background: var(--soft); overflow: auto; }
 .source div { white-space: pre; padding: 0 10px; }
 .source .n { display: inline-block; min-width: 4ch; text-align: right; margin-right: 12px; color: var(--skip); user-select: none; }
@@ -75,11 +64,7 @@ export function reportScript() {
     const button = /** @type {HTMLElement | null} */ (/** @type {Element} */ (event.target).closest('button'));
     if (!button) return;
     const group = /** @type {Element} */ (button.parentElement);
-    const images = /** @type {HTMLElement | null} */ (button.closest('.body')?.querySelector('.images') ?? null);
-    if (button.dataset.zoom && images) {
-      images.style.setProperty('--zoom', button.dataset.zoom);
-      press(group, button);
-    } else if (button.dataset.mode) {
+    if (button.dataset.mode) {
       const compare = /** @type {HTMLElement | null} */ (button.closest('.body')?.querySelector('.compare') ?? null);
       if (compare) compare.dataset.mode = button.dataset.mode;
       press(group, button);
@@ -90,10 +75,5 @@ export function reportScript() {
       for (const details of document.querySelectorAll('details.case'))
         /** @type {HTMLDetailsElement} */ (details).open = button.dataset.open === 'all';
     }
-  });
-  document.addEventListener('input', (event) => {
-    const slider = /** @type {HTMLInputElement} */ (event.target);
-    if (slider.type !== 'range') return;
-    /** @type {HTMLElement | null} */ (slider.closest('.compare'))?.style.setProperty('--cut', `${slider.value}%`);
   });
 }

@@ -3,7 +3,7 @@
 // samples), compiled in the render worker when the inspector or the comparison first needs it,
 // and again when the shader or a compile-time control changes. It is compiled in the live
 // controls' uniform form, so a slider that moves never waits for it (the page's uniform and
-// constant forms draw the same picture: tests/page-controls.test.js).
+// constant forms draw the same picture: tests/browser/page-controls.test.js).
 //
 // Only the raytracer has one: a single-pass shader with the functions the probe calls (the
 // progressive raytracer's test, raytracer/progressive.js) whose control block the page read.

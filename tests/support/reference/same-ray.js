@@ -1,5 +1,5 @@
 // The page's image of a view against the float64 reference with the same rays: the measure of the
-// hard views (tests/hard-views.test.js), of "Compare with float64" (tests/page-compare.test.js)
+// hard views (tests/browser/hard-views.test.js), of "Compare with float64" (tests/browser/page-compare.test.js)
 // and of `npm run accuracy` (tests/scripts/accuracy-report.js), in one place.
 //
 // With adaptive anti-aliasing the same rays are the shader's: the pixels its "Extra samples" view

@@ -1,12 +1,12 @@
 // Views of the page, as the harness draws them (tests/support/page.js renderView): each is a page
 // URL (query parameters) and a canvas size. The render goldens' views are data of their own,
-// tests/golden/shaderproof.json (a `shaderproof test` folder, run by tests/render.test.js);
-// VIEWS reads them here as the same kind of view, for the checks of tests/views.test.js and the
+// tests/golden/shaderproof.json (a `shaderproof test` folder, run by tests/browser/render.test.js);
+// VIEWS reads them here as the same kind of view, for the checks of tests/browser/views.test.js and the
 // Shadertoy paste.
 //
 // Query parameters (the page's contract): `time` fixes iTime and pauses; `mouse=x,y,z,w` sets
 // iMouse in device pixels; `size=WxH` sets the canvas size in device pixels; any other NAME is
-// a shader control from the control block of shaders/raytrace.glsl (tests/views.test.js checks
+// a shader control from the control block of shaders/raytrace.glsl (tests/browser/views.test.js checks
 // that every such NAME exists there and that the value is inside its range).
 
 import fs from 'node:fs';
@@ -63,12 +63,12 @@ export const VIEWS = goldenViews();
 // Shadertoy-paste render matches the page's default view bit for bit. A real change is far
 // outside the tolerance: the smallest differences between views are anti-aliasing on/off (1.4%
 // of the default view), shadows on/off (3.4%) and the 4th bounce (3.3% of the mirror-gap view,
-// bounces-max); every other pair differs in more than 20% of its pixels. tests/render.test.js proves the tolerance can fail:
+// bounces-max); every other pair differs in more than 20% of its pixels. tests/browser/render.test.js proves the tolerance can fail:
 // every pair of distinct views, and each view against its contrast, must differ in more than
 // ten times MAX_DIFF_FRACTION of their pixels, so each view shows something the tolerance could
 // not hide. The goldens' manifest says the same tolerance in pixels (57 of 320x180), and a
 // renderer's own where it needs one, with its reason (aa-pixels on llvmpipe);
-// tests/views.test.js checks that the two agree.
+// tests/browser/views.test.js checks that the two agree.
 // ------------------------------------------------------------------------------------------------
 export const PIXEL_THRESHOLD = 0.05;
 export const MAX_DIFF_FRACTION = 0.001;

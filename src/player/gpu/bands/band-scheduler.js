@@ -230,7 +230,8 @@ export class BandScheduler {
     if (tile) drawn.material.uniforms[TILE_OFFSET_UNIFORM].value = [tile.x, tile.y];
     const target = renderer.beginStep(drawn, job.width, job.height) ?? job.target;
     // SwiftShader turns a program into machine code on its first draw, not when it links (the
-    // raytracer's torus scene: 22 ms to link, 2.4 s for its first draw, 17 ms for the next band).
+    // studio's built-in shader, torus scene: 22 ms to link, 2.4 s for its first draw, 17 ms for
+    // the next band).
     // So a program's first draw is scissored to no pixel: SwiftShader compiles for it and runs the
     // shader nowhere. That band, the compile alone, the watchdog knows as compiling
     // (render-client.js) and the planner does not time; a loop that never ends runs only in the
