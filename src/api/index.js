@@ -103,7 +103,7 @@ const quiet = () => {};
 const inApiWords = (message) =>
   message
     .replace(/--channel(\d)\b/g, 'channels[$1]')
-    .replace(/(^|[\s(])--([a-z]+)(?:-([a-z]))?/g, (_, before, word, next) => `${before}${word}${next ? next.toUpperCase() : ''}`);
+    .replace(/(^|[\s(/])--([a-z]+)(?:-([a-z]))?/g, (_, before, word, next) => `${before}${word}${next ? next.toUpperCase() : ''}`);
 
 /** Runs `body`, with a UsageError said as the one error of the API. @template T @param {() => Promise<T>} body */
 async function asApiErrors(body) {
@@ -123,8 +123,24 @@ function asFlags(options) {
   const text = (/** @type {string} */ key, value) => value !== undefined && (values[key] = String(value));
   if (options.size !== undefined)
     values.size = typeof options.size === 'string' ? options.size : `${options.size.width}x${options.size.height}`;
-  for (const key of ['time', 'frame', 'fps', 'converge', 'tile', 'frames', 'date', 'media', 'watchdog', 'renderer', 'shard', 'jobs', 'out'])
+  for (const key of [
+    'time',
+    'frame',
+    'fps',
+    'converge',
+    'tile',
+    'frames',
+    'date',
+    'media',
+    'watchdog',
+    'renderer',
+    'shard',
+    'jobs',
+    'out',
+    'grep',
+  ])
     text(key, options[key]);
+  if (options.grepInvert !== undefined) values['grep-invert'] = String(options.grepInvert);
   if (options.mouse !== undefined) values.mouse = [options.mouse].flat().join(',');
   if (options.set !== undefined) values.set = Object.entries(options.set).map(([name, value]) => `${name}=${value}`);
   (options.channels ?? []).forEach((file, i) => file && (values[`channel${i}`] = file));
@@ -253,8 +269,9 @@ export async function record(shader, options = {}) {
  * @param {string} folder
  * @param {{update?: boolean, shard?: string, jobs?: number, reporters?: ('dot' | 'junit' | 'html')[],
  *   out?: string, date?: string, media?: string, fetchMedia?: boolean, renderer?: 'swiftshader' | 'llvmpipe' | 'gpu',
- *   watchdog?: number, say?: (line: string) => void}} [options] out: default ./shaderproof-output;
- *   renderer: default the one that drew the references
+ *   watchdog?: number, grep?: string, grepInvert?: string, say?: (line: string) => void}} [options]
+ *   out: default ./shaderproof-output; renderer: default the one that drew the references; grep,
+ *   grepInvert: only the cases whose names match, or do not (a regular expression, as `-g`)
  */
 export async function test(folder, options = {}) {
   const say = options.say ?? quiet;

@@ -4,6 +4,7 @@
 // and docs/api.md's first example being docs/examples/api-first.mjs word for word.
 
 import fs from 'node:fs';
+import os from 'node:os';
 import path from 'node:path';
 import { describe, expect, test } from 'vitest';
 import { REPO_ROOT } from '../support/config.js';
@@ -104,6 +105,18 @@ describe('an option that cannot be used fails before any browser starts, in the 
     expect(error).toBeInstanceOf(api.ShaderproofError);
     expect(error.exitCode).toBe(2);
     expect(error.message).toMatch(message);
+  });
+
+  test("test()'s grep that keeps no case", async () => {
+    const folder = fs.mkdtempSync(path.join(os.tmpdir(), 'shaderproof-api-grep-'));
+    try {
+      fs.writeFileSync(path.join(folder, 'waves.glsl'), 'void mainImage(out vec4 c, in vec2 p) { c = vec4(1.0); }\n');
+      const error = await api.test(folder, { grep: 'clouds', out: path.join(folder, 'out') }).catch((e) => e);
+      expect(error).toBeInstanceOf(api.ShaderproofError);
+      expect(error.message).toMatch(/no case of the 1 chosen in .* matches grep\/grepInvert \(/);
+    } finally {
+      fs.rmSync(folder, { recursive: true, force: true });
+    }
   });
 
   test('a shader that is neither a path nor { source }', async () => {
