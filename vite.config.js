@@ -131,7 +131,8 @@ const PAGES = {
  * The pages at the site's root, as their URLs have always been (a shared link, the command
  * line's engine page), while their files live in their rooms: the development server reads a
  * page's URL as its file, and the build writes each page at its URL (base is '/', so the
- * assets' URLs do not depend on where a page's file lies).
+ * assets' URLs do not depend on where a page's file lies). A page names its script and style
+ * from the root (/studio/main.js), since the browser resolves a relative one against the URL.
  */
 function pagesAtSiteRoot() {
   return {

@@ -16,8 +16,11 @@ import { REPO_ROOT } from '../support/config.js';
 
 const run = promisify(execFile);
 
-/** The text of a module without its comments (a JSDoc `import('…')` type is no import). */
-const withoutComments = (text) => text.replace(/\/\*[\s\S]*?\*\//g, '').replace(/(^|[^:'"`\\])\/\/.*$/gm, '$1');
+/**
+ * The text of a module without its comments (a JSDoc `import('…')` type is no import). Line
+ * comments go first: one may hold a glob such as `examples/*.glsl`, which would open a block.
+ */
+const withoutComments = (text) => text.replace(/(^|[^:'"`\\])\/\/.*$/gm, '$1').replace(/\/\*[\s\S]*?\*\//g, '');
 
 /**
  * Every module `entry` loads, itself included, following relative imports (static, dynamic and
