@@ -56,6 +56,8 @@ declare global {
     shaderEngine: WindowHook;
     /** The longest gap between 10 ms timer ticks (tests/browser/page-heavy.test.js). */
     __longestGap: number;
+    /** The time the page's script was held up past 100 ms, in all (tests/browser/page-heavy.test.js). */
+    __heldUp: number;
     /** The raw WebGL2 page's functions (tests/support/raw-webgl/raw-webgl-page.js). */
     __rawWebGL: import('./support/raw-webgl/raw-webgl-page.js').RawWebGL;
     /** Set by the deterministic injection (tests/support/deterministic-injection.js). */
